@@ -1,0 +1,86 @@
+#pragma once
+// The typed keyword tree a command receives, after the supervisor has checked the call against
+// the catalog: simple keywords hold lists of typed values (a scalar is a 1-element list), factor
+// keywords hold their occurrences. Defaults of the catalog are already filled in.
+#include <map>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/Concept.hpp"
+#include "core/Error.hpp"
+
+namespace ma {
+
+// One value of a simple keyword. Reals given as Python ints are stored as double when the
+// catalog says R; texts are stored as given (code_aster is case-sensitive for values).
+using KeywordValue = std::variant<long long, double, std::string, ConceptPtr>;
+
+class KeywordSet {
+public:
+    KeywordSet() = default;
+    explicit KeywordSet(std::string path) : path_(std::move(path)) {}
+
+    // Where this set sits in the call, for error messages: "" (top), "AFFE[2]".
+    const std::string& path() const { return path_; }
+    std::string pathOf(const std::string& keyword) const;
+
+    bool has(const std::string& keyword) const;  // simple or factor keyword present
+
+    // Simple keywords. The scalar accessors require exactly one value; they throw UserError
+    // naming the keyword path when it is absent.
+    double real(const std::string& keyword) const;
+    long long integer(const std::string& keyword) const;
+    const std::string& text(const std::string& keyword) const;
+    std::vector<double> reals(const std::string& keyword) const;
+    std::vector<long long> integers(const std::string& keyword) const;
+    std::vector<std::string> texts(const std::string& keyword) const;
+    // Value or default when absent.
+    double real(const std::string& keyword, double fallback) const;
+    long long integer(const std::string& keyword, long long fallback) const;
+    std::string text(const std::string& keyword, const std::string& fallback) const;
+
+    template <class T>
+    std::shared_ptr<T> object(const std::string& keyword) const {
+        auto c = std::dynamic_pointer_cast<T>(rawObject(keyword));
+        if (!c) throw UserError("keyword " + pathOf(keyword) + ": wrong concept type");
+        return c;
+    }
+    template <class T>
+    std::vector<std::shared_ptr<T>> objects(const std::string& keyword) const {
+        std::vector<std::shared_ptr<T>> out;
+        for (const auto& v : values(keyword)) {
+            auto c = std::dynamic_pointer_cast<T>(std::get<ConceptPtr>(v));
+            if (!c) throw UserError("keyword " + pathOf(keyword) + ": wrong concept type");
+            out.push_back(c);
+        }
+        return out;
+    }
+    ConceptPtr rawObject(const std::string& keyword) const;
+
+    const std::vector<KeywordValue>& values(const std::string& keyword) const;
+    // Factor keywords: the occurrences (empty when absent).
+    const std::vector<KeywordSet>& factor(const std::string& keyword) const;
+
+    // Building (used by the supervisor and by tests).
+    void setValues(const std::string& keyword, std::vector<KeywordValue> values);
+    KeywordSet& addOccurrence(const std::string& keyword);
+    void setFactor(const std::string& keyword, std::vector<KeywordSet> occurrences);
+    void remove(const std::string& keyword);
+
+    const std::map<std::string, std::vector<KeywordValue>>& simpleKeywords() const { return simple_; }
+    const std::map<std::string, std::vector<KeywordSet>>& factorKeywords() const { return factor_; }
+
+    // The echo of the call in code_aster's style, for the message log.
+    std::string echo(int indent = 0) const;
+
+private:
+    std::string path_;
+    std::map<std::string, std::vector<KeywordValue>> simple_;
+    std::map<std::string, std::vector<KeywordSet>> factor_;
+};
+
+std::string formatKeywordValue(const KeywordValue& v);
+
+}  // namespace ma

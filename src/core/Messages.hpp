@@ -1,0 +1,39 @@
+#pragma once
+// The message log (.mess, echoed on stdout) and the result file (.resu).
+// Everything a command wants the user to read goes through here.
+#include <fmt/format.h>
+
+#include <string>
+
+namespace ma {
+
+class Messages {
+public:
+    static Messages& instance();
+
+    // A line (or several) of the message log.
+    void info(const std::string& text);
+    template <class... Args>
+    void infof(fmt::format_string<Args...> f, Args&&... args) {
+        info(fmt::format(f, std::forward<Args>(args)...));
+    }
+    // An alarm box (<A> ID) in code_aster's style; counted for the final diagnostic.
+    void alarm(const std::string& id, const std::string& text);
+    // Text for the result file (.resu): TEST lines, IMPR_TABLE output. Also echoed in the log.
+    void result(const std::string& text);
+
+    int alarmCount() const { return alarms_; }
+    const std::string& messText() const { return mess_; }
+    const std::string& resuText() const { return resu_; }
+    void setEcho(bool echo) { echo_ = echo; }
+    void reset();
+
+private:
+    std::string mess_, resu_;
+    int alarms_ = 0;
+    bool echo_ = true;
+};
+
+inline Messages& msg() { return Messages::instance(); }
+
+}  // namespace ma

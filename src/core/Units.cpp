@@ -1,0 +1,22 @@
+#include "core/Units.hpp"
+
+#include "core/Error.hpp"
+
+namespace ma {
+
+std::string Units::input(int unit) const {
+    auto it = inputs_.find(unit);
+    if (it == inputs_.end())
+        throw UserError("logical unit " + std::to_string(unit) +
+                        " is not associated with any file (add an F line with unit " +
+                        std::to_string(unit) + " to the .export, or use --mesh)");
+    return it->second;
+}
+
+std::string Units::output(int unit) const {
+    auto it = outputs_.find(unit);
+    if (it != outputs_.end()) return it->second;
+    return outDir_ + "/fort." + std::to_string(unit);
+}
+
+}  // namespace ma

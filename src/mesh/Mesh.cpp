@@ -1,0 +1,65 @@
+#include "mesh/Mesh.hpp"
+
+#include <algorithm>
+
+#include "core/Error.hpp"
+
+namespace ma {
+
+const std::vector<int>& GroupSet::get(const std::string& name) const {
+    auto it = members_.find(name);
+    if (it == members_.end()) throw UserError("group '" + name + "' does not exist in the mesh");
+    return it->second;
+}
+
+void GroupSet::set(const std::string& name, std::vector<int> members) {
+    if (!has(name)) order_.push_back(name);
+    members_[name] = std::move(members);
+}
+
+void GroupSet::remove(const std::string& name) {
+    members_.erase(name);
+    order_.erase(std::remove(order_.begin(), order_.end(), name), order_.end());
+}
+
+int Mesh::addCell(CellType type, std::span<const int> nodes, std::string name) {
+    int index = cellCount();
+    cellTypes.push_back(type);
+    connectivity.insert(connectivity.end(), nodes.begin(), nodes.end());
+    cellOffsets.push_back(static_cast<int>(connectivity.size()));
+    cellNames.push_back(name.empty() ? "M" + std::to_string(index + 1) : std::move(name));
+    return index;
+}
+
+int Mesh::addNode(const std::array<double, 3>& xyz, std::string name) {
+    int index = nodeCount();
+    coords.push_back(xyz);
+    nodeNames.push_back(name.empty() ? "N" + std::to_string(index + 1) : std::move(name));
+    return index;
+}
+
+int Mesh::findNode(const std::string& name) const {
+    if (nodeIndex_.size() != nodeNames.size()) {
+        nodeIndex_.clear();
+        for (int i = 0; i < static_cast<int>(nodeNames.size()); ++i) nodeIndex_.emplace(nodeNames[i], i);
+    }
+    auto it = nodeIndex_.find(name);
+    return it == nodeIndex_.end() ? -1 : it->second;
+}
+
+int Mesh::findCell(const std::string& name) const {
+    if (cellIndex_.size() != cellNames.size()) {
+        cellIndex_.clear();
+        for (int i = 0; i < static_cast<int>(cellNames.size()); ++i) cellIndex_.emplace(cellNames[i], i);
+    }
+    auto it = cellIndex_.find(name);
+    return it == cellIndex_.end() ? -1 : it->second;
+}
+
+int Mesh::maxCellDimension() const {
+    int d = 0;
+    for (auto t : cellTypes) d = std::max(d, cellDimension(t));
+    return d;
+}
+
+}  // namespace ma
