@@ -9,7 +9,7 @@
 
 namespace ma {
 
-class XfemModel;  // src/xfem: enrichment data attached by MODI_MODELE_XFEM
+class Enrichment;  // fe/Enrichment.hpp, implemented by src/xfem (MODI_MODELE_XFEM)
 
 enum class Modelisation { D_PLAN, C_PLAN, TRI_D /* '3D' */ };
 std::string modelisationName(Modelisation m);  // "D_PLAN", "C_PLAN", "3D"
@@ -29,8 +29,8 @@ public:
     // Boundary ("skin") elements: lower-dimension cells named in AFFE, able to carry PRES_REP.
     std::vector<ModelElement> skinElements;
     // X-FEM enrichment (null for a classical model). MODI_MODELE_XFEM makes a new Model that
-    // copies MODELE_IN's elements and sets this.
-    std::shared_ptr<XfemModel> xfem;
+    // copies MODELE_IN's elements and sets this (the concrete type lives in src/xfem).
+    std::shared_ptr<Enrichment> enrichment;
 
     int dim = 2;  // displacement components: 2 (D_PLAN, C_PLAN) or 3
     Modelisation modelisation = Modelisation::D_PLAN;  // the (single) modelisation of the model
