@@ -52,6 +52,7 @@ public:
     std::vector<std::array<double, 3>> pointCoords;
     std::vector<double> pointWeights;
     std::vector<int> pointSubcell;        // sub-cell index within the element (0 when not X-FEM)
+    std::vector<std::array<double, 3>> pointRefCoords;  // in the parent reference element (MED localisation)
     std::vector<double> values;           // pointCount * components.size()
 
     int pointCount() const { return static_cast<int>(pointWeights.size()); }
