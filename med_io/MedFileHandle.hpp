@@ -1,0 +1,40 @@
+#pragma once
+// PRIVATE to med_io: the only header that includes med.h. Never include it from a header that
+// other libraries see (they do not get the MED/HDF5-OpenMPI include paths).
+#include <med.h>
+
+#include <string>
+
+namespace ma::med {
+
+// HDF5 prints its error stack on stderr by default; MED calls that fail are reported by us as
+// UserError, so the spew is switched off once per process (OpenMPI HDF5 flavour: the one
+// libmedC is linked with, see ../shared/docs/med_notes.md §2).
+void silenceHdf5Errors();
+
+// Checks that `path` is an existing, readable MED file before the MED library touches it
+// (missing file, not HDF5, not MED): UserError naming the file otherwise.
+void checkReadableMedFile(const std::string& path);
+
+// An open MED file, closed by the destructor.
+class MedFile {
+public:
+    MedFile(const std::string& path, med_access_mode mode);
+    ~MedFile();
+    MedFile(const MedFile&) = delete;
+    MedFile& operator=(const MedFile&) = delete;
+    med_idt id() const { return fid_; }
+    const std::string& path() const { return path_; }
+    // Closes now and reports a failure (the destructor cannot).
+    void close();
+
+private:
+    std::string path_;
+    med_idt fid_ = -1;
+};
+
+// Fixed-width, blank-padded MED name fields.
+std::string trimName(const char* buffer, size_t width);
+std::string padName(const std::string& name, size_t width);
+
+}  // namespace ma::med

@@ -1,0 +1,292 @@
+#include "med_io/MedReader.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "core/Error.hpp"
+#include "core/Messages.hpp"
+#include "med_io/MedCellOrder.hpp"
+#include "med_io/MedFileHandle.hpp"
+
+namespace ma::med {
+
+namespace {
+
+constexpr size_t kMaxGroupName = 24;  // code_aster's limit on GROUP_MA / GROUP_NO names
+
+[[noreturn]] void damaged(const std::string& path, const std::string& what) {
+    throw UserError("MED file '" + path + "' is damaged or truncated: cannot read " + what);
+}
+
+struct MeshHeader {
+    std::string name;
+    med_int spaceDim = 0, meshDim = 0;
+    med_mesh_type type = MED_UNSTRUCTURED_MESH;
+};
+
+std::vector<MeshHeader> readHeaders(const MedFile& file) {
+    med_int n = MEDnMesh(file.id());
+    if (n < 0) damaged(file.path(), "the list of meshes");
+    std::vector<MeshHeader> out;
+    for (med_int i = 1; i <= n; ++i) {
+        med_int naxis = MEDmeshnAxis(file.id(), i);
+        if (naxis < 0) damaged(file.path(), fmt::format("the header of mesh number {}", i));
+        char name[MED_NAME_SIZE + 1] = {}, desc[MED_COMMENT_SIZE + 1] = {}, dtunit[MED_SNAME_SIZE + 1] = {};
+        std::string axisName(size_t(std::max<med_int>(naxis, 3)) * MED_SNAME_SIZE + 1, '\0');
+        std::string axisUnit(axisName.size(), '\0');
+        MeshHeader h;
+        med_sorting_type sort;
+        med_int nstep = 0;
+        med_axis_type axisType;
+        if (MEDmeshInfo(file.id(), i, name, &h.spaceDim, &h.meshDim, &h.type, desc, dtunit, &sort,
+                        &nstep, &axisType, axisName.data(), axisUnit.data()) < 0)
+            damaged(file.path(), fmt::format("the header of mesh number {}", i));
+        h.name = trimName(name, MED_NAME_SIZE);
+        out.push_back(h);
+    }
+    return out;
+}
+
+// Names of `n` entities (16 characters each in the file), first 8 characters kept as code_aster.
+std::vector<std::string> splitNames(const std::vector<char>& buf, med_int n) {
+    std::vector<std::string> names(static_cast<size_t>(n));
+    for (med_int i = 0; i < n; ++i) {
+        std::string s = trimName(buf.data() + size_t(i) * MED_SNAME_SIZE, MED_SNAME_SIZE);
+        if (s.size() > 8) s.resize(8);
+        while (!s.empty() && s.back() == ' ') s.pop_back();
+        names[size_t(i)] = s;
+    }
+    return names;
+}
+
+struct Family {
+    std::vector<int> groups;  // indices into the group name table
+};
+
+}  // namespace
+
+std::vector<std::string> meshNames(const std::string& path) {
+    checkReadableMedFile(path);
+    MedFile file(path, MED_ACC_RDONLY);
+    std::vector<std::string> names;
+    for (const auto& h : readHeaders(file)) names.push_back(h.name);
+    return names;
+}
+
+std::shared_ptr<Mesh> readMesh(const std::string& path, const std::string& meshName,
+                               MeshReadReport* report) {
+    checkReadableMedFile(path);
+    MedFile file(path, MED_ACC_RDONLY);
+    const med_idt fid = file.id();
+
+    // --- which mesh
+    const auto headers = readHeaders(file);
+    if (headers.empty()) throw UserError("MED file '" + path + "' contains no mesh");
+    const MeshHeader* chosen = nullptr;
+    if (meshName.empty()) {
+        chosen = &headers.front();
+    } else {
+        for (const auto& h : headers)
+            if (h.name == meshName) chosen = &h;
+        if (!chosen) {
+            std::string list;
+            for (const auto& h : headers) list += (list.empty() ? "'" : ", '") + h.name + "'";
+            throw UserError("NOM_MED='" + meshName + "': MED file '" + path +
+                            "' has no mesh of that name; meshes in the file: " + list);
+        }
+    }
+    if (chosen->type != MED_UNSTRUCTURED_MESH)
+        throw NotImplemented("mesh '" + chosen->name + "' of MED file '" + path +
+                             "' is a structured (grid) mesh; only unstructured meshes are read");
+    if (chosen->spaceDim < 2 || chosen->spaceDim > 3)
+        throw NotImplemented(fmt::format("mesh '{}' of MED file '{}' has space dimension {}; "
+                                         "only 2 and 3 are supported",
+                                         chosen->name, path, chosen->spaceDim));
+    const char* mname = chosen->name.c_str();
+    const std::string where = "mesh '" + chosen->name + "'";
+
+    med_int numdt = MED_NO_DT, numit = MED_NO_IT;
+    {
+        med_float dt = 0;
+        if (MEDmeshComputationStepInfo(fid, mname, 1, &numdt, &numit, &dt) < 0)
+            damaged(path, "the computation step of " + where);
+    }
+    med_bool changed, transformed;
+    auto count = [&](med_entity_type ent, med_geometry_type geo, med_data_type data,
+                     med_connectivity_mode mode) {
+        return MEDmeshnEntity(fid, mname, numdt, numit, ent, geo, data, mode, &changed, &transformed);
+    };
+
+    auto mesh = std::make_shared<Mesh>();
+    mesh->dim = int(chosen->spaceDim);
+
+    // --- nodes
+    const med_int nnode = count(MED_NODE, MED_NONE, MED_COORDINATE, MED_NO_CMODE);
+    if (nnode < 0) damaged(path, "the number of nodes of " + where);
+    std::vector<med_float> xyz(size_t(nnode) * size_t(chosen->spaceDim));
+    if (nnode > 0 && MEDmeshNodeCoordinateRd(fid, mname, numdt, numit, MED_FULL_INTERLACE, xyz.data()) < 0)
+        damaged(path, "the node coordinates of " + where);
+    mesh->coords.resize(size_t(nnode));
+    for (med_int i = 0; i < nnode; ++i)
+        for (int d = 0; d < 3; ++d)
+            mesh->coords[size_t(i)][size_t(d)] = d < chosen->spaceDim ? xyz[size_t(i) * chosen->spaceDim + d] : 0.0;
+    xyz = {};
+
+    std::vector<med_int> nodeFamily(size_t(nnode), 0);
+    if (count(MED_NODE, MED_NONE, MED_FAMILY_NUMBER, MED_NODAL) > 0 &&
+        MEDmeshEntityFamilyNumberRd(fid, mname, numdt, numit, MED_NODE, MED_NONE, nodeFamily.data()) < 0)
+        damaged(path, "the node family numbers of " + where);
+    if (count(MED_NODE, MED_NONE, MED_NAME, MED_NODAL) > 0) {
+        std::vector<char> buf(size_t(nnode) * MED_SNAME_SIZE + 1);
+        if (MEDmeshEntityNameRd(fid, mname, numdt, numit, MED_NODE, MED_NONE, buf.data()) < 0)
+            damaged(path, "the node names of " + where);
+        mesh->nodeNames = splitNames(buf, nnode);
+        for (med_int i = 0; i < nnode; ++i)
+            if (mesh->nodeNames[size_t(i)].empty()) mesh->nodeNames[size_t(i)] = fmt::format("N{}", i + 1);
+    } else {
+        mesh->nodeNames.resize(size_t(nnode));
+        for (med_int i = 0; i < nnode; ++i) mesh->nodeNames[size_t(i)] = fmt::format("N{}", i + 1);
+    }
+
+    // --- cells, type by type in increasing MED type code (code_aster numbering)
+    const med_int ntype = count(MED_CELL, MED_GEO_ALL, MED_CONNECTIVITY, MED_NODAL);
+    if (ntype < 0) damaged(path, "the cell types of " + where);
+    // Every fixed type is probed by number (as mdump does) rather than enumerated with
+    // MEDmeshEntityInfo, which needs a GEO attribute that some writers (meshio) omit.
+    std::vector<med_geometry_type> types;
+    for (CellType t : {CellType::POI1, CellType::SEG2, CellType::SEG3, CellType::SEG4, CellType::TRIA3,
+                       CellType::QUAD4, CellType::TRIA6, CellType::TRIA7, CellType::QUAD8,
+                       CellType::QUAD9, CellType::TETRA4, CellType::PYRA5, CellType::PENTA6,
+                       CellType::HEXA8, CellType::TETRA10, CellType::PYRA13, CellType::PENTA15,
+                       CellType::PENTA18, CellType::HEXA20, CellType::HEXA27}) {
+        const med_int n = count(MED_CELL, med_geometry_type(t), MED_CONNECTIVITY, MED_NODAL);
+        if (n < 0) damaged(path, "the " + cellTypeName(t) + " cells of " + where);
+        if (n > 0) types.push_back(med_geometry_type(t));
+    }
+    if (med_int(types.size()) < ntype)
+        throw NotImplemented(fmt::format("MED file '{}', {}: the mesh holds cells of a kind miniaster "
+                                         "does not read (polygons, polyhedra or structural elements); "
+                                         "supported: POI1, SEG2/3/4, TRIA3/6/7, QUAD4/8/9, TETRA4/10, "
+                                         "PYRA5/13, PENTA6/15/18, HEXA8/20/27",
+                                         path, where));
+
+    std::vector<med_int> cellFamily;
+    for (med_geometry_type geo : types) {
+        CellType type = static_cast<CellType>(geo);
+        const med_int n = count(MED_CELL, geo, MED_CONNECTIVITY, MED_NODAL);
+        if (n < 0) damaged(path, "the " + cellTypeName(type) + " cells of " + where);
+        if (n == 0) continue;
+        const int nn = nodeCount(type);
+        std::vector<med_int> conn(size_t(n) * nn);
+        if (MEDmeshElementConnectivityRd(fid, mname, numdt, numit, MED_CELL, geo, MED_NODAL,
+                                         MED_FULL_INTERLACE, conn.data()) < 0)
+            damaged(path, "the connectivity of the " + cellTypeName(type) + " cells of " + where);
+        std::vector<med_int> fam(size_t(n), 0);
+        if (count(MED_CELL, geo, MED_FAMILY_NUMBER, MED_NODAL) > 0 &&
+            MEDmeshEntityFamilyNumberRd(fid, mname, numdt, numit, MED_CELL, geo, fam.data()) < 0)
+            damaged(path, "the family numbers of the " + cellTypeName(type) + " cells of " + where);
+        std::vector<std::string> names;
+        if (count(MED_CELL, geo, MED_NAME, MED_NODAL) > 0) {
+            std::vector<char> buf(size_t(n) * MED_SNAME_SIZE + 1);
+            if (MEDmeshEntityNameRd(fid, mname, numdt, numit, MED_CELL, geo, buf.data()) < 0)
+                damaged(path, "the names of the " + cellTypeName(type) + " cells of " + where);
+            names = splitNames(buf, n);
+        }
+        std::vector<int> med(nn), internal(nn);
+        for (med_int c = 0; c < n; ++c) {
+            for (int j = 0; j < nn; ++j) {
+                med_int node = conn[size_t(c) * nn + j];
+                if (node < 1 || node > nnode)
+                    throw UserError(fmt::format("MED file '{}', {}: {} cell {} refers to node {} "
+                                                "(the mesh has {} nodes)",
+                                                path, where, cellTypeName(type), c + 1, node, nnode));
+                med[j] = int(node - 1);
+            }
+            medToInternal(type, med, internal);
+            std::string name = names.empty() ? std::string() : names[size_t(c)];
+            mesh->addCell(type, internal, name);
+        }
+        cellFamily.insert(cellFamily.end(), fam.begin(), fam.end());
+    }
+
+    // --- families -> groups
+    const med_int nfam = MEDnFamily(fid, mname);
+    if (nfam < 0) damaged(path, "the families of " + where);
+    std::vector<std::string> groupNames;  // as kept (cut to 24 characters)
+    std::map<std::string, int> groupIndex;
+    std::map<med_int, Family> families;
+    std::map<std::string, std::string> renamedFrom;  // kept name -> name in file
+    for (med_int f = 1; f <= nfam; ++f) {
+        med_int ng = MEDnFamilyGroup(fid, mname, int(f));
+        if (ng < 0) damaged(path, "the families of " + where);
+        char famName[MED_NAME_SIZE + 1] = {};
+        med_int famNum = 0;
+        std::vector<char> groups(size_t(std::max<med_int>(ng, 1)) * MED_LNAME_SIZE + 1, '\0');
+        if (MEDfamilyInfo(fid, mname, int(f), famName, &famNum, groups.data()) < 0)
+            damaged(path, "the families of " + where);
+        Family& fam = families[famNum];
+        for (med_int g = 0; g < ng; ++g) {
+            std::string name = trimName(groups.data() + size_t(g) * MED_LNAME_SIZE, MED_LNAME_SIZE);
+            if (name.empty()) continue;
+            std::string kept = name;
+            if (kept.size() > kMaxGroupName) {
+                kept.resize(kMaxGroupName);
+                // Two long names cut to the same prefix: make the second one unique.
+                auto clash = renamedFrom.find(kept);
+                for (int k = 1; clash != renamedFrom.end() && clash->second != name; ++k) {
+                    std::string suffix = std::to_string(k);
+                    kept = name.substr(0, kMaxGroupName - suffix.size()) + suffix;
+                    clash = renamedFrom.find(kept);
+                }
+                if (!renamedFrom.count(kept)) {
+                    renamedFrom[kept] = name;
+                    msg().alarm("MED_7", "the group name '" + name + "' of MED file '" + path +
+                                             "' is longer than 24 characters; it is renamed '" + kept + "'");
+                    if (report) report->renamedGroups.emplace_back(name, kept);
+                }
+            }
+            auto [it, added] = groupIndex.emplace(kept, int(groupNames.size()));
+            if (added) groupNames.push_back(kept);
+            fam.groups.push_back(it->second);
+        }
+    }
+
+    // Members of each group, in entity order; groups are created in order of first appearance in
+    // the families (code_aster's order), empty groups are not created.
+    auto buildGroups = [&](const std::vector<med_int>& familyOf, GroupSet& target) {
+        std::vector<std::vector<int>> members(groupNames.size());
+        std::set<med_int> unknown;
+        for (size_t e = 0; e < familyOf.size(); ++e) {
+            if (familyOf[e] == 0) continue;
+            auto it = families.find(familyOf[e]);
+            if (it == families.end()) {
+                unknown.insert(familyOf[e]);
+                continue;
+            }
+            for (int g : it->second.groups) members[size_t(g)].push_back(int(e));
+        }
+        for (med_int u : unknown)
+            msg().alarm("MED_10", fmt::format("MED file '{}', {}: family number {} is used but not "
+                                              "defined; its entities belong to no group",
+                                              path, where, u));
+        for (size_t g = 0; g < groupNames.size(); ++g)
+            if (!members[g].empty()) target.set(groupNames[g], std::move(members[g]));
+    };
+    buildGroups(nodeFamily, mesh->nodeGroups);
+    buildGroups(cellFamily, mesh->cellGroups);
+    file.close();
+
+    if (report) {
+        report->meshName = chosen->name;
+        report->spaceDim = int(chosen->spaceDim);
+        report->meshDim = int(chosen->meshDim);
+        for (const auto& h : headers) report->meshesInFile.push_back(h.name);
+    }
+    mesh->name = chosen->name;
+    return mesh;
+}
+
+}  // namespace ma::med
