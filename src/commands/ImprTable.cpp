@@ -1,0 +1,92 @@
+// IMPR_TABLE, FORMAT='TABLEAU' (commands_spec.md §4). UNITE 8 (the default) is the result file
+// (.resu); any other unit is a file of the run: the first IMPR_TABLE of the run on that unit
+// replaces it, the following ones append (code_aster keeps the unit open for the whole run).
+// Every write is atomic.
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "core/AtomicFile.hpp"
+#include "core/Error.hpp"
+#include "core/Messages.hpp"
+#include "core/Units.hpp"
+#include "parser/CommandRegistry.hpp"
+#include "post/TablePrinter.hpp"
+#include "post/TableOperations.hpp"
+
+namespace ma {
+namespace {
+
+void appendToUnit(const std::string& path, const std::string& text) {
+    static std::set<std::string> openedThisRun;
+    std::string content;
+    if (openedThisRun.count(path) && std::filesystem::exists(path)) {
+        std::ifstream in(path, std::ios::binary);
+        if (!in) throw UserError("IMPR_TABLE: cannot read back " + path);
+        std::ostringstream ss;
+        ss << in.rdbuf();
+        content = ss.str();
+    }
+    content += text;
+    writeFileAtomically(path, content);
+    openedThisRun.insert(path);
+}
+
+ConceptPtr imprTable(const KeywordSet& kw, CommandContext& ctx) {
+    auto table = kw.object<Table>("TABLE");
+    const std::string format = kw.text("FORMAT", "TABLEAU");
+    if (format != "TABLEAU")
+        throw NotImplemented(fmt::format("{}: FORMAT='{}' is not supported by miniaster (TABLEAU is)",
+                                         kw.pathOf("FORMAT"), format));
+
+    // FILTRE / TRI act on a copy, as in code_aster.
+    Table printed = *table;
+    for (const auto& f : kw.factor("FILTRE")) {
+        RowFilter filter;
+        filter.column = f.text("NOM_PARA");
+        filter.comparison = f.text("CRIT_COMP", "EQ");
+        if (f.has("VALE")) filter.reals = f.reals("VALE");
+        if (f.has("VALE_I")) filter.integers = f.integers("VALE_I");
+        if (f.has("VALE_K")) filter.texts = f.texts("VALE_K");
+        filter.relative = f.text("CRITERE", "RELATIF") == "RELATIF";
+        filter.precision = f.real("PRECISION", 1.0e-3);
+        filterRows(printed, filter);
+    }
+    for (const auto& t : kw.factor("TRI"))
+        sortRows(printed, t.texts("NOM_PARA"), t.text("ORDRE", "CROISSANT") == "CROISSANT");
+    if (kw.has("TITRE")) printed.title = kw.texts("TITRE");
+
+    TablePrintOptions options;
+    if (kw.has("NOM_PARA")) {
+        std::vector<std::string> missing;
+        for (const auto& n : kw.texts("NOM_PARA")) {
+            if (printed.hasColumn(n)) options.columns.push_back(n);
+            else missing.push_back(n);
+        }
+        if (!missing.empty())
+            msg().alarm("TABLE0_7", fmt::format("IMPR_TABLE: columns {} are not in table {}; they are not printed.",
+                                                fmt::join(missing, ", "), table->name));
+    }
+    options.realFormat = fortranToPrintf(kw.text("FORMAT_R", "E12.5"));
+    const std::string text = formatTable(printed, options);
+
+    const long long unit = kw.integer("UNITE", 8);
+    if (unit == 8) {
+        msg().result(text);
+    } else {
+        if (!ctx.units) throw UserError("IMPR_TABLE: no logical units are defined for this run");
+        const std::string path = ctx.units->output(int(unit));
+        appendToUnit(path, text);
+        msg().infof("    table {} printed on unit {} ({})", table->name, unit, path);
+    }
+    return nullptr;
+}
+
+MA_REGISTER_COMMAND("IMPR_TABLE", imprTable);
+
+}  // namespace
+}  // namespace ma

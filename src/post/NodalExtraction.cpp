@@ -1,0 +1,170 @@
+#include "post/NodalExtraction.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/Error.hpp"
+#include "post/TableOperations.hpp"
+
+namespace ma {
+namespace {
+
+// Components requested from one field: all those carried by some node (in the quantity's
+// order), or NOM_CMP as given.
+std::vector<int> requestedComponents(const NodalField& f, const NodalExtraction& a, const std::string& fieldLabel) {
+    std::vector<int> out;
+    if (a.allComponents) {
+        std::vector<unsigned char> carried(f.components.size(), 0);
+        const size_t nc = f.components.size();
+        for (size_t i = 0; i < f.present.size(); ++i) carried[i % nc] |= f.present[i];
+        for (size_t c = 0; c < nc; ++c)
+            if (carried[c]) out.push_back(int(c));
+    } else {
+        for (const auto& name : a.components) {
+            const int c = f.componentIndex(name);
+            if (c < 0)
+                throw UserError(fmt::format("NOM_CMP: component {} is not in field {} (components: {})", name,
+                                            fieldLabel, fmt::join(f.components, ", ")));
+            out.push_back(c);
+        }
+    }
+    return out;
+}
+
+// NOEUD first, then each GROUP_NO in order; only nodes carrying a requested component, first
+// occurrence kept.
+std::vector<int> nodeList(const Mesh& mesh, const NodalField& f, const std::vector<int>& comps,
+                          const NodalExtraction& a) {
+    std::vector<int> candidates;
+    for (const auto& n : a.nodes) {
+        const int i = mesh.findNode(n);
+        if (i < 0) throw UserError(fmt::format("NOEUD: node {} is not in mesh {}", n, mesh.name));
+        candidates.push_back(i);
+    }
+    for (const auto& g : a.nodeGroups) {
+        if (!mesh.nodeGroups.has(g))
+            throw UserError(fmt::format("GROUP_NO: group {} is not in mesh {}", g, mesh.name));
+        const auto& members = mesh.nodeGroups.get(g);
+        candidates.insert(candidates.end(), members.begin(), members.end());
+    }
+    std::vector<unsigned char> seen(size_t(mesh.nodeCount()), 0);
+    std::vector<int> out;
+    for (int n : candidates) {
+        if (seen[size_t(n)]) continue;
+        bool carries = false;
+        for (int c : comps) carries = carries || f.has(n, c);
+        if (!carries) continue;
+        seen[size_t(n)] = 1;
+        out.push_back(n);
+    }
+    return out;
+}
+
+size_t textWidth(size_t length, size_t minimum) { return std::max(length, minimum); }
+
+}  // namespace
+
+std::shared_ptr<Table> extractNodalValues(const std::vector<NodalExtraction>& actions) {
+    auto table = std::make_shared<Table>();
+    bool anyField = false, anyResult = false;
+    size_t titleLen = 0, nodeLen = 0, fieldLen = 0, resultLen = 0, nameLen = 0;
+
+    // Resolve every action first: the columns are declared once, from all of them.
+    struct Block {
+        const NodalExtraction* action;
+        const NodalField* field;
+        const ResultStep* step;
+        std::vector<int> comps, nodes;
+    };
+    std::vector<Block> blocks;
+    std::vector<std::string> componentColumns;
+    for (const auto& a : actions) {
+        titleLen = std::max(titleLen, a.title.size());
+        std::vector<std::pair<const NodalField*, const ResultStep*>> sources;
+        std::string label;
+        if (a.field) {
+            anyField = true;
+            fieldLen = std::max(fieldLen, a.field->name.size());
+            sources.emplace_back(a.field.get(), nullptr);
+            label = a.field->name;
+        } else {
+            if (!a.result) throw UserError("POST_RELEVE_T: ACTION needs RESULTAT or CHAM_GD");
+            anyResult = true;
+            resultLen = std::max(resultLen, a.result->name.size());
+            nameLen = std::max(nameLen, a.fieldName.size());
+            for (const ResultStep* s : a.steps) {
+                auto f = s->nodal(a.fieldName);
+                if (!f)
+                    throw UserError(fmt::format("NOM_CHAM: result {} has no nodal field {} at NUME_ORDRE {}",
+                                                a.result->name, a.fieldName, s->order));
+                sources.emplace_back(f.get(), s);
+            }
+            label = fmt::format("{} {}", a.result->name, a.fieldName);
+        }
+        for (auto [f, s] : sources) {
+            if (!f->mesh) throw UserError(fmt::format("field {} has no mesh", label));
+            Block b{&a, f, s, requestedComponents(*f, a, label), {}};
+            b.nodes = nodeList(*f->mesh, *f, b.comps, a);
+            for (int n : b.nodes) nodeLen = std::max(nodeLen, f->mesh->nodeNames[size_t(n)].size());
+            for (int c : b.comps)
+                if (std::find(componentColumns.begin(), componentColumns.end(), f->components[size_t(c)]) ==
+                    componentColumns.end())
+                    componentColumns.push_back(f->components[size_t(c)]);
+            blocks.push_back(std::move(b));
+        }
+    }
+
+    table->addColumn("INTITULE", textColumnFor(textWidth(titleLen, 16)));
+    table->addColumn("NOEUD", textColumnFor(textWidth(nodeLen, 8)));
+    if (anyField) table->addColumn("CHAM_GD", textColumnFor(textWidth(fieldLen, 8)));
+    if (anyResult) {
+        table->addColumn("RESU", textColumnFor(textWidth(resultLen, 8)));
+        table->addColumn("NOM_CHAM", textColumnFor(textWidth(nameLen, 16)));
+        table->addColumn("NUME_ORDRE", ColumnType::integer());
+        table->addColumn("INST", ColumnType::real());  // evol_elas / evol_noli results
+    }
+    for (const char* c : {"ABSC_CURV", "COOR_X", "COOR_Y", "COOR_Z"}) table->addColumn(c, ColumnType::real());
+    for (const auto& c : componentColumns) table->addColumn(c, ColumnType::real());
+
+    const size_t colTitle = 0, colNode = 1;
+    const int colField = table->columnIndex("CHAM_GD"), colResu = table->columnIndex("RESU"),
+              colName = table->columnIndex("NOM_CHAM"), colOrder = table->columnIndex("NUME_ORDRE"),
+              colInst = table->columnIndex("INST");
+    const size_t colAbsc = size_t(table->columnIndex("ABSC_CURV"));
+    for (const Block& b : blocks) {
+        const Mesh& mesh = *b.field->mesh;
+        std::vector<size_t> compCol;
+        for (int c : b.comps) compCol.push_back(size_t(table->columnIndex(b.field->components[size_t(c)])));
+        double absc = 0.0;
+        for (size_t k = 0; k < b.nodes.size(); ++k) {
+            const int n = b.nodes[k];
+            const auto& x = mesh.coords[size_t(n)];
+            if (k > 0) {
+                const auto& p = mesh.coords[size_t(b.nodes[k - 1])];
+                absc += std::sqrt((x[0] - p[0]) * (x[0] - p[0]) + (x[1] - p[1]) * (x[1] - p[1]) +
+                                  (x[2] - p[2]) * (x[2] - p[2]));
+            }
+            const size_t r = table->addRow();
+            table->set(r, colTitle, b.action->title);
+            table->set(r, colNode, mesh.nodeNames[size_t(n)]);
+            if (b.step) {
+                table->set(r, size_t(colResu), b.action->result->name);
+                table->set(r, size_t(colName), b.action->fieldName);
+                table->set(r, size_t(colOrder), (long long)b.step->order);
+                table->set(r, size_t(colInst), b.step->inst);
+            } else {
+                table->set(r, size_t(colField), b.field->name);
+            }
+            table->set(r, colAbsc, absc);
+            for (int d = 0; d < 3; ++d) table->set(r, colAbsc + 1 + size_t(d), x[size_t(d)]);
+            for (size_t j = 0; j < b.comps.size(); ++j)
+                if (b.field->has(n, b.comps[j])) table->set(r, compCol[j], b.field->at(n, b.comps[j]));
+        }
+    }
+    return table;
+}
+
+}  // namespace ma

@@ -1,0 +1,30 @@
+#pragma once
+// POST_RELEVE_T, OPERATION='EXTRACTION' on nodal fields (commands_spec.md §2): one row per
+// (action, order, node) with code_aster's columns in code_aster's order.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fields/Fields.hpp"
+#include "post/Table.hpp"
+
+namespace ma {
+
+// One ACTION occurrence, with its field(s) already resolved.
+struct NodalExtraction {
+    std::string title;                    // INTITULE
+    std::vector<std::string> nodes;       // NOEUD
+    std::vector<std::string> nodeGroups;  // GROUP_NO
+    // RESULTAT + NOM_CHAM: the steps to read, in the requested order ...
+    std::shared_ptr<const Result> result;
+    std::string fieldName;  // NOM_CHAM
+    std::vector<const ResultStep*> steps;
+    // ... or CHAM_GD.
+    std::shared_ptr<const NodalField> field;
+    bool allComponents = true;            // TOUT_CMP='OUI'
+    std::vector<std::string> components;  // NOM_CMP
+};
+
+std::shared_ptr<Table> extractNodalValues(const std::vector<NodalExtraction>& actions);
+
+}  // namespace ma
