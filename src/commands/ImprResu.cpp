@@ -1,0 +1,147 @@
+// IMPR_RESU, FORMAT='MED' (issue 3): the mesh with its groups, result fields at the selected
+// orders (code_aster names: result name padded with '_' to 8 + NOM_CHAM), or a lone field.
+// The first IMPR_RESU of a run on a unit creates the file; later ones on the same unit add to it,
+// as code_aster does (docs/med.md).
+#include <fmt/format.h>
+
+#include <set>
+
+#include "core/Error.hpp"
+#include "core/Messages.hpp"
+#include "core/Units.hpp"
+#include "fields/Fields.hpp"
+#include "med_io/MedWriter.hpp"
+#include "parser/CommandRegistry.hpp"
+
+namespace ma {
+namespace {
+
+// Files already written by IMPR_RESU in this run (process): later calls append.
+std::set<std::string>& filesOfThisRun() {
+    static std::set<std::string> files;
+    return files;
+}
+
+std::string meshNameOf(const Mesh& mesh) { return mesh.name.empty() ? "MAILLAGE" : mesh.name; }
+
+// A copy restricted to NOM_CMP (in the order asked); UserError when none exists.
+std::shared_ptr<const NodalField> restrictComponents(const NodalField& f, const KeywordSet& occ) {
+    auto out = std::make_shared<NodalField>();
+    out->mesh = f.mesh;
+    out->quantity = f.quantity;
+    std::vector<int> keep;
+    for (const auto& c : occ.texts("NOM_CMP")) {
+        const int k = f.componentIndex(c);
+        if (k >= 0) {
+            keep.push_back(k);
+            out->components.push_back(c);
+        }
+    }
+    if (keep.empty()) throw UserError(occ.pathOf("NOM_CMP") + ": none of these components is in the field");
+    const size_t nn = f.components.empty() ? 0 : f.values.size() / f.components.size();
+    out->values.resize(nn * keep.size());
+    out->present.resize(nn * keep.size());
+    for (size_t i = 0; i < nn; ++i)
+        for (size_t j = 0; j < keep.size(); ++j) {
+            out->values[i * keep.size() + j] = f.at(int(i), keep[j]);
+            out->present[i * keep.size() + j] = f.has(int(i), keep[j]);
+        }
+    return out;
+}
+
+void writeNodal(med::MedWriter& w, const std::string& name, const std::string& meshName, const NodalField& f,
+                const KeywordSet& occ, int numdt, int numit, double dt) {
+    if (occ.has("NOM_CMP")) w.writeNodalField(name, meshName, *restrictComponents(f, occ), numdt, numit, dt);
+    else w.writeNodalField(name, meshName, f, numdt, numit, dt);
+}
+
+std::vector<const ResultStep*> selectSteps(const Result& result, const KeywordSet& occ) {
+    std::vector<const ResultStep*> steps;
+    if (occ.has("NUME_ORDRE")) {
+        for (auto order : occ.integers("NUME_ORDRE")) steps.push_back(&result.step(int(order)));
+    } else if (occ.has("INST")) {
+        const bool relative = occ.text("CRITERE", "RELATIF") == "RELATIF";
+        const double precision = occ.real("PRECISION", 1e-6);
+        for (double inst : occ.reals("INST")) steps.push_back(&result.stepAtInst(inst, precision, relative));
+    } else {
+        for (const auto& s : result.steps) steps.push_back(&s);
+    }
+    return steps;
+}
+
+void printResult(med::MedWriter& w, const Result& result, const KeywordSet& occ) {
+    if (!result.mesh) throw UserError(occ.pathOf("RESULTAT") + ": result " + result.name + " has no mesh");
+    const std::string meshName = meshNameOf(*result.mesh);
+    w.writeMesh(*result.mesh, meshName);
+    const bool chosen = occ.has("NOM_CHAM");
+    const auto wanted = chosen ? occ.texts("NOM_CHAM") : std::vector<std::string>{};
+    for (const ResultStep* step : selectSteps(result, occ)) {
+        std::vector<std::string> names = wanted;
+        if (!chosen) {
+            for (const auto& [n, f] : step->nodalFields) names.push_back(n);
+            for (const auto& [n, f] : step->gaussFields) names.push_back(n);
+        }
+        for (const auto& nomCham : names) {
+            const std::string medName = med::resultFieldName(result.name, nomCham);
+            if (auto f = step->nodal(nomCham)) {
+                writeNodal(w, medName, meshName, *f, occ, step->order, step->order, step->inst);
+            } else if (auto g = step->gauss(nomCham)) {
+                w.writeGaussField(medName, meshName, *g, step->order, step->order, step->inst);
+            } else {
+                msg().alarm("RESULT1_6", fmt::format("{}: field {} does not exist at NUME_ORDRE {} of result {}; "
+                                                     "it is not printed",
+                                                     occ.path(), nomCham, step->order, result.name));
+                continue;
+            }
+            msg().infof("    field {} (NUME_ORDRE {}, INST {}) printed as {}", nomCham, step->order, step->inst, medName);
+        }
+    }
+}
+
+void printField(med::MedWriter& w, const ConceptPtr& field, const KeywordSet& occ) {
+    if (auto f = std::dynamic_pointer_cast<NodalField>(field)) {
+        if (!f->mesh) throw UserError(occ.pathOf("CHAM_GD") + ": the field has no mesh");
+        const std::string meshName = meshNameOf(*f->mesh);
+        w.writeMesh(*f->mesh, meshName);
+        writeNodal(w, f->name, meshName, *f, occ, -1, -1, 0.0);  // MED_NO_DT, MED_NO_IT
+        msg().infof("    field {} printed", f->name);
+    } else if (auto g = std::dynamic_pointer_cast<GaussField>(field)) {
+        if (!g->mesh) throw UserError(occ.pathOf("CHAM_GD") + ": the field has no mesh");
+        const std::string meshName = meshNameOf(*g->mesh);
+        w.writeMesh(*g->mesh, meshName);
+        w.writeGaussField(g->name, meshName, *g, -1, -1, 0.0);
+        msg().infof("    field {} printed", g->name);
+    } else {
+        throw UserError(occ.pathOf("CHAM_GD") + ": this kind of field cannot be printed in MED");
+    }
+}
+
+ConceptPtr imprResu(const KeywordSet& kw, CommandContext& ctx) {
+    const std::string format = kw.text("FORMAT", "MED");
+    if (format != "MED") throw NotImplemented("IMPR_RESU: FORMAT='" + format + "' is not supported; use FORMAT='MED'");
+    if (!ctx.units) throw UserError("IMPR_RESU: no logical units are defined for this run");
+    const int unit = int(kw.integer("UNITE", 80));
+    const std::string path = ctx.units->output(unit);
+    auto& written = filesOfThisRun();
+    const bool append = written.count(path) > 0;
+
+    med::MedWriter writer(path, append);
+    for (const auto& occ : kw.factor("RESU")) {
+        if (occ.has("MAILLAGE")) {
+            auto mesh = occ.object<Mesh>("MAILLAGE");
+            writer.writeMesh(*mesh, meshNameOf(*mesh));
+            msg().infof("    mesh {} printed", meshNameOf(*mesh));
+        }
+        if (occ.has("RESULTAT")) printResult(writer, *occ.object<Result>("RESULTAT"), occ);
+        if (occ.has("CHAM_GD")) printField(writer, occ.rawObject("CHAM_GD"), occ);
+    }
+    writer.commit();
+    written.insert(path);
+    msg().infof("    MED file {} on unit {} ({})", append ? "completed" : "written", unit, path);
+    return nullptr;
+}
+
+MA_REGISTER_COMMAND("IMPR_RESU", imprResu);
+
+}  // namespace
+}  // namespace ma

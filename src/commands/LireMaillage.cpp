@@ -1,0 +1,43 @@
+// LIRE_MAILLAGE (commands_spec §7.7): FORMAT='MED' from logical unit UNITE (default 20), the first
+// mesh of the file or NOM_MED.
+#include "core/Error.hpp"
+#include "core/Messages.hpp"
+#include "core/Units.hpp"
+#include "med_io/MedReader.hpp"
+#include "mesh/MeshSummary.hpp"
+#include "parser/CommandRegistry.hpp"
+
+namespace ma {
+namespace {
+
+ConceptPtr lireMaillage(const KeywordSet& kw, CommandContext& ctx) {
+    const std::string format = kw.text("FORMAT", "MED");
+    if (format != "MED")
+        throw NotImplemented("LIRE_MAILLAGE: FORMAT='" + format + "' is not supported; convert the mesh to MED");
+    if (!ctx.units) throw UserError("LIRE_MAILLAGE: no logical units are defined for this run");
+    const int unit = int(kw.integer("UNITE", 20));
+    const std::string path = ctx.units->input(unit);
+    const std::string nomMed = kw.text("NOM_MED", "");
+
+    med::MeshReadReport report;
+    auto mesh = med::readMesh(path, nomMed, &report);
+    msg().infof("    mesh '{}' read from unit {} ({}), space dimension {}", report.meshName, unit, path,
+                report.spaceDim);
+    if (nomMed.empty() && report.meshesInFile.size() > 1)
+        msg().alarm("MED_MULTI", "the MED file holds " + std::to_string(report.meshesInFile.size()) +
+                                     " meshes; the first one, '" + report.meshName + "', is read (use NOM_MED to choose)");
+
+    bool check = true;
+    for (const auto& occ : kw.factor("VERI_MAIL")) check = occ.text("VERIF", "OUI") == "OUI";
+    if (check)
+        for (const auto& defect : meshDefects(*mesh)) msg().alarm("MODELISA_VERI_MAIL", "mesh " + path + ": " + defect);
+
+    const std::string name = ctx.resultName.empty() ? report.meshName : ctx.resultName;
+    msg().info(meshSummary(*mesh, name));
+    return mesh;
+}
+
+MA_REGISTER_COMMAND("LIRE_MAILLAGE", lireMaillage);
+
+}  // namespace
+}  // namespace ma

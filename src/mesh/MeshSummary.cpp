@@ -1,0 +1,53 @@
+#include "mesh/MeshSummary.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+
+namespace ma {
+
+std::string meshSummary(const Mesh& mesh, const std::string& meshName) {
+    std::string s = fmt::format("------------ MAILLAGE {:<8} - IMPRESSIONS NIVEAU  1 ------------\n\n", meshName);
+    s += fmt::format("NOMBRE DE NOEUDS {:>25}\n\n", mesh.nodeCount());
+    s += fmt::format("NOMBRE DE MAILLES {:>24}\n", mesh.cellCount());
+    std::map<int, int> perType;
+    for (auto t : mesh.cellTypes) ++perType[int(t)];
+    for (const auto& [code, n] : perType)
+        s += fmt::format("{:30}{:<8}{:>13}\n", "", cellTypeName(CellType(code)), n);
+    auto groups = [&](const GroupSet& set, const char* title) {
+        if (set.size() == 0) return;
+        s += fmt::format("\n{} {:>{}}\n", title, set.size(), 41 - int(std::string(title).size()) - 1);
+        for (const auto& name : set.names()) s += fmt::format("{:30}{:<24}{:>10}\n", "", name, set.get(name).size());
+    };
+    groups(mesh.nodeGroups, "NOMBRE DE GROUPES DE NOEUDS");
+    groups(mesh.cellGroups, "NOMBRE DE GROUPES DE MAILLES");
+    s += std::string(80, '-') + "\n";
+    return s;
+}
+
+std::vector<std::string> meshDefects(const Mesh& mesh) {
+    std::vector<std::string> out;
+    std::vector<char> used(size_t(mesh.nodeCount()), 0);
+    for (int v : mesh.connectivity) used[size_t(v)] = 1;
+    const auto orphans = std::count(used.begin(), used.end(), 0);
+    if (orphans > 0) {
+        int first = int(std::find(used.begin(), used.end(), 0) - used.begin());
+        out.push_back(fmt::format("{} nodes belong to no cell (first one: {})", orphans, mesh.nodeNames[size_t(first)]));
+    }
+    int repeated = 0;
+    std::string example;
+    for (int c = 0; c < mesh.cellCount(); ++c) {
+        auto n = mesh.cellNodes(c);
+        std::vector<int> s(n.begin(), n.end());
+        std::sort(s.begin(), s.end());
+        if (std::adjacent_find(s.begin(), s.end()) != s.end()) {
+            if (repeated++ == 0) example = mesh.cellNames[size_t(c)];
+        }
+    }
+    if (repeated > 0)
+        out.push_back(fmt::format("{} cells have the same node twice (degenerate cells; first one: {})", repeated, example));
+    return out;
+}
+
+}  // namespace ma
