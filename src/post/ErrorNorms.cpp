@@ -1,0 +1,209 @@
+#include "post/ErrorNorms.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <map>
+
+#include "core/Error.hpp"
+#include "core/Function.hpp"
+#include "fe/FieldSampling.hpp"
+#include "fe/Material.hpp"
+#include "fe/Model.hpp"
+#include "fields/Fields.hpp"
+#include "post/TableOperations.hpp"
+
+namespace ma {
+namespace {
+
+// Cells of `group` that carry an element of the model.
+std::vector<int> groupElements(const Model& model, const std::string& group) {
+    const Mesh& mesh = *model.mesh;
+    if (!mesh.cellGroups.has(group))
+        throw UserError(fmt::format("GROUP_MA: group {} is not in mesh {}", group, mesh.name));
+    std::vector<char> inModel(size_t(mesh.cellCount()), 0);
+    for (const auto& e : model.elements) inModel[size_t(e.cell)] = 1;
+    std::vector<int> out;
+    for (int c : mesh.cellGroups.get(group))
+        if (inModel[size_t(c)]) out.push_back(c);
+    if (out.empty())
+        throw UserError(fmt::format("GROUP_MA: group {} has no element of model {}", group, model.name));
+    return out;
+}
+
+// Reference values of every component at the points (X, Y[, Z]), one batch per formula.
+std::vector<std::vector<double>> evaluateReference(const ReferenceFormulas& ref, size_t group, int dim,
+                                                   const std::vector<std::array<double, 3>>& points) {
+    std::map<std::string, std::vector<double>> columns;
+    const char* names[3] = {"X", "Y", "Z"};
+    for (int d = 0; d < dim; ++d) {
+        auto& col = columns[names[d]];
+        col.reserve(points.size());
+        for (const auto& p : points) col.push_back(p[size_t(d)]);
+    }
+    std::vector<std::vector<double>> out(ref.components.size());
+    for (size_t c = 0; c < ref.components.size(); ++c) {
+        if (ref.formulas[c].empty()) {
+            out[c].assign(points.size(), 0.0);
+            continue;
+        }
+        const auto& f = ref.formulas[c].at(group);
+        out[c] = f ? f->evaluateColumns(columns, points.size()) : std::vector<double>(points.size(), 0.0);
+    }
+    return out;
+}
+
+void checkFormulaCounts(const ReferenceFormulas& ref, size_t groups) {
+    for (size_t c = 0; c < ref.components.size(); ++c)
+        if (!ref.formulas[c].empty() && ref.formulas[c].size() != groups)
+            throw UserError(fmt::format("{} gives {} formulas for {} groups of GROUP_MA: one formula per group is "
+                                        "needed (code_aster PREPOST_12)",
+                                        ref.components[c], ref.formulas[c].size(), groups));
+}
+
+std::shared_ptr<Table> errorTable(const std::vector<std::string>& groups, const std::vector<double>& difference,
+                                  const std::vector<double>& reference, double totalDifference,
+                                  double totalReference, bool withRelative, double relative, const std::string& title) {
+    auto table = std::make_shared<Table>();
+    size_t width = 5;  // "TOTAL"
+    for (const auto& g : groups) width = std::max(width, g.size());
+    table->addColumn("GROUP_MA", textColumnFor(width));
+    table->addColumn("DIFFERENCE", ColumnType::real());
+    table->addColumn("REFERENCE", ColumnType::real());
+    if (withRelative) table->addColumn("ERREUR RELATIVE", ColumnType::real());
+    for (size_t g = 0; g < groups.size(); ++g) {
+        const size_t r = table->addRow();
+        table->set(r, 0, groups[g]);
+        table->set(r, 1, difference[g]);
+        table->set(r, 2, reference[g]);
+    }
+    const size_t r = table->addRow();
+    table->set(r, 0, std::string("TOTAL"));
+    table->set(r, 1, totalDifference);
+    table->set(r, 2, totalReference);
+    if (withRelative) table->set(r, 3, relative);
+    table->title = {title};
+    return table;
+}
+
+}  // namespace
+
+double elasticEnergyDensity(const double s[6], double E, double nu, bool planeStress) {
+    const double zz = planeStress ? 0.0 : s[2];
+    const double normal = s[0] * s[0] + s[1] * s[1] + zz * zz - 2.0 * nu * (s[0] * s[1] + s[1] * zz + zz * s[0]);
+    const double shear = s[3] * s[3] + s[4] * s[4] + s[5] * s[5];
+    return normal / (2.0 * E) + (1.0 + nu) / E * shear;
+}
+
+std::shared_ptr<Table> displacementErrorTable(const Model& model, const NodalField& displacement,
+                                              const std::vector<std::string>& groups,
+                                              const ReferenceFormulas& reference) {
+    checkFormulaCounts(reference, groups.size());
+    const int dim = model.dim;
+    std::vector<double> diff(groups.size()), ref(groups.size());
+    for (size_t g = 0; g < groups.size(); ++g) {
+        const auto samples = sampleDisplacement(model, displacement, groupElements(model, groups[g]));
+        std::vector<std::array<double, 3>> points;
+        points.reserve(samples.size());
+        for (const auto& s : samples) points.push_back(s.xyz);
+        const auto uref = evaluateReference(reference, g, dim, points);
+        double d2 = 0.0, r2 = 0.0;
+        for (size_t p = 0; p < samples.size(); ++p) {
+            double dp = 0.0, rp = 0.0;
+            for (size_t c = 0; c < reference.components.size(); ++c) {
+                const double u = uref[c][p];
+                rp += u * u;
+                if (int(c) < dim) dp += (samples[p].u[c] - u) * (samples[p].u[c] - u);
+            }
+            d2 += samples[p].weight * dp;
+            r2 += samples[p].weight * rp;
+        }
+        diff[g] = std::sqrt(d2);
+        ref[g] = std::sqrt(r2);
+    }
+    double d2 = 0.0, r2 = 0.0;
+    for (size_t g = 0; g < groups.size(); ++g) {
+        d2 += diff[g] * diff[g];
+        r2 += ref[g] * ref[g];
+    }
+    const double totalDiff = std::sqrt(d2), totalRef = std::sqrt(r2);
+    const bool relative = totalRef > 1e-16;
+    return errorTable(groups, diff, ref, totalDiff, totalRef, relative, relative ? totalDiff / totalRef : 0.0,
+                      "ERREUR EN NORME L2 DU DEPLACEMENT");
+}
+
+std::shared_ptr<Table> energyErrorTable(const Model& model, const GaussField& stress, const MaterialField& material,
+                                        const std::vector<std::string>& groups, const ReferenceFormulas& reference) {
+    checkFormulaCounts(reference, groups.size());
+    const int dim = model.dim;
+    const bool planeStress = model.modelisation == Modelisation::C_PLAN;
+    static const char* kNames[6] = {"SIXX", "SIYY", "SIZZ", "SIXY", "SIXZ", "SIYZ"};
+    // Field component of each of the 6 stress slots (-1: absent, counts as zero).
+    int fieldComp[6];
+    for (int k = 0; k < 6; ++k) fieldComp[k] = stress.componentIndex(kNames[k]);
+    if (fieldComp[0] < 0 || fieldComp[1] < 0)
+        throw UserError(fmt::format("CHAM_GD: field {} has no stress components SIXX, SIYY (SIEF_ELGA expected)",
+                                    stress.name));
+    // Reference formula slot of each stress slot.
+    int refComp[6];
+    for (int k = 0; k < 6; ++k) {
+        refComp[k] = -1;
+        for (size_t c = 0; c < reference.components.size(); ++c)
+            if (reference.components[c] == kNames[k]) refComp[k] = int(c);
+    }
+    const size_t nc = stress.components.size();
+    // Components the difference uses: 2*dim of them (SIXX, SIYY, SIZZ, SIXY[, SIXZ, SIYZ]).
+    const int used = dim == 3 ? 6 : 4;
+
+    std::vector<double> diff(groups.size()), ref(groups.size());
+    for (size_t g = 0; g < groups.size(); ++g) {
+        std::vector<char> inGroup(size_t(model.mesh->cellCount()), 0);
+        for (int c : groupElements(model, groups[g])) inGroup[size_t(c)] = 1;
+        std::vector<size_t> pts;
+        std::vector<std::array<double, 3>> xyz;
+        for (size_t e = 0; e < stress.cells.size(); ++e) {
+            if (stress.cells[e] < 0 || stress.cells[e] >= int(inGroup.size()) || !inGroup[size_t(stress.cells[e])])
+                continue;
+            for (int p = stress.pointOffsets[e]; p < stress.pointOffsets[e + 1]; ++p) {
+                pts.push_back(size_t(p));
+                xyz.push_back(stress.pointCoords[size_t(p)]);
+            }
+        }
+        // Cell of each point, for its material.
+        std::vector<int> cellOf;
+        cellOf.reserve(pts.size());
+        for (size_t e = 0; e < stress.cells.size(); ++e) {
+            if (stress.cells[e] < 0 || stress.cells[e] >= int(inGroup.size()) || !inGroup[size_t(stress.cells[e])])
+                continue;
+            for (int p = stress.pointOffsets[e]; p < stress.pointOffsets[e + 1]; ++p) cellOf.push_back(stress.cells[e]);
+        }
+        const auto sref = evaluateReference(reference, g, dim, xyz);
+        double eDiff = 0.0, eRef = 0.0;
+        for (size_t k = 0; k < pts.size(); ++k) {
+            const Material& m = material.at(cellOf[k]);
+            double sr[6] = {0, 0, 0, 0, 0, 0}, sd[6] = {0, 0, 0, 0, 0, 0};
+            for (int j = 0; j < 6; ++j) {
+                sr[j] = refComp[j] >= 0 ? sref[size_t(refComp[j])][k] : 0.0;
+                if (j < used) {
+                    const double sh = fieldComp[j] >= 0 ? stress.values[pts[k] * nc + size_t(fieldComp[j])] : 0.0;
+                    sd[j] = sh - sr[j];
+                }
+            }
+            const double w = stress.pointWeights[pts[k]];
+            eRef += w * elasticEnergyDensity(sr, m.E, m.nu, planeStress);
+            eDiff += w * elasticEnergyDensity(sd, m.E, m.nu, planeStress);
+        }
+        diff[g] = eDiff;
+        ref[g] = eRef;
+    }
+    double totalDiff = 0.0, totalRef = 0.0;
+    for (size_t g = 0; g < groups.size(); ++g) {
+        totalDiff += diff[g];
+        totalRef += ref[g];
+    }
+    const bool relative = std::sqrt(totalRef) > 1e-16;
+    return errorTable(groups, diff, ref, totalDiff, totalRef, relative,
+                      relative ? std::sqrt(totalDiff) / std::sqrt(totalRef) : 0.0, "ERREUR EN NORME ENERGIE");
+}
+
+}  // namespace ma
