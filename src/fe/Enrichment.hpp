@@ -3,6 +3,7 @@
 // more unknowns per node, and sub-cell integration of cut elements. The engine (src/fe) knows
 // only this interface, so fe does not depend on xfem.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fe/ElementIntegration.hpp"
@@ -20,6 +21,10 @@ public:
     virtual void integration(int cell, ElementIntegration& out) const = 0;
     // Smallest retained volume fraction of an enrichment support, for the log (conditioning).
     virtual double smallestRetainedFraction() const { return 1.0; }
+    // Heaviside slots (node, k >= 1) that a node carries (nodeSlots) but that no element uses:
+    // inactive cracks of multi-crack elements and slots dropped by the conditioning guard
+    // (xfem_spec §3.9, §3.10). The engine must fix these unknowns to 0 (like DDL_IMPO = 0).
+    virtual std::vector<std::pair<int, int>> inactiveSlots() const { return {}; }
 };
 
 }  // namespace ma

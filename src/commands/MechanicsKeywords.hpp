@@ -1,0 +1,120 @@
+#pragma once
+// Keyword readers shared by the mechanics commands (AFFE_MODELE ... STAT_NON_LINE): cell and
+// node selections, SOLVEUR, EXCIT. Header-only: included by src/commands files only.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "core/Error.hpp"
+#include "fe/MechanicalProblem.hpp"
+#include "mesh/Mesh.hpp"
+#include "parser/KeywordTree.hpp"
+
+namespace ma::mechanics {
+
+// Cells named by TOUT / GROUP_MA / MAILLE in one occurrence (sorted, unique). `what` describes
+// the selection for messages; TOUT returns every cell of the mesh.
+inline std::vector<int> selectedCells(const Mesh& mesh, const KeywordSet& occ, std::string* what = nullptr) {
+    std::vector<int> cells;
+    if (occ.has("TOUT")) {
+        cells.resize(mesh.cellCount());
+        for (int c = 0; c < mesh.cellCount(); ++c) cells[c] = c;
+        if (what) *what = "TOUT='OUI'";
+        return cells;
+    }
+    if (occ.has("GROUP_MA")) {
+        for (const auto& g : occ.texts("GROUP_MA")) {
+            if (!mesh.cellGroups.has(g))
+                throw UserError(fmt::format("{}: the mesh {} has no cell group '{}'", occ.pathOf("GROUP_MA"), mesh.name, g));
+            const auto& members = mesh.cellGroups.get(g);
+            cells.insert(cells.end(), members.begin(), members.end());
+        }
+        if (what) *what = fmt::format("GROUP_MA={}", fmt::join(occ.texts("GROUP_MA"), ","));
+    }
+    if (occ.has("MAILLE")) {
+        for (const auto& n : occ.texts("MAILLE")) {
+            const int c = mesh.findCell(n);
+            if (c < 0) throw UserError(fmt::format("{}: the mesh {} has no cell '{}'", occ.pathOf("MAILLE"), mesh.name, n));
+            cells.push_back(c);
+        }
+        if (what) *what = fmt::format("{}{}MAILLE={}", *what, what->empty() ? "" : " ", fmt::join(occ.texts("MAILLE"), ","));
+    }
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    return cells;
+}
+
+// Nodes named by TOUT / GROUP_MA / MAILLE / GROUP_NO / NOEUD (sorted, unique). TOUT means the
+// nodes carrying unknowns (`modelNodes`).
+inline std::vector<int> selectedNodes(const Mesh& mesh, const KeywordSet& occ, const std::vector<char>& modelNodes) {
+    std::vector<int> nodes;
+    if (occ.has("TOUT")) {
+        for (int n = 0; n < mesh.nodeCount(); ++n)
+            if (modelNodes[n]) nodes.push_back(n);
+        return nodes;
+    }
+    if (occ.has("GROUP_MA") || occ.has("MAILLE")) {
+        KeywordSet cellsOnly(occ.path());
+        if (occ.has("GROUP_MA")) cellsOnly.setValues("GROUP_MA", occ.values("GROUP_MA"));
+        if (occ.has("MAILLE")) cellsOnly.setValues("MAILLE", occ.values("MAILLE"));
+        for (int c : selectedCells(mesh, cellsOnly))
+            for (int n : mesh.cellNodes(c)) nodes.push_back(n);
+    }
+    if (occ.has("GROUP_NO"))
+        for (const auto& g : occ.texts("GROUP_NO")) {
+            if (!mesh.nodeGroups.has(g))
+                throw UserError(fmt::format("{}: the mesh {} has no node group '{}'", occ.pathOf("GROUP_NO"), mesh.name, g));
+            const auto& members = mesh.nodeGroups.get(g);
+            nodes.insert(nodes.end(), members.begin(), members.end());
+        }
+    if (occ.has("NOEUD"))
+        for (const auto& n : occ.texts("NOEUD")) {
+            const int i = mesh.findNode(n);
+            if (i < 0) throw UserError(fmt::format("{}: the mesh {} has no node '{}'", occ.pathOf("NOEUD"), mesh.name, n));
+            nodes.push_back(i);
+        }
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    return nodes;
+}
+
+// SOLVEUR (a factor keyword with defaults; absent means MUMPS with its defaults).
+inline SolverOptions solverOptions(const KeywordSet& kw, int info) {
+    SolverOptions o;
+    o.info = info;
+    const auto& occ = kw.factor("SOLVEUR");
+    if (occ.empty()) return o;
+    const KeywordSet& s = occ.front();
+    o.method = s.text("METHODE", "MUMPS");
+    o.renum = s.text("RENUM", "AUTO");
+    if (o.method != "MUMPS") o.renum = "AUTO";  // MD/MDA/METIS/RCMK of the native solvers: Eigen uses AMD
+    o.nprec = static_cast<int>(s.integer("NPREC", 8));
+    if (s.has("PCENT_PIVOT")) {
+        const auto& v = s.values("PCENT_PIVOT")[0];
+        o.pcentPivot = std::holds_alternative<long long>(v) ? int(std::get<long long>(v))
+                                                            : int(std::get<double>(v));
+    }
+    if (s.text("STOP_SINGULIER", "OUI") == "NON") o.nprec = -1;
+    return o;
+}
+
+// EXCIT occurrences -> load cases.
+inline std::vector<LoadCase> loadCases(const KeywordSet& kw) {
+    std::vector<LoadCase> out;
+    for (const auto& occ : kw.factor("EXCIT")) {
+        LoadCase lc;
+        lc.load = occ.object<MechanicalLoad>("CHARGE");
+        if (occ.has("FONC_MULT")) lc.multiplier = occ.object<Function>("FONC_MULT");
+        out.push_back(lc);
+    }
+    return out;
+}
+
+}  // namespace ma::mechanics
+
+namespace ma::mechanics {
+// AFFE_CHAR_MECA (reals) and AFFE_CHAR_MECA_F (functions): defined in AffeCharMeca.cpp.
+ConceptPtr buildMechanicalLoad(const KeywordSet& kw, bool functions);
+}  // namespace ma::mechanics

@@ -1,0 +1,132 @@
+// STAT_NON_LINE restricted to what ssnv511 needs (commands_spec §8.7): RELATION='ELAS' in small
+// strains, fixed loads scaled by FONC_MULT, Newton iterations with RESI_GLOB_MAXI /
+// RESI_GLOB_RELA / ITER_GLOB_MAXI / ARRET. Order 0 is the initial state (zero displacement at the
+// first instant); one step per later instant up to INST_FIN; ARCHIVAGE selects the stored steps.
+//
+// The contact engine will wrap MechanicalProblem::solveIncrement in its active-set loop; until it
+// lands, CONTACT is refused.
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "commands/MechanicsKeywords.hpp"
+#include "core/Messages.hpp"
+#include "fe/MechanicalProblem.hpp"
+#include "fields/Fields.hpp"
+#include "parser/CommandRegistry.hpp"
+
+namespace ma {
+namespace {
+
+bool near(double a, double b, double precision) { return std::abs(a - b) <= precision * std::max(1.0, std::abs(b)); }
+
+ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (ctx.reused) throw NotImplemented("STAT_NON_LINE with reuse= (continuation) is not supported by miniaster");
+    if (kw.has("CONTACT"))
+        throw NotImplemented("STAT_NON_LINE/CONTACT: contact is not available in miniaster yet");
+    for (const auto& occ : kw.factor("COMPORTEMENT")) {
+        if (occ.text("RELATION", "ELAS") != "ELAS")
+            throw NotImplemented(occ.pathOf("RELATION") + "='" + occ.text("RELATION") + "': only ELAS is supported");
+        if (occ.text("DEFORMATION", "PETIT") != "PETIT")
+            throw NotImplemented(occ.pathOf("DEFORMATION") + "='" + occ.text("DEFORMATION") + "': only PETIT");
+    }
+    if (kw.text("METHODE", "NEWTON") != "NEWTON")
+        throw NotImplemented("STAT_NON_LINE/METHODE='" + kw.text("METHODE") + "': only NEWTON");
+    auto model = kw.object<Model>("MODELE");
+    auto material = kw.object<MaterialField>("CHAM_MATER");
+    if (material->mesh != model->mesh)
+        throw UserError("STAT_NON_LINE: CHAM_MATER " + material->name + " is not defined on the mesh of MODELE " + model->name);
+
+    // Instants.
+    const auto& incr = kw.factor("INCREMENT");
+    if (incr.empty()) throw UserError("STAT_NON_LINE: INCREMENT/LIST_INST is required");
+    const KeywordSet& inc = incr.front();
+    const auto list = inc.object<RealList>("LIST_INST")->values;
+    const double precision = inc.real("PRECISION", 1e-6);
+    auto indexOf = [&](double t, const std::string& key) {
+        for (size_t i = 0; i < list.size(); ++i)
+            if (near(list[i], t, precision)) return i;
+        throw UserError(fmt::format("{} = {} is not an instant of LIST_INST", inc.pathOf(key), t));
+    };
+    size_t first = 0, last = list.size() - 1;
+    if (inc.has("INST_INIT")) first = indexOf(inc.real("INST_INIT"), "INST_INIT");
+    if (inc.has("NUME_INST_INIT")) first = static_cast<size_t>(inc.integer("NUME_INST_INIT"));
+    if (inc.has("INST_FIN")) last = indexOf(inc.real("INST_FIN"), "INST_FIN");
+    if (inc.has("NUME_INST_FIN")) last = static_cast<size_t>(inc.integer("NUME_INST_FIN"));
+    if (first >= list.size() || last >= list.size() || last <= first)
+        throw UserError(fmt::format("STAT_NON_LINE/INCREMENT: no step between instants #{} and #{} of LIST_INST "
+                                    "({} instants)",
+                                    first, last, list.size()));
+
+    // Convergence criteria: RESI_GLOB_RELA = 1e-6 when neither is given.
+    ConvergenceOptions conv;
+    if (const auto& c = kw.factor("CONVERGENCE"); !c.empty()) {
+        const KeywordSet& o = c.front();
+        conv.maxIterations = static_cast<int>(o.integer("ITER_GLOB_MAXI", 10));
+        conv.resiGlobMaxi = o.has("RESI_GLOB_MAXI") ? o.real("RESI_GLOB_MAXI") : -1.0;
+        conv.resiGlobRela = o.has("RESI_GLOB_RELA") ? o.real("RESI_GLOB_RELA") : -1.0;
+        if (conv.resiGlobMaxi < 0.0 && conv.resiGlobRela < 0.0) conv.resiGlobRela = 1e-6;
+        conv.stopOnFailure = o.text("ARRET", "OUI") == "OUI";
+    }
+
+    // Archiving: every step unless ARCHIVAGE restricts it.
+    std::vector<char> archive(list.size(), 1);
+    std::vector<std::string> excluded;
+    if (const auto& a = kw.factor("ARCHIVAGE"); !a.empty()) {
+        const KeywordSet& o = a.front();
+        if (o.has("CHAM_EXCLU")) excluded = o.texts("CHAM_EXCLU");
+        const double aprec = o.real("PRECISION", 1e-6);
+        std::vector<double> wanted;
+        if (o.has("LIST_INST")) wanted = o.object<RealList>("LIST_INST")->values;
+        if (o.has("INST")) wanted = o.reals("INST");
+        if (!wanted.empty()) {
+            std::fill(archive.begin(), archive.end(), 0);
+            for (size_t i = 0; i < list.size(); ++i)
+                for (double t : wanted)
+                    if (near(list[i], t, aprec)) archive[i] = 1;
+        }
+        if (o.has("PAS_ARCH")) {
+            const long long pas = o.integer("PAS_ARCH");
+            for (size_t i = 0; i < list.size(); ++i) archive[i] = (i - first) % pas == 0;
+        }
+        archive[last] = 1;  // the last computed step is always archived
+    }
+    auto keep = [&](const std::string& field) {
+        return std::find(excluded.begin(), excluded.end(), field) == excluded.end();
+    };
+
+    MechanicalProblem problem(model, material, mechanics::loadCases(kw), mechanics::solverOptions(kw, ctx.info));
+    auto result = std::make_shared<Result>("evol_noli");
+    result->mesh = model->mesh;
+    result->model = model;
+    result->material = material;
+    int order = 0;
+    auto store = [&](double inst) {
+        ResultStep step;
+        step.order = order++;
+        step.inst = inst;
+        if (keep("DEPL")) step.nodalFields.emplace_back("DEPL", problem.displacementField());
+        if (keep("SIEF_ELGA")) step.gaussFields.emplace_back("SIEF_ELGA", problem.stressField());
+        result->steps.push_back(std::move(step));
+    };
+    store(list[first]);  // initial state: u = 0, sigma = 0
+    int totalIterations = 0;
+    for (size_t i = first + 1; i <= last; ++i) {
+        const auto report = problem.solveIncrement(list[i], conv);
+        totalIterations += report.iterations;
+        msg().infof("    increment {} (INST {}): {} Newton iteration(s), RESI_GLOB_RELA {:.3e}, RESI_GLOB_MAXI {:.3e}",
+                    i - first, list[i], report.iterations, report.relativeResidual, report.maxResidual);
+        if (archive[i]) store(list[i]);
+    }
+    msg().infof("    STAT_NON_LINE: {} increment(s), {} Newton iteration(s), {} archived order(s), {:.3f} s",
+                last - first, totalIterations, result->steps.size(),
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    return result;
+}
+
+MA_REGISTER_COMMAND("STAT_NON_LINE", statNonLine);
+
+}  // namespace
+}  // namespace ma

@@ -1,0 +1,34 @@
+#pragma once
+// DEFI_MATERIAU (mater_sdaster) and AFFE_MATERIAU (cham_mater): isotropic linear elasticity.
+#include <memory>
+#include <vector>
+
+#include "core/Concept.hpp"
+#include "mesh/Mesh.hpp"
+
+namespace ma {
+
+class Model;
+
+class Material : public Concept {
+public:
+    std::string typeName() const override { return "mater_sdaster"; }
+    double E = 0.0;
+    double nu = 0.0;
+    bool hasRho = false;
+    double rho = 0.0;
+};
+
+class MaterialField : public Concept {
+public:
+    std::string typeName() const override { return "cham_mater"; }
+    std::shared_ptr<const Mesh> mesh;
+    std::shared_ptr<const Model> model;  // when MODELE was given
+    // Material of each mesh cell (null where AFFE assigned none).
+    std::vector<std::shared_ptr<const Material>> cellMaterial;
+
+    // Material of `cell`; UserError naming the cell when none was assigned.
+    const Material& at(int cell) const;
+};
+
+}  // namespace ma

@@ -1,0 +1,659 @@
+#include "fe/MechanicalProblem.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "core/Error.hpp"
+#include "core/Messages.hpp"
+#include "fe/ElementKinematics.hpp"
+#include "fe/Enrichment.hpp"
+
+namespace ma {
+
+namespace {
+
+double seconds(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Global dofs of the element's local unknowns (node-major, then slot, then component).
+void localDofs(const Mesh& mesh, const DofNumbering& numbering, const ElementIntegration& ei, std::vector<int>& dofs) {
+    const auto nodes = mesh.cellNodes(ei.cell);
+    const int dim = numbering.dim();
+    dofs.clear();
+    for (int a = 0; a < ei.nodeCount; ++a)
+        for (int k = 0; k < ei.slots[a]; ++k)
+            for (int c = 0; c < dim; ++c) {
+                const int d = numbering.dof(nodes[a], k, c);
+                if (d < 0)
+                    throw std::logic_error(fmt::format("element on cell {} uses slot {} of node {}, which the "
+                                                       "enrichment does not give to the node",
+                                                       mesh.cellNames[ei.cell], k, mesh.nodeNames[nodes[a]]));
+                dofs.push_back(d);
+            }
+}
+
+}  // namespace
+
+IsotropicLaw IsotropicLaw::from(const Material& m, Modelisation modelisation, const std::string& where) {
+    IsotropicLaw law;
+    const double E = m.E, nu = m.nu;
+    law.mu = E / (2.0 * (1.0 + nu));
+    if (modelisation == Modelisation::C_PLAN) {
+        law.lambdaEff = E * nu / (1.0 - nu * nu);
+        law.lambdaZ = 0.0;
+        return law;
+    }
+    if (nu >= 0.5)
+        throw UserError(fmt::format("material {} has NU = {}: an incompressible material cannot be modelled "
+                                    "with {} displacement elements (lambda is infinite); use NU < 0.5",
+                                    where, nu, modelisationName(modelisation)));
+    law.lambdaEff = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
+    law.lambdaZ = modelisation == Modelisation::D_PLAN ? law.lambdaEff : 0.0;
+    return law;
+}
+
+struct MechanicalProblem::Constraints {
+    std::vector<char> fixed;
+    std::vector<double> fixedValue;
+    std::vector<int> eq;  // dof -> equation (-1: eliminated)
+    int freeCount = 0;
+    struct Relation {
+        std::vector<std::pair<int, double>> terms;  // free dofs only
+        double value = 0.0;                         // right-hand side after substitution of eliminated dofs
+    };
+    std::vector<Relation> multi;
+    int unattached = 0;
+
+    bool sameStructure(const Constraints& o) const {
+        if (fixed != o.fixed || multi.size() != o.multi.size()) return false;
+        for (size_t m = 0; m < multi.size(); ++m) {
+            if (multi[m].terms.size() != o.multi[m].terms.size()) return false;
+            for (size_t t = 0; t < multi[m].terms.size(); ++t)
+                if (multi[m].terms[t] != o.multi[m].terms[t]) return false;
+        }
+        return true;
+    }
+};
+
+MechanicalProblem::MechanicalProblem(std::shared_ptr<const Model> model, std::shared_ptr<const MaterialField> material,
+                                     std::vector<LoadCase> loads, SolverOptions solver)
+    : model_(std::move(model)), material_(std::move(material)), loads_(std::move(loads)), solverOptions_(std::move(solver)) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const Mesh& mesh = *model_->mesh;
+    for (const auto& lc : loads_)
+        if (lc.load->model && lc.load->model.get() != model_.get() && lc.load->model->mesh != model_->mesh)
+            throw UserError("load " + lc.load->name + " is defined on another mesh than the model " + model_->name);
+    numbering_ = std::make_unique<DofNumbering>(*model_);
+    u.assign(numbering_->size(), 0.0);
+    attached_.assign(numbering_->size(), 0);
+    // Check materials and mark the dofs each element really uses.
+    ElementIntegration ei;
+    std::vector<int> dofs;
+    const bool enriched = model_->enrichment != nullptr;
+    if (enriched) enrichedIntegrations_.resize(model_->elements.size());
+    for (size_t e = 0; e < model_->elements.size(); ++e) {
+        const auto& element = model_->elements[e];
+        const Material& mat = material_->at(element.cell);
+        (void)IsotropicLaw::from(mat, element.modelisation, mat.name);
+        if (enriched && model_->enrichment->isEnriched(element.cell)) {
+            model_->enrichment->integration(element.cell, enrichedIntegrations_[e]);
+            const auto& x = enrichedIntegrations_[e];
+            localDofs(mesh, *numbering_, x, dofs);
+            int i = 0;
+            for (int a = 0; a < x.nodeCount; ++a)
+                for (int k = 0; k < x.slots[a]; ++k) {
+                    bool used = k == 0;
+                    for (size_t p = 0; p < x.refPoints.size() && !used; ++p) used = x.multiplier(int(p), a, k) != 0.0;
+                    for (int c = 0; c < numbering_->dim(); ++c, ++i)
+                        if (used) attached_[dofs[i]] = 1;
+                }
+        } else {
+            for (int node : mesh.cellNodes(element.cell))
+                for (int c = 0; c < numbering_->dim(); ++c) attached_[numbering_->dof(node, 0, c)] = 1;
+        }
+    }
+    solverOptions_.singularHint = enriched ? "a missing boundary condition (rigid body motion of a part of the model, "
+                                             "e.g. a block cut off by the interfaces) or an unattached enriched dof"
+                                           : "a missing boundary condition (rigid body motion: DDL_IMPO does not "
+                                             "prevent every translation/rotation)";
+    solver_ = makeLinearSolver(solverOptions_);
+    int nodesWithUnknowns = 0;
+    for (int node = 0; node < numbering_->nodeCount(); ++node) nodesWithUnknowns += numbering_->hasNode(node);
+    msg().infof("    model {}: {} elements, {} boundary elements, {} nodes with unknowns, {} dofs "
+                "(components {}), set-up {:.3f} s",
+                model_->name, model_->elements.size(), model_->skinElements.size(),
+                nodesWithUnknowns,
+                numbering_->size(), fmt::join(numbering_->componentNames(), " "), seconds(t0));
+}
+
+MechanicalProblem::~MechanicalProblem() = default;
+
+double MechanicalProblem::loadFactor(const LoadCase& lc, double inst) const {
+    if (!lc.multiplier) return 1.0;
+    return lc.multiplier->evaluateColumns({{"INST", {inst}}}, 1)[0];
+}
+
+void MechanicalProblem::buildConstraints(double inst, Constraints& out) const {
+    const Mesh& mesh = *model_->mesh;
+    const int ndof = numbering_->size();
+    out.fixed.assign(ndof, 0);
+    out.fixedValue.assign(ndof, 0.0);
+    out.multi.clear();
+    std::vector<LinearRelation> relations;
+    for (const auto& lc : loads_) {
+        const size_t before = relations.size();
+        lc.load->appendRelations(inst, relations);
+        const double factor = loadFactor(lc, inst);
+        for (size_t r = before; r < relations.size(); ++r) relations[r].value *= factor;
+    }
+    auto describe = [&](int dof) {
+        return fmt::format("{} of node {}", numbering_->componentOf(dof), mesh.nodeNames[numbering_->nodeOf(dof)]);
+    };
+    std::vector<std::pair<int, double>> terms;
+    std::vector<const LinearRelation*> multiTerm;
+    std::vector<std::vector<std::pair<int, double>>> multiTerms;
+    for (const auto& rel : relations) {
+        terms.clear();
+        for (const auto& t : rel.terms) {
+            const int d = numbering_->dofOf(t.node, t.component);
+            if (d < 0)
+                throw UserError(fmt::format("a linear relation uses {} of node {}, which the model {} does not carry",
+                                            t.component, mesh.nodeNames[t.node], model_->name));
+            auto it = std::find_if(terms.begin(), terms.end(), [&](const auto& p) { return p.first == d; });
+            if (it == terms.end()) terms.emplace_back(d, t.coef);
+            else it->second += t.coef;
+        }
+        std::erase_if(terms, [](const auto& p) { return p.second == 0.0; });
+        if (terms.empty()) continue;
+        if (terms.size() == 1) {
+            const int d = terms[0].first;
+            const double v = rel.value / terms[0].second;
+            if (out.fixed[d] && std::abs(out.fixedValue[d] - v) > 1e-12 * std::max(std::abs(v), std::abs(out.fixedValue[d])))
+                throw UserError(fmt::format("conflicting Dirichlet conditions: {} is imposed to {} and to {}", describe(d),
+                                            out.fixedValue[d], v));
+            out.fixed[d] = 1;
+            out.fixedValue[d] = v;
+        } else {
+            multiTerm.push_back(&rel);
+            std::sort(terms.begin(), terms.end());
+            multiTerms.push_back(terms);
+        }
+    }
+    // Enriched dofs no element uses: neutralised (value 0), as code_aster's xteddl.
+    out.unattached = 0;
+    for (int d = 0; d < ndof; ++d)
+        if (!attached_[d] && !out.fixed[d]) {
+            int slot = 0, comp = 0;
+            if (parseDisplacementComponent(numbering_->componentOf(d), slot, comp) && slot > 0) {
+                out.fixed[d] = 1;
+                ++out.unattached;
+            }
+        }
+    out.eq.assign(ndof, -1);
+    out.freeCount = 0;
+    for (int d = 0; d < ndof; ++d)
+        if (!out.fixed[d]) out.eq[d] = out.freeCount++;
+    for (size_t m = 0; m < multiTerm.size(); ++m) {
+        Constraints::Relation r;
+        r.value = multiTerm[m]->value;
+        for (const auto& [d, c] : multiTerms[m]) {
+            if (out.fixed[d]) r.value -= c * out.fixedValue[d];
+            else r.terms.emplace_back(d, c);
+        }
+        if (r.terms.empty()) {
+            if (std::abs(r.value) > 1e-10 * std::max(1.0, std::abs(multiTerm[m]->value)))
+                throw UserError(fmt::format("a linear relation on {} contradicts the imposed values of its dofs",
+                                            describe(multiTerms[m][0].first)));
+            continue;
+        }
+        out.multi.push_back(std::move(r));
+    }
+}
+
+void MechanicalProblem::buildPattern() {
+    const auto t0 = std::chrono::steady_clock::now();
+    const Mesh& mesh = *model_->mesh;
+    const auto& c = *constraints_;
+    const int nNodes = mesh.nodeCount();
+    const int nEq = c.freeCount + static_cast<int>(c.multi.size());
+    // Node -> elements incidence.
+    std::vector<int> start(nNodes + 1, 0);
+    for (const auto& e : model_->elements)
+        for (int node : mesh.cellNodes(e.cell)) ++start[node + 1];
+    for (int i = 0; i < nNodes; ++i) start[i + 1] += start[i];
+    std::vector<int> incidence(start.back()), fill(start.begin(), start.end() - 1);
+    for (size_t e = 0; e < model_->elements.size(); ++e)
+        for (int node : mesh.cellNodes(model_->elements[e].cell)) incidence[fill[node]++] = static_cast<int>(e);
+    // Multipliers touching each dof.
+    std::vector<std::vector<int>> dofMultipliers;
+    if (!c.multi.empty()) {
+        dofMultipliers.resize(numbering_->size());
+        for (size_t m = 0; m < c.multi.size(); ++m)
+            for (const auto& [d, coef] : c.multi[m].terms) dofMultipliers[d].push_back(c.freeCount + int(m));
+    }
+    matrix_ = CsrMatrix{};
+    matrix_.rows = nEq;
+    matrix_.rowStart.assign(nEq + 1, 0);
+    std::vector<int> marker(nNodes, -1), neighbours;
+    std::vector<int> columns;
+    // Two passes over the nodes: count, then fill (rows of a node are contiguous in eq order).
+    for (int pass = 0; pass < 2; ++pass) {
+        std::fill(marker.begin(), marker.end(), -1);
+        if (pass == 1) {
+            for (int i = 0; i < nEq; ++i) matrix_.rowStart[i + 1] += matrix_.rowStart[i];
+            matrix_.cols.resize(matrix_.rowStart.back());
+        }
+        for (int node = 0; node < nNodes; ++node) {
+            if (!numbering_->hasNode(node)) continue;
+            neighbours.clear();
+            for (int k = start[node]; k < start[node + 1]; ++k)
+                for (int other : mesh.cellNodes(model_->elements[incidence[k]].cell))
+                    if (marker[other] != node) {
+                        marker[other] = node;
+                        neighbours.push_back(other);
+                    }
+            std::sort(neighbours.begin(), neighbours.end());
+            columns.clear();
+            for (int other : neighbours)
+                for (int d = numbering_->first(other); d < numbering_->first(other + 1); ++d)
+                    if (c.eq[d] >= 0) columns.push_back(c.eq[d]);
+            const int firstDof = numbering_->first(node);
+            const int lastDof = numbering_->first(node + 1);
+            for (int d = firstDof; d < lastDof; ++d) {
+                const int row = c.eq[d];
+                if (row < 0) continue;
+                const size_t extra = dofMultipliers.empty() ? 0 : dofMultipliers[d].size();
+                if (pass == 0) {
+                    matrix_.rowStart[row + 1] = static_cast<long long>(columns.size() + extra);
+                } else {
+                    auto out = matrix_.cols.begin() + matrix_.rowStart[row];
+                    out = std::copy(columns.begin(), columns.end(), out);
+                    if (extra) std::copy(dofMultipliers[d].begin(), dofMultipliers[d].end(), out);
+                }
+            }
+        }
+        for (size_t m = 0; m < c.multi.size(); ++m) {
+            const int row = c.freeCount + int(m);
+            if (pass == 0) {
+                matrix_.rowStart[row + 1] = static_cast<long long>(c.multi[m].terms.size());
+            } else {
+                auto out = matrix_.cols.begin() + matrix_.rowStart[row];
+                for (const auto& [d, coef] : c.multi[m].terms) *out++ = c.eq[d];
+                std::sort(matrix_.cols.begin() + matrix_.rowStart[row], matrix_.cols.begin() + matrix_.rowStart[row + 1]);
+            }
+        }
+    }
+    // Rows with multipliers got them appended; keep every row sorted.
+    if (!c.multi.empty())
+        for (int i = 0; i < c.freeCount; ++i)
+            std::sort(matrix_.cols.begin() + matrix_.rowStart[i], matrix_.cols.begin() + matrix_.rowStart[i + 1]);
+    matrix_.values.assign(matrix_.cols.size(), 0.0);
+    msg().infof("    matrix pattern: {} equations ({} free dofs, {} eliminated, {} multipliers), {} non-zeros, {:.3f} s",
+                nEq, c.freeCount, numbering_->size() - c.freeCount, c.multi.size(), matrix_.nonZeros(), seconds(t0));
+}
+
+void MechanicalProblem::assembleMatrix() {
+    const auto t0 = std::chrono::steady_clock::now();
+    const Mesh& mesh = *model_->mesh;
+    const auto& c = *constraints_;
+    const int dim = numbering_->dim();
+    matrix_.setZero();
+    ElementIntegration scratch;
+    PointGeometry geo;
+    std::vector<int> dofs;
+    std::vector<int> base;  // local index of (a, slot 0)
+    std::vector<double> Ke;
+    for (size_t e = 0; e < model_->elements.size(); ++e) {
+        const auto& element = model_->elements[e];
+        const ElementIntegration* ei = &scratch;
+        if (!enrichedIntegrations_.empty() && enrichedIntegrations_[e].nodeCount > 0) ei = &enrichedIntegrations_[e];
+        else classicalIntegration(mesh, element.cell, false, scratch);
+        computePointGeometry(mesh, element.cell, dim, false, *ei, geo);
+        localDofs(mesh, *numbering_, *ei, dofs);
+        const int nd = static_cast<int>(dofs.size());
+        const Material& mat = material_->at(element.cell);
+        const IsotropicLaw law = IsotropicLaw::from(mat, element.modelisation, mat.name);
+        base.assign(ei->nodeCount + 1, 0);
+        for (int a = 0; a < ei->nodeCount; ++a) base[a + 1] = base[a] + ei->slots[a] * dim;
+        Ke.assign(size_t(nd) * nd, 0.0);
+        const int n = ei->nodeCount;
+        for (size_t p = 0; p < ei->refPoints.size(); ++p) {
+            const double w = geo.weight[p];
+            for (int a = 0; a < n; ++a) {
+                const double* ga = &geo.gradN[(p * n + a) * 3];
+                for (int k = 0; k < ei->slots[a]; ++k) {
+                    const double pa = ei->multiplier(int(p), a, k);
+                    if (pa == 0.0) continue;
+                    const int ia = base[a] + k * dim;
+                    for (int b = 0; b < n; ++b) {
+                        const double* gb = &geo.gradN[(p * n + b) * 3];
+                        const double dot = ga[0] * gb[0] + ga[1] * gb[1] + ga[2] * gb[2];
+                        for (int l = 0; l < ei->slots[b]; ++l) {
+                            const double pb = ei->multiplier(int(p), b, l);
+                            if (pb == 0.0) continue;
+                            const double s = w * pa * pb;
+                            const int ib = base[b] + l * dim;
+                            for (int ci = 0; ci < dim; ++ci)
+                                for (int di = 0; di < dim; ++di)
+                                    Ke[size_t(ia + ci) * nd + ib + di] +=
+                                        s * (law.lambdaEff * ga[ci] * gb[di] + law.mu * ga[di] * gb[ci] +
+                                             (ci == di ? law.mu * dot : 0.0));
+                        }
+                    }
+                }
+            }
+        }
+        for (int i = 0; i < nd; ++i) {
+            const int row = c.eq[dofs[i]];
+            if (row < 0) continue;
+            const long long rb = matrix_.rowStart[row], re = matrix_.rowStart[row + 1];
+            for (int j = 0; j < nd; ++j) {
+                const int col = c.eq[dofs[j]];
+                if (col < 0) continue;
+                const auto it = std::lower_bound(matrix_.cols.begin() + rb, matrix_.cols.begin() + re, col);
+                matrix_.values[it - matrix_.cols.begin()] += Ke[size_t(i) * nd + j];
+            }
+        }
+    }
+    // Multiplier scaling: the mean stiffness diagonal, so that the constraint rows are of the same
+    // magnitude as the stiffness rows.
+    double sum = 0.0;
+    for (int i = 0; i < c.freeCount; ++i) {
+        const long long k = matrix_.find(i, i);
+        if (k >= 0) sum += std::abs(matrix_.values[k]);
+    }
+    alpha_ = c.freeCount > 0 && sum > 0.0 ? sum / c.freeCount : 1.0;
+    for (size_t m = 0; m < c.multi.size(); ++m) {
+        const int row = c.freeCount + int(m);
+        for (const auto& [d, coef] : c.multi[m].terms) {
+            matrix_.values[matrix_.find(row, c.eq[d])] += alpha_ * coef;
+            matrix_.values[matrix_.find(c.eq[d], row)] += alpha_ * coef;
+        }
+    }
+    factorised_ = false;
+    msg().infof("    stiffness assembled: {} elements, {:.3f} s ({:.3f} us per dof){}", model_->elements.size(),
+                seconds(t0), 1e6 * seconds(t0) / std::max(1, numbering_->size()),
+                c.multi.empty() ? "" : fmt::format(", multiplier scaling {:.3e}", alpha_));
+}
+
+void MechanicalProblem::internalForces(const std::vector<double>& disp, std::vector<double>& f) const {
+    const Mesh& mesh = *model_->mesh;
+    const int dim = numbering_->dim();
+    f.assign(numbering_->size(), 0.0);
+    ElementIntegration scratch;
+    PointGeometry geo;
+    std::vector<int> dofs;
+    std::vector<double> fe;
+    for (size_t e = 0; e < model_->elements.size(); ++e) {
+        const auto& element = model_->elements[e];
+        const ElementIntegration* ei = &scratch;
+        if (!enrichedIntegrations_.empty() && enrichedIntegrations_[e].nodeCount > 0) ei = &enrichedIntegrations_[e];
+        else classicalIntegration(mesh, element.cell, false, scratch);
+        computePointGeometry(mesh, element.cell, dim, false, *ei, geo);
+        localDofs(mesh, *numbering_, *ei, dofs);
+        const Material& mat = material_->at(element.cell);
+        const IsotropicLaw law = IsotropicLaw::from(mat, element.modelisation, mat.name);
+        fe.assign(dofs.size(), 0.0);
+        const int n = ei->nodeCount;
+        for (size_t p = 0; p < ei->refPoints.size(); ++p) {
+            double G[3][3] = {};  // G[c][j] = du_c/dx_j
+            int i = 0;
+            for (int a = 0; a < n; ++a) {
+                const double* ga = &geo.gradN[(p * n + a) * 3];
+                for (int k = 0; k < ei->slots[a]; ++k) {
+                    const double pa = ei->multiplier(int(p), a, k);
+                    for (int c = 0; c < dim; ++c, ++i)
+                        if (pa != 0.0)
+                            for (int j = 0; j < dim; ++j) G[c][j] += pa * disp[dofs[i]] * ga[j];
+                }
+            }
+            double tr = 0.0;
+            for (int c = 0; c < dim; ++c) tr += G[c][c];
+            double S[3][3];
+            for (int c = 0; c < dim; ++c)
+                for (int j = 0; j < dim; ++j) S[c][j] = law.mu * (G[c][j] + G[j][c]) + (c == j ? law.lambdaEff * tr : 0.0);
+            const double w = geo.weight[p];
+            i = 0;
+            for (int a = 0; a < n; ++a) {
+                const double* ga = &geo.gradN[(p * n + a) * 3];
+                for (int k = 0; k < ei->slots[a]; ++k) {
+                    const double pa = ei->multiplier(int(p), a, k);
+                    for (int c = 0; c < dim; ++c, ++i) {
+                        double s = 0.0;
+                        for (int j = 0; j < dim; ++j) s += S[c][j] * ga[j];
+                        fe[i] += w * pa * s;
+                    }
+                }
+            }
+        }
+        for (size_t i = 0; i < dofs.size(); ++i) f[dofs[i]] += fe[i];
+    }
+}
+
+void MechanicalProblem::externalForces(double inst, std::vector<double>& f) const {
+    const Mesh& mesh = *model_->mesh;
+    const int dim = numbering_->dim();
+    f.assign(numbering_->size(), 0.0);
+    ElementIntegration ei;
+    PointGeometry geo;
+    std::vector<int> dofs;
+    // Distributes a force density given at the points of each cell (two passes when the density is
+    // a function: collect the points, evaluate in one batch, then integrate).
+    auto distribute = [&](const std::vector<int>& cells, bool boundary, auto&& density) {
+        for (int cell : cells) {
+            elementIntegration(*model_, cell, boundary, ei);
+            computePointGeometry(mesh, cell, dim, boundary, ei, geo);
+            localDofs(mesh, *numbering_, ei, dofs);
+            const int n = ei.nodeCount;
+            for (size_t p = 0; p < ei.refPoints.size(); ++p) {
+                const std::array<double, 3> t = density(p, geo);
+                const double w = geo.weight[p];
+                int i = 0;
+                for (int a = 0; a < n; ++a) {
+                    const double Na = geo.N[p * n + a];
+                    for (int k = 0; k < ei.slots[a]; ++k) {
+                        const double pa = ei.multiplier(int(p), a, k);
+                        for (int c = 0; c < dim; ++c, ++i) f[dofs[i]] += w * pa * Na * t[c];
+                    }
+                }
+            }
+        }
+    };
+    auto pointsOf = [&](const std::vector<int>& cells, bool boundary) {
+        std::vector<std::array<double, 3>> pts;
+        for (int cell : cells) {
+            elementIntegration(*model_, cell, boundary, ei);
+            computePointGeometry(mesh, cell, dim, boundary, ei, geo);
+            pts.insert(pts.end(), geo.xyz.begin(), geo.xyz.end());
+        }
+        return pts;
+    };
+    for (const auto& lc : loads_) {
+        const double factor = loadFactor(lc, inst);
+        if (factor == 0.0) continue;
+        for (const auto& pr : lc.load->pressures) {
+            std::vector<double> values;
+            if (pr.function) values = evaluateAtPoints(*pr.function, pointsOf(pr.cells, true), inst);
+            size_t next = 0;
+            distribute(pr.cells, true, [&](size_t p, const PointGeometry& g) {
+                const double pres = factor * (pr.function ? values[next++] : pr.value);
+                return std::array<double, 3>{-pres * g.normal[p][0], -pres * g.normal[p][1], -pres * g.normal[p][2]};
+            });
+        }
+        for (const auto& vf : lc.load->volumeForces) {
+            std::array<std::vector<double>, 3> values;
+            const bool anyFunction = vf.function[0] || vf.function[1] || vf.function[2];
+            if (anyFunction) {
+                const auto pts = pointsOf(vf.cells, false);
+                for (int c = 0; c < 3; ++c)
+                    if (vf.function[c]) values[c] = evaluateAtPoints(*vf.function[c], pts, inst);
+            }
+            size_t next = 0;
+            distribute(vf.cells, false, [&](size_t, const PointGeometry&) {
+                std::array<double, 3> t{};
+                for (int c = 0; c < 3; ++c) t[c] = factor * (vf.function[c] ? values[c][next] : vf.value[c]);
+                ++next;
+                return t;
+            });
+        }
+    }
+}
+
+IncrementReport MechanicalProblem::solveIncrement(double inst, const ConvergenceOptions& options) {
+    const auto t0 = std::chrono::steady_clock::now();
+    auto fresh = std::make_unique<Constraints>();
+    buildConstraints(inst, *fresh);
+    const bool rebuild = !constraints_ || !constraints_->sameStructure(*fresh);
+    constraints_ = std::move(fresh);
+    auto& c = *constraints_;
+    if (rebuild) {
+        if (c.unattached > 0)
+            msg().infof("    {} enriched dofs used by no element are set to 0 (neutralised)", c.unattached);
+        buildPattern();
+        assembleMatrix();
+        lambda_.assign(c.multi.size(), 0.0);
+    }
+    const int ndof = numbering_->size();
+    for (int d = 0; d < ndof; ++d)
+        if (c.fixed[d]) u[d] = c.fixedValue[d];
+    std::vector<double> fext, fint, rhs(matrix_.rows);
+    externalForces(inst, fext);
+    IncrementReport report;
+    auto residual = [&](std::vector<double>& R) {
+        internalForces(u, fint);
+        R.resize(ndof);
+        for (int d = 0; d < ndof; ++d) R[d] = fint[d] - fext[d];
+        for (size_t m = 0; m < c.multi.size(); ++m)
+            for (const auto& [d, coef] : c.multi[m].terms) R[d] += alpha_ * coef * lambda_[m];
+    };
+    std::vector<double> R;
+    for (int it = 0; it <= options.maxIterations; ++it) {
+        residual(R);
+        for (int d = 0; d < ndof; ++d)
+            if (c.eq[d] >= 0) rhs[c.eq[d]] = -R[d];
+        for (size_t m = 0; m < c.multi.size(); ++m) {
+            double g = -c.multi[m].value;
+            for (const auto& [d, coef] : c.multi[m].terms) g += coef * u[d];
+            rhs[c.freeCount + m] = -alpha_ * g;
+        }
+        if (!factorised_) {
+            solver_->factorize(matrix_, c.multi.empty() ? MatrixKind::SymmetricPositiveDefinite
+                                                        : MatrixKind::SymmetricIndefinite);
+            factorised_ = true;
+        }
+        solver_->solve(rhs);
+        for (int d = 0; d < ndof; ++d)
+            if (c.eq[d] >= 0) u[d] += rhs[c.eq[d]];
+        for (size_t m = 0; m < c.multi.size(); ++m) lambda_[m] += rhs[c.freeCount + m];
+        // Convergence (code_aster's nmresi): max |R| over the equations, relative to the largest
+        // of the external forces and reactions.
+        residual(R);
+        double maxR = 0.0, denominator = 0.0;
+        std::vector<double> reaction(ndof, 0.0);
+        for (size_t m = 0; m < c.multi.size(); ++m)
+            for (const auto& [d, coef] : c.multi[m].terms) reaction[d] += alpha_ * coef * lambda_[m];
+        for (int d = 0; d < ndof; ++d) {
+            if (c.fixed[d]) {
+                denominator = std::max(denominator, std::abs(fint[d]));  // reaction - F_ext = -F_int
+            } else {
+                maxR = std::max(maxR, std::abs(R[d]));
+                denominator = std::max(denominator, std::abs(reaction[d] - fext[d]));
+            }
+        }
+        for (size_t m = 0; m < c.multi.size(); ++m) {
+            double g = -c.multi[m].value;
+            for (const auto& [d, coef] : c.multi[m].terms) g += coef * u[d];
+            maxR = std::max(maxR, std::abs(alpha_ * g));
+        }
+        if (!std::isfinite(maxR))
+            throw NumericalError(fmt::format("the residual is not finite at INST {} (iteration {})", inst, it));
+        report.iterations = it + 1;
+        report.maxResidual = maxR;
+        report.relativeResidual = denominator > 0.0 ? maxR / denominator : maxR;
+        const bool okMaxi = options.resiGlobMaxi < 0.0 || maxR <= options.resiGlobMaxi;
+        const bool okRela = options.resiGlobRela < 0.0 || report.relativeResidual <= options.resiGlobRela;
+        msg().infof("    INST {:<12g} Newton iteration {:>2}: RESI_GLOB_RELA {:.6e}  RESI_GLOB_MAXI {:.6e}", inst, it,
+                    report.relativeResidual, maxR);
+        if (okMaxi && okRela) {
+            report.converged = true;
+            break;
+        }
+    }
+    msg().infof("    INST {:g}: {} after {} iteration(s), {:.3f} s", inst,
+                report.converged ? "converged" : "NOT converged", report.iterations, seconds(t0));
+    if (!report.converged) {
+        const std::string text = fmt::format(
+            "Newton did not converge at INST {} in {} iterations (ITER_GLOB_MAXI): RESI_GLOB_RELA = {:.3e}, "
+            "RESI_GLOB_MAXI = {:.3e}",
+            inst, options.maxIterations, report.relativeResidual, report.maxResidual);
+        if (options.stopOnFailure) throw NumericalError(text);
+        msg().alarm("MECANONLINE5_37", text + "\nARRET='NON': the computation goes on with this unconverged state.");
+    }
+    return report;
+}
+
+std::shared_ptr<NodalField> MechanicalProblem::displacementField() const {
+    auto field = numbering_->toNodalField(u, model_->mesh);
+    field->quantity = "DEPL_R";
+    return field;
+}
+
+std::shared_ptr<GaussField> MechanicalProblem::stressField() const {
+    const Mesh& mesh = *model_->mesh;
+    const int dim = numbering_->dim();
+    auto field = std::make_shared<GaussField>();
+    field->mesh = model_->mesh;
+    field->quantity = "SIEF_R";
+    field->components = dim == 2 ? std::vector<std::string>{"SIXX", "SIYY", "SIZZ", "SIXY"}
+                                 : std::vector<std::string>{"SIXX", "SIYY", "SIZZ", "SIXY", "SIXZ", "SIYZ"};
+    ElementIntegration scratch;
+    PointGeometry geo;
+    std::vector<int> dofs;
+    for (size_t e = 0; e < model_->elements.size(); ++e) {
+        const auto& element = model_->elements[e];
+        const ElementIntegration* ei = &scratch;
+        if (!enrichedIntegrations_.empty() && enrichedIntegrations_[e].nodeCount > 0) ei = &enrichedIntegrations_[e];
+        else classicalIntegration(mesh, element.cell, false, scratch);
+        computePointGeometry(mesh, element.cell, dim, false, *ei, geo);
+        localDofs(mesh, *numbering_, *ei, dofs);
+        const Material& mat = material_->at(element.cell);
+        const IsotropicLaw law = IsotropicLaw::from(mat, element.modelisation, mat.name);
+        field->cells.push_back(element.cell);
+        const int n = ei->nodeCount;
+        for (size_t p = 0; p < ei->refPoints.size(); ++p) {
+            double G[3][3] = {};
+            int i = 0;
+            for (int a = 0; a < n; ++a) {
+                const double* ga = &geo.gradN[(p * n + a) * 3];
+                for (int k = 0; k < ei->slots[a]; ++k) {
+                    const double pa = ei->multiplier(int(p), a, k);
+                    for (int c = 0; c < dim; ++c, ++i)
+                        for (int j = 0; j < dim; ++j) G[c][j] += pa * u[dofs[i]] * ga[j];
+                }
+            }
+            double tr = 0.0;
+            for (int c = 0; c < dim; ++c) tr += G[c][c];
+            auto sigma = [&](int a, int b) { return law.mu * (G[a][b] + G[b][a]) + (a == b ? law.lambdaEff * tr : 0.0); };
+            field->pointCoords.push_back(geo.xyz[p]);
+            field->pointWeights.push_back(geo.weight[p]);
+            field->pointSubcell.push_back(ei->pointSubcell.empty() ? 0 : ei->pointSubcell[p]);
+            field->pointRefCoords.push_back(ei->refPoints[p]);
+            if (dim == 2) {
+                const double szz = law.lambdaZ * (G[0][0] + G[1][1]);
+                field->values.insert(field->values.end(), {sigma(0, 0), sigma(1, 1), szz, sigma(0, 1)});
+            } else {
+                field->values.insert(field->values.end(),
+                                     {sigma(0, 0), sigma(1, 1), sigma(2, 2), sigma(0, 1), sigma(0, 2), sigma(1, 2)});
+            }
+        }
+        field->pointOffsets.push_back(static_cast<int>(field->pointWeights.size()));
+    }
+    return field;
+}
+
+}  // namespace ma

@@ -1,0 +1,47 @@
+#pragma once
+// Direct solvers behind one interface: MUMPS (sequential, the default, SOLVEUR METHODE='MUMPS')
+// and Eigen's sparse factorisations (METHODE='MULT_FRONT' / 'LDLT'). Each logs the system size,
+// non-zeros, ordering, factorisation and solve times and the residual ||Ax - b|| / ||b||; a
+// singular matrix raises NumericalError with the likely cause.
+#include <memory>
+#include <span>
+#include <string>
+
+#include "solver/SparseMatrix.hpp"
+
+namespace ma {
+
+enum class MatrixKind {
+    SymmetricPositiveDefinite,  // stiffness with Dirichlet conditions eliminated
+    SymmetricIndefinite,        // with Lagrange multipliers
+};
+
+struct SolverOptions {
+    std::string method = "MUMPS";  // MUMPS | MULT_FRONT | LDLT
+    std::string renum = "AUTO";    // MUMPS ordering: AUTO AMD AMF QAMD PORD SCOTCH (METIS -> SCOTCH)
+    int nprec = 8;                 // singular pivot threshold 10^-NPREC; < 0 disables the detection
+    int pcentPivot = 20;           // MUMPS workspace relaxation (%)
+    bool conditionEstimate = false;  // MUMPS ICNTL(11)=1: condition numbers (costs a few solves)
+    int info = 1;
+    // Appended to the "singular system" message: what the caller knows about likely causes.
+    std::string singularHint =
+        "a missing boundary condition (rigid body motion) or an unattached enriched dof";
+};
+
+class LinearSolver {
+public:
+    virtual ~LinearSolver() = default;
+    virtual std::string name() const = 0;
+    // Analyses and factorises A. A must stay alive and unchanged until the last solve (the
+    // residual check reads it).
+    virtual void factorize(const CsrMatrix& A, MatrixKind kind) = 0;
+    // rhs is overwritten by the solution. Returns ||A x - b|| / ||b|| (0 when b = 0).
+    virtual double solve(std::span<double> rhs) = 0;
+};
+
+std::unique_ptr<LinearSolver> makeLinearSolver(const SolverOptions& options);
+
+// Relative residual ||A x - b||_2 / ||b||_2, computed in a separate pass.
+double relativeResidual(const CsrMatrix& A, std::span<const double> x, std::span<const double> b);
+
+}  // namespace ma
