@@ -1,0 +1,147 @@
+#include "parser/Formula.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <pybind11/eval.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "core/Error.hpp"
+
+namespace py = pybind11;
+
+namespace ma {
+
+// Hidden like pybind11's own types (avoids -Wattributes on the py::object members).
+struct __attribute__((visibility("hidden"))) Formula::Python {
+    py::object code;       // compiled expression
+    py::object evaluator;  // evaluate_many below
+    py::object scope;      // name lookup: parameters are set in it, then the fallbacks
+};
+
+namespace {
+// Python side of a formula. `Scope` is the locals mapping of eval(): parameters are stored in it;
+// a missing name is looked up in the context objects and math names, then in the command
+// file's globals (pre-2018 files), else NameError. `evaluate_many` runs the whole batch inside
+// Python and reports the index of the failing point instead of raising.
+const char* kFormulaSupport = R"PY(
+import math as _math
+
+class Scope(dict):
+    __slots__ = ("fallbacks",)
+    def __missing__(self, key):
+        for mapping in self.fallbacks:
+            if key in mapping:
+                return mapping[key]
+        raise KeyError(key)
+
+def make_scope(context, comm_globals):
+    s = Scope()
+    names = {k: getattr(_math, k) for k in dir(_math) if not k.startswith("_")}
+    names.update(context)
+    s.fallbacks = (names, comm_globals)
+    return s
+
+def evaluate_many(code, scope, names, values, npar):
+    n = len(values) // npar if npar else 1
+    out = [0.0] * n
+    i = 0
+    g = {"__builtins__": __builtins__}
+    try:
+        for i in range(n):
+            base = i * npar
+            for j in range(npar):
+                scope[names[j]] = values[base + j]
+            out[i] = float(eval(code, g, scope))
+    except NameError as e:
+        return None, i, "NameError: %s" % e
+    except KeyError as e:
+        return None, i, "NameError: name %s is not defined" % e
+    except Exception as e:
+        return None, i, "%s: %s" % (type(e).__name__, e)
+    return out, -1, ""
+)PY";
+
+py::module_& supportModule() {
+    static py::module_ module = [] {
+        py::module_ m = py::module_::import("types").attr("ModuleType")("_miniaster_formula");
+        py::dict ns = m.attr("__dict__");
+        ns["__builtins__"] = py::module_::import("builtins");
+        py::exec(kFormulaSupport, ns);
+        return m;
+    }();
+    return module;
+}
+
+bool isIdentifier(const std::string& s) { return py::str(s).attr("isidentifier")().cast<bool>(); }
+}  // namespace
+
+Formula::Formula(std::string expression, std::vector<std::string> parameters, py::dict context,
+                 py::dict commGlobals, std::string commFile, int line)
+    : parameters_(std::move(parameters)), commFile_(std::move(commFile)), line_(line) {
+    // code_aster joins multi-line texts and strips them.
+    for (char c : expression) expression_ += (c == '\n' || c == '\r') ? ' ' : c;
+    const auto first = expression_.find_first_not_of(" \t");
+    expression_ = first == std::string::npos ? "" : expression_.substr(first, expression_.find_last_not_of(" \t") - first + 1);
+    if (expression_.empty()) throw UserError("FORMULE: VALE is empty");
+    for (const auto& p : parameters_)
+        if (!isIdentifier(p)) throw UserError(fmt::format("FORMULE: NOM_PARA '{}' is not a valid parameter name", p));
+    python_ = std::make_unique<Python>();
+    try {
+        python_->code = py::module_::import("builtins").attr("compile")(expression_, "<FORMULE>", "eval");
+    } catch (py::error_already_set& e) {
+        throw UserError(fmt::format("FORMULE: VALE '{}' is not a valid Python expression ({})", expression_, e.what()));
+    }
+    auto& support = supportModule();
+    python_->scope = support.attr("make_scope")(context, commGlobals);
+    python_->evaluator = support.attr("evaluate_many");
+}
+
+Formula::~Formula() {
+    // The interpreter is never finalised during a run; after it, leak rather than crash.
+    if (!python_) return;
+    if (!Py_IsInitialized()) {
+        python_->code.release();
+        python_->evaluator.release();
+        python_->scope.release();
+        return;
+    }
+    py::gil_scoped_acquire gil;
+    python_.reset();
+}
+
+void Formula::fail(std::span<const double> args, const std::string& why) const {
+    std::string values;
+    for (size_t j = 0; j < parameters_.size() && j < args.size(); ++j)
+        values += fmt::format("{}{}={}", j ? ", " : "", parameters_[j], args[j]);
+    throw UserError(fmt::format("formula {} = '{}' (FORMULE defined in {}, line {}) failed for {}: {}",
+                                name.empty() ? "<unnamed>" : name, expression_,
+                                std::filesystem::path(commFile_).filename().string(), line_,
+                                values.empty() ? "no parameter" : values, why));
+}
+
+double Formula::evaluate(std::span<const double> args) const { return evaluateMany(args, 1).at(0); }
+
+std::vector<double> Formula::evaluateMany(std::span<const double> args, size_t npoints) const {
+    const size_t np = parameters_.size();
+    if (args.size() != npoints * np)
+        throw UserError(fmt::format("formula {} expects {} parameter(s) ({}), got {} value(s) per point", name, np,
+                                    fmt::join(parameters_, ", "), npoints ? args.size() / npoints : args.size()));
+    if (npoints == 0) return {};
+    py::gil_scoped_acquire gil;
+    py::list values(args.size());
+    for (size_t i = 0; i < args.size(); ++i) values[i] = py::float_(args[i]);
+    py::list names;
+    for (const auto& p : parameters_) names.append(p);
+    py::tuple result = python_->evaluator(python_->code, python_->scope, names, values, np);
+    const long failed = result[1].cast<long>();
+    if (failed >= 0) fail(args.subspan(size_t(failed) * np, np), result[2].cast<std::string>());
+    std::vector<double> out = result[0].cast<std::vector<double>>();
+    for (size_t i = 0; i < out.size(); ++i)
+        if (!std::isfinite(out[i])) fail(args.subspan(i * np, np), fmt::format("the result is {}", out[i]));
+    return out;
+}
+
+}  // namespace ma

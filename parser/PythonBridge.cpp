@@ -1,0 +1,434 @@
+// The Python side of the supervisor: the `_miniaster` embedded module, the builtins of a command
+// file (every catalogued command, _F), the opaque concept objects handed to Python, and the call
+// of one command: Python arguments -> catalog validation -> KeywordSet -> registered C++ command.
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <pybind11/embed.h>
+#include <pybind11/stl.h>
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+
+#include "core/Error.hpp"
+#include "core/Messages.hpp"
+#include "parser/Catalog.hpp"
+#include "parser/CommandRegistry.hpp"
+#include "parser/Formula.hpp"
+#include "parser/RunState.hpp"
+
+namespace py = pybind11;
+
+namespace ma {
+
+namespace {
+
+// A concept as Python sees it: opaque, callable when it is a function (FORMULE, DEFI_FONCTION).
+struct ConceptHandle {
+    ConceptPtr object;
+};
+
+// Raised (as Python BaseException subclasses, so that `except Exception` in user code does not
+// swallow them) to unwind the command file: after a recorded failure, and by FIN().
+struct AbortRun {
+    const char* what() const noexcept { return "the run is stopped by an error"; }
+};
+struct EndOfRun {
+    const char* what() const noexcept { return "FIN"; }
+};
+
+// Result of --check-syntax for an operator: a typed stand-in so that later calls can be checked.
+class SyntaxPlaceholder : public Concept {
+public:
+    explicit SyntaxPlaceholder(std::string type) : type_(std::move(type)) {}
+    std::string typeName() const override { return type_; }
+
+private:
+    std::string type_;
+};
+
+// ------------------------------------------------------------------------------------------
+// Python values -> CallValue
+
+CallValue toCallValue(py::handle h) {
+    CallValue v;
+    if (h.is_none()) return v;
+    if (PyBool_Check(h.ptr())) {
+        v.kind = CallValue::Kind::Bool;
+        v.integer = h.cast<bool>() ? 1 : 0;
+        return v;
+    }
+    if (PyLong_Check(h.ptr())) {
+        int overflow = 0;
+        long long i = PyLong_AsLongLongAndOverflow(h.ptr(), &overflow);
+        if (!overflow) return CallValue::of(i);
+        v.kind = CallValue::Kind::Other;
+        v.text = "int (too large)";
+        return v;
+    }
+    if (PyFloat_Check(h.ptr())) return CallValue::of(h.cast<double>());
+    if (PyUnicode_Check(h.ptr())) return CallValue::of(h.cast<std::string>());
+    if (py::isinstance<ConceptHandle>(h)) return CallValue::of(h.cast<ConceptHandle&>().object);
+    if (PyList_Check(h.ptr()) || PyTuple_Check(h.ptr())) {
+        std::vector<CallValue> items;
+        for (auto item : h) items.push_back(toCallValue(item));
+        return CallValue::list(std::move(items));
+    }
+    if (PyDict_Check(h.ptr())) {
+        std::vector<std::pair<std::string, CallValue>> d;
+        for (auto [k, val] : h.cast<py::dict>()) d.emplace_back(py::str(k).cast<std::string>(), toCallValue(val));
+        return CallValue::factor(std::move(d));
+    }
+    // numpy scalars and the like.
+    if (py::hasattr(h, "__index__")) return CallValue::of(static_cast<long long>(h.attr("__index__")().cast<long long>()));
+    if (py::hasattr(h, "__float__") && !py::hasattr(h, "__len__")) return CallValue::of(h.attr("__float__")().cast<double>());
+    v.kind = CallValue::Kind::Other;
+    v.text = py::str(py::type::handle_of(h).attr("__name__")).cast<std::string>();
+    return v;
+}
+
+py::object wrap(const ConceptPtr& c) {
+    if (!c) return py::none();
+    return py::cast(ConceptHandle{c});
+}
+
+// ------------------------------------------------------------------------------------------
+// Python bootstrap: builtins, result naming from the caller's bytecode, output redirection.
+
+const char* kBootstrap = R"PY(
+import builtins, dis, sys
+import _miniaster
+
+def _F(**keywords):
+    """Factor keyword occurrence: a plain dict, as in code_aster."""
+    return dict(keywords)
+
+def _make_command(name):
+    def command(*args, **keywords):
+        return _miniaster.command(name, sys._getframe(1), args, keywords)
+    command.__name__ = command.__qualname__ = name
+    return command
+
+for _name in _miniaster.command_names():
+    setattr(builtins, _name, _make_command(_name))
+builtins._F = _F
+
+_STORE = {"STORE_NAME", "STORE_GLOBAL", "STORE_FAST", "STORE_DEREF"}
+_LOAD = {"LOAD_NAME", "LOAD_GLOBAL", "LOAD_FAST", "LOAD_DEREF"}
+_instructions = {}
+
+def result_name(frame):
+    """Name of the variable the pending call's result is stored in: `A = CMD()` -> 'A',
+    `T[i] = CMD()` -> 'T_<value of i>' (legacy code_aster rule), else ''."""
+    code = frame.f_code
+    instrs = _instructions.get(code)
+    if instrs is None:
+        instrs = _instructions[code] = [i for i in dis.get_instructions(code) if i.opname != "CACHE"]
+    # f_lasti is the CALL (or, in 3.11, one of its inline cache entries): what follows it.
+    index = next((k for k, i in enumerate(instrs) if i.offset > frame.f_lasti), None)
+    if index is None:
+        return ""
+    following = instrs[index:index + 3]
+    if following and following[0].opname in _STORE:
+        return str(following[0].argval)
+    if (len(following) == 3 and following[0].opname in _LOAD and following[2].opname == "STORE_SUBSCR"):
+        key = following[1]
+        if key.opname == "LOAD_CONST":
+            value = key.argval
+        elif key.opname in _LOAD:
+            name = key.argval
+            value = frame.f_locals.get(name, frame.f_globals.get(name, builtins.__dict__.get(name, "")))
+        else:
+            return ""
+        return "%s_%s" % (following[0].argval, value)
+    return ""
+
+class _LogWriter:
+    """print() in the command file goes to the message log."""
+    def __init__(self):
+        self._pending = ""
+    def write(self, text):
+        self._pending += text
+        while "\n" in self._pending:
+            line, self._pending = self._pending.split("\n", 1)
+            _miniaster.log(line)
+        return len(text)
+    def flush(self):
+        if self._pending:
+            _miniaster.log(self._pending)
+            self._pending = ""
+    def isatty(self):
+        return False
+
+sys.stdout = _LogWriter()
+sys.stderr = _LogWriter()
+)PY";
+
+py::object& resultNameFunction() {
+    static py::object f;
+    return f;
+}
+
+// ------------------------------------------------------------------------------------------
+// One command call
+
+std::string echoCall(const std::string& resultName, const std::string& command, const KeywordSet& kw,
+                     const std::string& extra) {
+    std::string body = kw.echo(4) + extra;
+    std::string head = (resultName.empty() ? "" : resultName + " = ") + command + "(";
+    if (body.empty()) return head + ")";
+    return head + "\n" + body + ")";
+}
+
+int currentLine() {
+    try {
+        return py::module_::import("sys").attr("_getframe")(0).attr("f_lineno").cast<int>();
+    } catch (...) {
+        return 0;
+    }
+}
+
+// FORMULE: validated VALE / NOM_PARA, other keywords are the evaluation context.
+ConceptPtr makeFormula(const KeywordSet& kw, const py::dict& context, const py::dict& globals, int line) {
+    const auto& run = RunState::current();
+    return std::make_shared<Formula>(kw.text("VALE"), kw.texts("NOM_PARA"), context, globals, run.commFile, line);
+}
+
+py::object runCommand(const std::string& name, py::object frame, py::tuple args, py::dict keywords) {
+    auto& run = RunState::current();
+    if (run.failure) throw AbortRun{};
+    const int line = frame.attr("f_lineno").cast<int>();
+    const auto started = std::chrono::steady_clock::now();
+    std::string resultName;
+    try {
+        resultName = resultNameFunction()(frame).cast<std::string>();
+        if (std::find(unsupportedCommands().begin(), unsupportedCommands().end(), name) != unsupportedCommands().end())
+            throw NotImplemented("command " + name + " is not supported by miniaster");
+        const cata::Command* command = Catalog::instance().find(name);
+        if (!command) throw UserError("unknown command " + name);
+        if (!args.empty())
+            throw UserError(fmt::format("{} takes keyword arguments only (got {} positional argument{})", name,
+                                        args.size(), args.size() > 1 ? "s" : ""));
+
+        // reuse= (reentrant commands only).
+        ConceptPtr reused;
+        if (keywords.contains("reuse")) {
+            py::object r = keywords["reuse"];
+            PyDict_DelItemString(keywords.ptr(), "reuse");
+            if (command->reentrant == cata::Reuse::No)
+                throw UserError(fmt::format("reuse= is not allowed: {} is not a reentrant command", name));
+            if (!py::isinstance<ConceptHandle>(r))
+                throw UserError(fmt::format("reuse= expects a concept, got {}", toCallValue(r).describe()));
+            reused = r.cast<ConceptHandle&>().object;
+            if (!resultName.empty() && !reused->name.empty() && reused->name != resultName)
+                throw UserError(fmt::format("reuse={} but the result is assigned to {}: a reentrant command "
+                                            "modifies the object given by reuse=, assign the result to it",
+                                            reused->name, resultName));
+        }
+
+        // Python arguments -> checked keyword tree. FORMULE keeps its extra keywords as Python objects.
+        CallArguments callArgs;
+        py::dict context;
+        for (auto [k, v] : keywords) {
+            const std::string key = py::str(k).cast<std::string>();
+            if (name == "FORMULE" && key != "VALE" && key != "VALE_C" && key != "NOM_PARA") {
+                context[k] = v;
+                continue;
+            }
+            callArgs.emplace_back(key, toCallValue(v));
+        }
+        KeywordSet kw = validateCall(*command, callArgs);
+
+        CommandContext ctx;
+        ctx.command = name;
+        ctx.resultName = resultName;
+        ctx.reused = reused;
+        ctx.commFile = run.commFile;
+        ctx.line = line;
+        ctx.units = &run.units;
+        if (kw.simpleKeywords().count("INFO")) ctx.info = static_cast<int>(kw.integer("INFO"));
+
+        // Echo in code_aster's style.
+        ++run.commandCount;
+        std::string extra;
+        for (auto [k, v] : context) extra += fmt::format("    {}={},\n", py::str(k).cast<std::string>(),
+                                                         py::repr(v).cast<std::string>());
+        const std::string resultType = command->resultType(kw);
+        msg().info(fmt::format("\n # {}\n # Command #{:04d} from {}, line {}{}\n{}\n", std::string(78, '-'),
+                               run.commandCount, run.commBaseName, line,
+                               resultType.empty() ? "" : ", result of type " + resultType,
+                               echoCall(resultName, name, kw, extra)));
+        if (!run.debutSeen && name != "DEBUT" && !run.missingDebutReported) {
+            run.missingDebutReported = true;
+            msg().alarm("SUPERVIS_1", "The command file does not start with DEBUT().");
+        }
+
+        ConceptPtr result;
+        if (name == "DEBUT") {
+            if (run.debutSeen) throw UserError("DEBUT is called twice");
+            run.debutSeen = true;
+        } else if (name == "FIN") {
+            run.finSeen = true;
+            run.recordTiming(name, 0.0);
+            throw EndOfRun{};
+        } else if (name == "FORMULE") {
+            result = makeFormula(kw, context, frame.attr("f_globals").cast<py::dict>(), line);
+        } else if (name == "PRE_GIBI") {
+            msg().info("    PRE_GIBI is a no-op in miniaster: LIRE_MAILLAGE reads the MED mesh of unit " +
+                       std::to_string(kw.integer("UNITE_MAILLAGE")) + " instead of a converted GIBI mesh");
+        } else if (run.checkOnly) {
+            if (!resultType.empty()) result = std::make_shared<SyntaxPlaceholder>(resultType);
+            msg().info("    syntax checked; not executed (--check-syntax)");
+        } else {
+            const CommandFunction* fn = CommandRegistry::instance().find(name);
+            if (!fn) throw NotImplemented(name + " is not implemented yet in miniaster");
+            result = (*fn)(kw, ctx);
+            if (!result && !resultType.empty())
+                throw UserError(fmt::format("internal error: {} returned no {}", name, resultType));
+            if (result && !resultType.empty() && result->typeName() != resultType)
+                throw UserError(fmt::format("internal error: {} returned a concept of type {}, the catalog says {}",
+                                            name, result->typeName(), resultType));
+        }
+        if (result && !resultName.empty()) result->name = resultName;
+
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        run.recordTiming(name, seconds);
+        msg().info(fmt::format(" # end of {} (line {}): elapsed {:.3f} s, peak memory {:.1f} MB", name, line, seconds,
+                               peakMemoryKb() / 1024.0));
+        return wrap(result);
+    } catch (const AbortRun&) {
+        throw;
+    } catch (const EndOfRun&) {
+        throw;
+    } catch (py::error_already_set& e) {
+        if (run.failure) throw AbortRun{};
+        run.fail("ERROR", name, line, fmt::format("Python error: {}", e.what()));
+    } catch (const UserError& e) {
+        run.fail("ERROR", name, line, e.what());
+    } catch (const NotImplemented& e) {
+        run.fail("ERROR", name, line, e.what());
+    } catch (const NumericalError& e) {
+        run.fail("ERROR", name, line, std::string("numerical failure: ") + e.what());
+    } catch (const std::exception& e) {
+        run.fail("ERROR", name, line, std::string("unexpected error: ") + e.what());
+    } catch (...) {
+        run.fail("ERROR", name, line, "unexpected error of unknown type");
+    }
+    throw AbortRun{};
+}
+
+// Calling a function concept from Python: F(1.0, 2.0).
+py::object callConcept(ConceptHandle& self, py::args args) {
+    auto& run = RunState::current();
+    auto f = std::dynamic_pointer_cast<Function>(self.object);
+    if (!f) throw py::type_error(fmt::format("{} ({}) is not a function", self.object->name, self.object->typeName()));
+    if (args.size() != f->parameters().size())
+        throw py::type_error(fmt::format("{}() takes {} argument(s) ({}), got {}", self.object->name,
+                                         f->parameters().size(), fmt::join(f->parameters(), ", "), args.size()));
+    std::vector<double> values;
+    for (auto a : args) {
+        try {
+            values.push_back(a.cast<double>());
+        } catch (const py::cast_error&) {
+            throw py::type_error(fmt::format("{}(): arguments must be numbers, got {}", self.object->name,
+                                             toCallValue(a).describe()));
+        }
+    }
+    try {
+        return py::float_(f->evaluate(values));
+    } catch (py::error_already_set&) {
+        if (run.failure) throw AbortRun{};
+        throw;
+    } catch (const UserError& e) {
+        run.fail("ERROR", self.object->name, currentLine(), e.what());
+    } catch (const NumericalError& e) {
+        run.fail("ERROR", self.object->name, currentLine(), e.what());
+    }
+    throw AbortRun{};
+}
+
+}  // namespace
+
+PYBIND11_EMBEDDED_MODULE(_miniaster, m) {
+    py::register_exception<AbortRun>(m, "Abort", PyExc_BaseException);
+    py::register_exception<EndOfRun>(m, "EndOfRun", PyExc_BaseException);
+
+    py::class_<ConceptHandle>(m, "Concept")
+        .def("__call__", &callConcept)
+        .def("__repr__",
+             [](const ConceptHandle& h) {
+                 return fmt::format("<{} {}>", h.object->typeName(), h.object->name.empty() ? "?" : h.object->name);
+             })
+        .def_property_readonly("nom", [](const ConceptHandle& h) { return h.object->name; })
+        .def("getName", [](const ConceptHandle& h) { return h.object->name; })
+        .def("getType", [](const ConceptHandle& h) { return h.object->typeName(); })
+        .def("__eq__", [](const ConceptHandle& a, py::object b) {
+            return py::isinstance<ConceptHandle>(b) && b.cast<ConceptHandle&>().object == a.object;
+        })
+        .def("__hash__", [](const ConceptHandle& h) { return std::hash<const void*>()(h.object.get()); });
+
+    m.def("command", &runCommand);
+    m.def("command_names", [] {
+        std::vector<std::string> names;
+        for (const auto& [n, c] : Catalog::instance().commands()) names.push_back(n);
+        for (const auto& n : unsupportedCommands()) names.push_back(n);
+        return names;
+    });
+    m.def("log", [](const std::string& line) { msg().info(line); });
+}
+
+void installPythonBuiltins() {
+    py::dict ns;
+    ns["__builtins__"] = py::module_::import("builtins");
+    py::exec(kBootstrap, ns);
+    resultNameFunction() = ns["result_name"];
+}
+
+// ------------------------------------------------------------------------------------------
+// Run state
+
+RunState& RunState::current() {
+    static RunState state;
+    return state;
+}
+
+void RunState::fail(const std::string& kind, const std::string& who, int line, const std::string& cause) {
+    if (failure) return;
+    std::string where = line > 0 ? fmt::format("({}, line {})", commBaseName, line) : fmt::format("({})", commBaseName);
+    std::string paragraph = fmt::format("<F> <{}> {}{}: {}", kind, who.empty() ? "" : who + " ", where, cause);
+    failure = RunFailure{kind, paragraph};
+    msg().info("\n" + paragraph + "\n");
+}
+
+void RunState::recordTiming(const std::string& command, double seconds) {
+    for (auto& t : timings) {
+        if (t.command == command) {
+            ++t.calls;
+            t.seconds += seconds;
+            t.peakKb = std::max(t.peakKb, peakMemoryKb());
+            return;
+        }
+    }
+    timings.push_back({command, 1, seconds, peakMemoryKb()});
+}
+
+long peakMemoryKb() {
+    struct rusage usage {};
+    long peak = 0;
+    if (getrusage(RUSAGE_SELF, &usage) == 0) peak = usage.ru_maxrss;
+    std::ifstream status("/proc/self/status");
+    std::string key;
+    while (status >> key) {
+        if (key == "VmHWM:") {
+            long kb = 0;
+            status >> kb;
+            peak = std::max(peak, kb);
+            break;
+        }
+        std::getline(status, key);
+    }
+    return peak;
+}
+
+}  // namespace ma

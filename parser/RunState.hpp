@@ -1,0 +1,52 @@
+#pragma once
+// State of one run of a command file, shared by the supervisor (command line, outputs,
+// diagnostic) and the Python bridge (command calls).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/Units.hpp"
+
+namespace ma {
+
+struct CommandTiming {
+    std::string command;
+    int calls = 0;
+    double seconds = 0.0;
+    long peakKb = 0;  // peak resident memory of the process after the command
+};
+
+struct RunFailure {
+    std::string kind;       // "ERROR" or "SYNTAX_ERROR" (diagnostic <F>_<kind>)
+    std::string paragraph;  // "<F> <ERROR> COMMAND (file.comm, line N): cause"
+};
+
+class RunState {
+public:
+    static RunState& current();
+
+    Units units;
+    std::string commFile;      // path of the command file
+    std::string commBaseName;  // for messages: "ssnv511a.comm"
+    bool checkOnly = false;    // --check-syntax: validate every call, execute none
+    bool debutSeen = false;
+    bool finSeen = false;
+    bool missingDebutReported = false;
+    int commandCount = 0;
+    std::optional<RunFailure> failure;
+    std::vector<CommandTiming> timings;  // in order of first call
+
+    // Records the first failure (later ones are consequences) and logs its paragraph.
+    // `who` is the command name (may be empty), `line` the .comm line (0 when unknown).
+    void fail(const std::string& kind, const std::string& who, int line, const std::string& cause);
+    void recordTiming(const std::string& command, double seconds);
+};
+
+// Peak resident memory of the process in kB: max of getrusage ru_maxrss and /proc VmHWM.
+long peakMemoryKb();
+
+// Installs the `_miniaster` module, the builtins (every catalogued command, _F...) and the
+// stdout/stderr redirection into the message log. Needs a running interpreter.
+void installPythonBuiltins();
+
+}  // namespace ma
