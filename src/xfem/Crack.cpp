@@ -1,0 +1,214 @@
+#include "xfem/Crack.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <limits>
+
+#include "core/Error.hpp"
+#include "fe/ShapeFunctions.hpp"
+#include "xfem/CellGeometry.hpp"
+
+namespace ma::xfem {
+
+namespace {
+
+constexpr double kMachineEpsilon = DBL_EPSILON;  // code_aster's r8prem
+constexpr double kSnapTolerance = 1e-6;          // xajuls
+
+// Nodal average of the level-set gradient computed at the nodes of every volume cell (§1.3).
+std::vector<std::array<double, 3>> nodalGradient(const Mesh& mesh, const std::vector<double>& lsn) {
+    const int dim = mesh.maxCellDimension();
+    std::vector<std::array<double, 3>> grad(mesh.nodeCount(), {0, 0, 0});
+    std::vector<int> count(mesh.nodeCount(), 0);
+    std::array<double, 24> dN{};
+    for (int c = 0; c < mesh.cellCount(); ++c) {
+        const CellType type = mesh.cellTypes[c];
+        if (cellDimension(type) != dim || dim < 2 || !hasShapeFunctions(type)) continue;
+        const auto nodes = mesh.cellNodes(c);
+        const auto ref = referenceNodes(type);
+        for (size_t a = 0; a < nodes.size(); ++a) {
+            shapeDerivatives(type, ref[a], dN);
+            Eigen::Matrix3d J = Eigen::Matrix3d::Zero();  // J(i, j) = dx_i / dxi_j
+            Eigen::Vector3d g = Eigen::Vector3d::Zero();  // dLSN / dxi_j
+            for (size_t b = 0; b < nodes.size(); ++b)
+                for (int j = 0; j < dim; ++j) {
+                    g[j] += lsn[nodes[b]] * dN[3 * b + j];
+                    for (int i = 0; i < dim; ++i) J(i, j) += mesh.coords[nodes[b]][i] * dN[3 * b + j];
+                }
+            Eigen::Vector3d gx = Eigen::Vector3d::Zero();
+            if (dim == 2) {
+                Eigen::Matrix2d J2 = J.topLeftCorner<2, 2>();
+                if (J2.determinant() == 0.0) continue;
+                gx.head<2>() = J2.transpose().inverse() * g.head<2>();
+            } else {
+                if (J.determinant() == 0.0) continue;
+                gx = J.transpose().inverse() * g;
+            }
+            for (int j = 0; j < 3; ++j) grad[nodes[a]][j] += gx[j];
+            ++count[nodes[a]];
+        }
+    }
+    for (int n = 0; n < mesh.nodeCount(); ++n)
+        if (count[n] > 0)
+            for (int j = 0; j < 3; ++j) grad[n][j] /= count[n];
+    return grad;
+}
+
+// JONFISS/JONCOEF of a branch (§2.1, §2.2).
+std::vector<JunctionMaster> junctionMasters(const Mesh& mesh, const JunctionInput& in) {
+    // Node closest to POINT (ties: first node).
+    int closest = -1;
+    double best = std::numeric_limits<double>::infinity();
+    for (int n = 0; n < mesh.nodeCount(); ++n) {
+        double d2 = 0;
+        for (int j = 0; j < 3; ++j) d2 += (mesh.coords[n][j] - in.point[j]) * (mesh.coords[n][j] - in.point[j]);
+        if (d2 < best) best = d2, closest = n;
+    }
+    if (closest < 0) throw UserError(in.keywordPath + ": the mesh has no node");
+    std::vector<JunctionMaster> out;
+    auto contains = [&](const Crack* c) {
+        return std::any_of(out.begin(), out.end(), [&](const JunctionMaster& m) { return m.crack.get() == c; });
+    };
+    for (const auto& master : in.masters) {
+        if (master->mesh.get() != &mesh)
+            throw UserError(fmt::format("{}: crack {} is defined on another mesh", in.keywordPath, master->name));
+        // A listed crack that is a master of another listed one comes through the chain.
+        bool inherited = false;
+        for (const auto& other : in.masters)
+            if (other != master && other->hasMaster(master.get())) inherited = true;
+        if (inherited) continue;
+        const double value = master->lsn[closest];
+        if (value == 0.0)
+            throw UserError(fmt::format(
+                "{}/POINT: the mesh node {} closest to POINT=({}, {}, {}) lies on the interface of the "
+                "master crack {} (LSN = 0); POINT must designate one side of the master interface",
+                in.keywordPath, mesh.nodeNames[closest], in.point[0], in.point[1], in.point[2], master->name));
+        if (!contains(master.get())) out.push_back({master, value > 0 ? -1.0 : 1.0, true});
+        for (const auto& chained : master->masters)
+            if (!contains(chained.crack.get())) out.push_back({chained.crack, chained.coef, false});
+    }
+    if (out.size() > 10)
+        throw UserError(in.keywordPath + ": a branch interface may depend on at most 10 masters");
+    return out;
+}
+
+}  // namespace
+
+int Crack::enrichedNodeCount() const {
+    return static_cast<int>(std::count(nodeStatus.begin(), nodeStatus.end(), 1));
+}
+
+bool Crack::hasMaster(const Crack* crack) const {
+    return std::any_of(masters.begin(), masters.end(),
+                       [&](const JunctionMaster& m) { return m.crack.get() == crack; });
+}
+
+int snapLevelSet(const Mesh& mesh, std::vector<double>& lsn) {
+    const int dim = mesh.maxCellDimension();
+    int changes = 0;
+    for (int c = 0; c < mesh.cellCount(); ++c) {
+        const CellType type = mesh.cellTypes[c];
+        if (cellDimension(type) != dim) continue;
+        if (!xfemSupports(type)) continue;  // other cells cannot be X-FEM elements anyway
+        const auto nodes = mesh.cellNodes(c);
+        for (const auto& e : cellEdges(type)) {
+            double& a = lsn[nodes[e[0]]];
+            double& b = lsn[nodes[e[1]]];
+            if (std::abs(a - b) <= kMachineEpsilon) continue;
+            const double d = a / (a - b);
+            if (std::abs(d) <= kSnapTolerance && a != 0.0) a = 0.0, ++changes;
+            if (std::abs(d - 1.0) <= kSnapTolerance && b != 0.0) b = 0.0, ++changes;
+        }
+    }
+    return changes;
+}
+
+std::shared_ptr<Crack> buildCrack(const std::shared_ptr<const Mesh>& meshPtr, std::vector<double> lsn,
+                                  const JunctionInput* junction) {
+    const Mesh& mesh = *meshPtr;
+    auto crack = std::make_shared<Crack>();
+    crack->mesh = meshPtr;
+    for (double v : lsn)
+        if (!std::isfinite(v)) throw NumericalError("FONC_LN gives a non-finite value at a node");
+    crack->adjustedLevelSets = snapLevelSet(mesh, lsn);
+    crack->lsn = std::move(lsn);
+    const auto& ls = crack->lsn;
+    crack->lsnGradient = nodalGradient(mesh, ls);
+    if (junction && !junction->masters.empty()) crack->masters = junctionMasters(mesh, *junction);
+
+    // Cut cells (§1.4): some vertex has LSN * LSN(first vertex) <= 0.
+    for (int c = 0; c < mesh.cellCount(); ++c) {
+        if (mesh.cellTypes[c] == CellType::POI1) continue;
+        const auto nodes = mesh.cellNodes(c);
+        const double pivot = ls[nodes[0]];
+        for (size_t k = 1; k < nodes.size(); ++k)
+            if (ls[nodes[k]] * pivot <= 0.0) {
+                crack->cutCells.push_back(c);
+                break;
+            }
+    }
+    if (crack->cutCells.empty())
+        throw UserError("DEFI_FISS/FONC_LN: the interface does not cut any cell of the mesh " + mesh.name +
+                        " (it lies outside the structure); code_aster stops with XFEM_57");
+
+    // Node status (§1.5): min * max of LSN over the vertices of the cut cells around the node < 0.
+    const int nn = mesh.nodeCount();
+    std::vector<double> lo(nn, std::numeric_limits<double>::infinity());
+    std::vector<double> hi(nn, -std::numeric_limits<double>::infinity());
+    const size_t nm = crack->masters.size();
+    // Junction correction (§2.4): minimum over the branch zero points of coef * LSN_master.
+    std::vector<double> minJunction(nm * nn, std::numeric_limits<double>::infinity());
+    std::vector<double> cellJunction(nm);
+    for (int c : crack->cutCells) {
+        const auto nodes = mesh.cellNodes(c);
+        double cmin = std::numeric_limits<double>::infinity(), cmax = -cmin;
+        for (int n : nodes) cmin = std::min(cmin, ls[n]), cmax = std::max(cmax, ls[n]);
+        for (int n : nodes) lo[n] = std::min(lo[n], cmin), hi[n] = std::max(hi[n], cmax);
+        if (nm == 0) continue;
+        std::fill(cellJunction.begin(), cellJunction.end(), std::numeric_limits<double>::infinity());
+        auto addPoint = [&](int a, int b, double t) {  // point a + t (b - a) on an edge
+            for (size_t k = 0; k < nm; ++k) {
+                const auto& m = crack->masters[k];
+                const double va = m.coef * m.crack->lsn[a], vb = m.coef * m.crack->lsn[b];
+                cellJunction[k] = std::min(cellJunction[k], va + t * (vb - va));
+            }
+        };
+        const CellType type = mesh.cellTypes[c];
+        if (type == CellType::POI1 || !xfemSupports(type)) continue;
+        for (const auto& e : cellEdges(type)) {
+            const int a = nodes[e[0]], b = nodes[e[1]];
+            if (ls[a] == 0.0) addPoint(a, b, 0.0);
+            if (ls[b] == 0.0) addPoint(a, b, 1.0);
+            if (ls[a] * ls[b] < 0.0) addPoint(a, b, ls[a] / (ls[a] - ls[b]));
+        }
+        for (int n : nodes)
+            for (size_t k = 0; k < nm; ++k)
+                minJunction[k * nn + n] = std::min(minJunction[k * nn + n], cellJunction[k]);
+    }
+    crack->nodeStatus.assign(nn, 0);
+    for (int n = 0; n < nn; ++n) {
+        if (lo[n] > hi[n] || !(lo[n] * hi[n] < 0.0)) continue;  // no cut cell around, or one side
+        bool forbidden = false;
+        // For interfaces the master's tangential level set is -1 everywhere: only LSJ decides.
+        for (size_t k = 0; k < nm; ++k)
+            if (minJunction[k * nn + n] >= 0.0) forbidden = true;
+        if (!forbidden) crack->nodeStatus[n] = 1;
+    }
+
+    // Heaviside cells (§1.6): every cell but POI1 with an enriched node.
+    for (int c = 0; c < mesh.cellCount(); ++c) {
+        if (mesh.cellTypes[c] == CellType::POI1) continue;
+        for (int n : mesh.cellNodes(c))
+            if (crack->nodeStatus[n]) {
+                crack->heavisideCells.push_back(c);
+                break;
+            }
+    }
+    return crack;
+}
+
+}  // namespace ma::xfem

@@ -1,0 +1,117 @@
+#pragma once
+// The X-FEM enrichment of a model (MODI_MODELE_XFEM, xfem_spec §3): which cells are X-FEM
+// elements, their sub-cells, the Heaviside slots of every node and the enrichment functions.
+//
+// Enrichment functions (§3.7). A "domain" is the tuple of Heaviside values (-1, +1, or 0 on the
+// forbidden side of a branch) of a sub-cell, restricted to the cracks active at a node. A node's
+// own domain follows the nodal rule of §2.5 (LSN >= 0 counts as +). Each other domain D met in
+// the node's support gets one Heaviside slot k with
+//     psi_k(x) = value_k  if x lies in a sub-cell of domain D, 0 elsewhere,
+// value_k = 2 for nodes with several slots (2 * indicator, code_aster's multi-Heaviside nodes) and
+// value_k = H(x) - H(x_node) = +-2 for a node with one crack and one slot (code_aster's shifted
+// Heaviside: +2 on the + side for a node on the - side, -2 on the - side for a node on the +
+// side). The displacement u = sum_a N_a (U_a0 + sum_k psi_ak U_ak) then holds one independent
+// copy per domain: four rigid blocks around a double junction are represented exactly.
+#include <array>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fe/Enrichment.hpp"
+#include "fe/Model.hpp"
+#include "xfem/CellCut.hpp"
+#include "xfem/Crack.hpp"
+
+namespace ma::xfem {
+
+enum class XfemContact { None, Standard };  // CONTACT='SANS' / 'STANDARD' (legacy 'P1P1', 'OUI')
+
+// Enrichment state of one node that at least one X-FEM cell contains.
+struct NodeEnrichment {
+    std::vector<int> activeCracks;              // model crack indices with status 1, model order
+    std::vector<signed char> own;               // own domain digits (one per active crack)
+    std::vector<std::vector<signed char>> slotDomain;  // domain of each active slot (k = 1..)
+    std::vector<double> slotValue;              // psi value of each active slot in its domain
+    std::vector<double> slotFraction;           // retained support fraction (conditioning, §3.10)
+    int carried = 0;                            // Heaviside slots the node carries (active + inactive)
+    int domainsBeforeGuard = 0;                 // other domains found in the support
+    bool ownMissing = false;                    // own domain absent from the support (first one used)
+};
+
+class XfemModel : public Enrichment {
+public:
+    // Builds the enrichment of `model` (the copy made by MODI_MODELE_XFEM) for the cracks in the
+    // user's order. UserError on order violations (§2.6), more than 4 slots at a node (XFEM_40).
+    XfemModel(const Model& model, std::vector<std::shared_ptr<const Crack>> cracks,
+              XfemContact contact = XfemContact::None, double conditioningCriterion = 1e-8);
+
+    // Enrichment interface (src/fe).
+    int nodeSlots(int node) const override;
+    bool isEnriched(int cell) const override;
+    void integration(int cell, ElementIntegration& out) const override;
+    double smallestRetainedFraction() const override { return smallestFraction_; }
+
+    // Heaviside slots that exist on a node but carry no function there (inactive cracks of the
+    // element, §3.9, and slots dropped by the conditioning guard, §3.10): (node, slot k >= 1).
+    // The engine must fix these unknowns to 0 (eliminate them like DDL_IMPO = 0).
+    std::vector<std::pair<int, int>> inactiveSlots() const override;
+
+    // Data access.
+    const std::vector<std::shared_ptr<const Crack>>& cracks() const { return cracks_; }
+    const Mesh& mesh() const { return *mesh_; }
+    std::shared_ptr<const Mesh> meshPtr() const { return mesh_; }
+    XfemContact contact() const { return contact_; }
+    int dim() const { return dim_; }
+    // Cut data of an X-FEM cell (nullptr for a classical cell).
+    const CellCut* cut(int cell) const;
+    // X-FEM cells in increasing cell number.
+    const std::vector<int>& xfemCells() const { return xfemCells_; }
+    // Enrichment of a node (nullptr when no active slot and no carried slot).
+    const NodeEnrichment* node(int node) const;
+    // Number of active Heaviside slots of a node.
+    int activeSlots(int node) const;
+    // psi of node slot k (>= 1) in sub-cell s of an X-FEM cell.
+    double psi(int node, int k, const CellCut& cut, int subcell) const;
+    // Domain digits of sub-cell s for the cracks active at a node.
+    std::vector<signed char> domainKey(int node, const CellCut& cut, int subcell) const;
+    // The crack a slot is attached to (FISSNO: active cracks packed first, in model order), or -1.
+    int slotCrack(int node, int k) const;
+    // Number of cracks an X-FEM cell sees and the Heaviside slots per node of its element type
+    // (nbheav, §3.3).
+    int cellHeavisideCount(int cell) const;
+    // Nodal domain digit of crack `c` (model index) at a node (§2.5 nodes rule).
+    signed char nodalDigit(int crack, int node) const;
+    // Volume (model dimension) cell of the model containing all nodes of a skin cell, or -1.
+    int adjacentVolume(int skinCell) const;
+    // First volume X-FEM cell where the node is enriched (NOXFEM, §4.1), or -1.
+    int referenceCell(int node) const;
+    // Sub-cell Gauss rule of an X-FEM cell: "FPG12", "FPG4", "FPG15", "FPG5" (volume) or the
+    // segment/face rule of a skin cell (§3.6).
+    std::string subcellRule(int cell) const;
+    int droppedSlots() const { return droppedSlots_; }
+
+private:
+    void buildCells(const Model& model);
+    void buildNodes();
+    std::vector<int> cellsOfNode(int node) const;
+    std::vector<signed char> domainKeyFor(const std::vector<int>& active, const CellCut& cut, int s) const;
+
+    std::shared_ptr<const Mesh> mesh_;
+    std::vector<std::shared_ptr<const Crack>> cracks_;
+    XfemContact contact_;
+    double criterion_;
+    int dim_ = 2;
+    std::vector<int> cellIndex_;  // cell -> index in cuts_ or -1
+    std::vector<CellCut> cuts_;
+    std::vector<int> xfemCells_;
+    std::vector<int> heavisideCount_;  // per cuts_ entry
+    std::vector<int> nodeIndex_;   // node -> index in nodes_ or -1
+    std::vector<NodeEnrichment> nodes_;
+    std::vector<int> nodeCellOffsets_, nodeCells_;  // node -> X-FEM cells (CSR)
+    std::vector<int> skinVolume_;  // per cuts_ entry: adjacent volume cell (skin only)
+    double smallestFraction_ = 1.0;
+    int droppedSlots_ = 0;
+};
+
+}  // namespace ma::xfem
