@@ -283,7 +283,7 @@ std::string quotedList(const std::vector<std::string>& v) {
 KeywordValue convertItem(const Keyword& def, const CallValue& item, const std::string& path) {
     using K = CallValue::Kind;
     auto wrongType = [&]() {
-        return UserError(fmt::format("keyword {} expects {}, got {}", path, def.typeText(), item.describe()));
+        return UserError(fmt::format("keyword {}: {} is not of type {}", path, item.describe(), def.typeText()));
     };
     switch (item.kind) {
         case K::Int:

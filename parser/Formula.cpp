@@ -140,7 +140,8 @@ std::vector<double> Formula::evaluateMany(std::span<const double> args, size_t n
     if (failed >= 0) fail(args.subspan(size_t(failed) * np, np), result[2].cast<std::string>());
     std::vector<double> out = result[0].cast<std::vector<double>>();
     for (size_t i = 0; i < out.size(); ++i)
-        if (!std::isfinite(out[i])) fail(args.subspan(i * np, np), fmt::format("the result is {}", out[i]));
+        if (!std::isfinite(out[i]))
+            fail(args.subspan(i * np, np), std::isnan(out[i]) ? "the result is nan" : fmt::format("the result is {}", out[i]));
     return out;
 }
 

@@ -1,0 +1,84 @@
+#pragma once
+// Helpers for the supervisor tests: write a command file in a fresh temporary folder, run the
+// miniaster binary on it, and collect exit status, stdout and the files left behind.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace ma::test {
+
+struct RunResult {
+    int status = -1;
+    std::string output;  // stdout + stderr
+    std::filesystem::path dir;
+    std::string file(const std::string& name) const {
+        std::ifstream in(dir / name);
+        std::ostringstream s;
+        s << in.rdbuf();
+        return s.str();
+    }
+    bool exists(const std::string& name) const { return std::filesystem::exists(dir / name); }
+    // Every file of the output folder (to check that nothing else is left behind).
+    std::vector<std::string> files() const {
+        std::vector<std::string> out;
+        for (const auto& e : std::filesystem::directory_iterator(dir / "out")) out.push_back(e.path().filename().string());
+        return out;
+    }
+};
+
+inline std::filesystem::path freshDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    auto dir = std::filesystem::temp_directory_path() / "miniaster-parser-tests" /
+               (std::string(info->test_suite_name()) + "." + info->name());
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+inline void writeText(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream out(path);
+    out << text;
+}
+
+// Runs `miniaster run <input> --out-dir <dir>/out <extra>` in `dir`.
+inline RunResult runMiniaster(const std::filesystem::path& dir, const std::string& input, const std::string& extra = "") {
+    RunResult r;
+    r.dir = dir;
+    const std::string cmd = "cd '" + dir.string() + "' && '" + std::string(MINIASTER_BINARY) + "' run '" + input +
+                            "' --out-dir out " + extra + " 2>&1";
+    FILE* pipe = popen(cmd.c_str(), "r");
+    if (!pipe) return r;
+    std::array<char, 4096> buffer{};
+    size_t n;
+    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
+    const int raw = pclose(pipe);
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    return r;
+}
+
+// Writes `comm` as t.comm in a fresh folder and runs it.
+inline RunResult runComm(const std::string& comm, const std::string& extra = "") {
+    auto dir = freshDir();
+    writeText(dir / "t.comm", comm);
+    return runMiniaster(dir, "t.comm", extra);
+}
+
+// The run failed with exactly this error paragraph: exit 1, diagnostic in the .mess, no .resu.
+inline void expectError(const RunResult& r, const std::string& paragraph, const std::string& diag = "<F>_ERROR") {
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("\n" + paragraph + "\n"), std::string::npos)
+        << "expected:\n" << paragraph << "\ngot:\n" << r.output;
+    EXPECT_NE(r.output.find("--- DIAGNOSTIC JOB : " + diag + "\n"), std::string::npos) << r.output;
+    EXPECT_FALSE(r.exists("out/t.resu")) << "no result file after an error";
+    const std::string mess = r.file("out/t.mess");
+    EXPECT_NE(mess.find(paragraph), std::string::npos) << "the .mess keeps the diagnosis";
+    for (const auto& f : r.files()) EXPECT_EQ(f, "t.mess") << "unexpected output file " << f;
+}
+
+}  // namespace ma::test
