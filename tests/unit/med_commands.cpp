@@ -1,0 +1,261 @@
+// LIRE_MAILLAGE and IMPR_RESU through the command registry: round trips read back by mdump4 and
+// meshio, DEPL values, appending to a unit, Gauss-point fields, bad input.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include "core/Error.hpp"
+#include "core/Messages.hpp"
+#include "core/Units.hpp"
+#include "fields/Fields.hpp"
+#include "med_io/MedReader.hpp"
+#include "med_test_support.hpp"
+#include "parser/CommandRegistry.hpp"
+
+using namespace ma;
+
+namespace {
+
+class MedCommands : public ::testing::Test {
+protected:
+    void SetUp() override {
+        msg().setEcho(false);
+        dir = test::scratchDir(::testing::UnitTest::GetInstance()->current_test_info()->name());
+        units.setOutputDir(dir);
+    }
+    void TearDown() override { std::filesystem::remove_all(dir); }
+
+    ConceptPtr call(const std::string& command, const KeywordSet& kw, const std::string& resultName = {}) {
+        const auto* fn = CommandRegistry::instance().find(command);
+        if (!fn) throw std::runtime_error(command + " is not registered");
+        CommandContext ctx;
+        ctx.command = command;
+        ctx.resultName = resultName;
+        ctx.units = &units;
+        auto out = (*fn)(kw, ctx);
+        if (out) out->name = resultName;
+        return out;
+    }
+
+    std::shared_ptr<Mesh> lire(const std::string& file, const std::string& name = "MAILLAG") {
+        units.setInput(20, file);
+        KeywordSet kw;
+        kw.setValues("FORMAT", {std::string("MED")});
+        return std::dynamic_pointer_cast<Mesh>(call("LIRE_MAILLAGE", kw, name));
+    }
+
+    std::string dir;
+    Units units;
+};
+
+// mdump4's full dump without the lines that name the file, the mesh or its description.
+std::string mdumpBody(const std::string& path) {
+    std::istringstream in(test::runCommand("mdump4 '" + path + "' NODALE FULL_INTERLACE 0"));
+    std::string line, out;
+    while (std::getline(in, line)) {
+        if (line.find("DUMP DU FICHIER") != std::string::npos || line.find("En-tete du fichier") != std::string::npos ||
+            line.find("Description associee") != std::string::npos || line.find("Nom du maillage") != std::string::npos ||
+            line.find("MAILLAGE DE CALCUL |") != std::string::npos || line.find("(**") == 0)
+            continue;
+        out += line + "\n";
+    }
+    return out;
+}
+
+std::shared_ptr<Result> makeResult(const std::shared_ptr<Mesh>& mesh, const std::string& name, int steps) {
+    auto res = std::make_shared<Result>("evol_elas");
+    res->name = name;
+    res->mesh = mesh;
+    for (int s = 1; s <= steps; ++s) {
+        ResultStep step;
+        step.order = s;
+        step.inst = 0.5 * s;
+        auto depl = std::make_shared<NodalField>();
+        depl->resize(mesh, {"DX", "DY", "H1X"});
+        for (int i = 0; i < mesh->nodeCount(); ++i) {
+            depl->set(i, 0, s * (0.1 * mesh->coords[i][0] + 1.0 / 3.0));
+            depl->set(i, 1, -std::sqrt(2.0) * mesh->coords[i][1] * mesh->coords[i][0]);
+            if (i % 4 == 0) depl->set(i, 2, 1e-3 * i);  // enriched nodes only
+        }
+        step.nodalFields.emplace_back("DEPL", depl);
+        res->steps.push_back(step);
+    }
+    return res;
+}
+
+std::string errorOf(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const UserError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+}  // namespace
+
+TEST_F(MedCommands, LireMaillageLogsCountsAndGroups) {
+    auto m = lire(test::astest("ssnv511g.mmed"));
+    ASSERT_TRUE(m);
+    EXPECT_EQ(m->nodeCount(), 72);
+    const auto& mess = msg().messText();
+    EXPECT_NE(mess.find("NOMBRE DE NOEUDS                          72\n"), std::string::npos) << mess;
+    EXPECT_NE(mess.find("NOMBRE DE MAILLES                         95\n"), std::string::npos) << mess;
+    EXPECT_NE(mess.find(" HEXA8                 25\n"), std::string::npos) << mess;
+    EXPECT_NE(mess.find(" QUAD4                 70\n"), std::string::npos) << mess;
+    EXPECT_NE(mess.find("NOMBRE DE GROUPES DE MAILLES               4\n"), std::string::npos) << mess;
+    EXPECT_NE(mess.find(" ENV                             70\n"), std::string::npos) << mess;
+}
+
+TEST_F(MedCommands, RoundTripGivesTheSameFileForMdump4AndMeshio) {
+    for (const char* file : {"ssnv511a.mmed", "ssnv511b.mmed", "ssnv511c.mmed", "ssnv511d.mmed", "ssnv511g.mmed",
+                             "ssnv511h.mmed"}) {
+        const std::string original = test::astest(file);
+        auto m = lire(original);
+        KeywordSet kw;
+        kw.setValues("UNITE", {81LL});
+        kw.addOccurrence("RESU").setValues("MAILLAGE", {ConceptPtr(m)});
+        units.setOutput(81, dir + "/" + file + ".rmed");
+        call("IMPR_RESU", kw);
+        const std::string written = dir + "/" + file + ".rmed";
+        ASSERT_TRUE(std::filesystem::exists(written));
+        EXPECT_FALSE(std::filesystem::exists(written + ".tmp" + std::to_string(::getpid())));
+        // mdump4: nodes, names, cells, numbers, families and groups identical to the original.
+        EXPECT_EQ(mdumpBody(written), mdumpBody(original)) << file;
+        // meshio: same nodes, cells and groups.
+        auto a = test::probeMesh(original), b = test::probeMesh(written);
+        EXPECT_EQ(a.nodes, b.nodes) << file;
+        EXPECT_EQ(a.cells, b.cells) << file;
+        EXPECT_EQ(a.cellGroups, b.cellGroups) << file;
+        EXPECT_EQ(a.nodeGroups, b.nodeGroups) << file;
+        // The mesh is named after the concept.
+        EXPECT_EQ(med::meshNames(written), std::vector<std::string>{"MAILLAG"});
+    }
+}
+
+TEST_F(MedCommands, DeplWrittenIsReadBackByMeshioAndMdump4) {
+    auto m = lire(test::astest("ssnv511a.mmed"));
+    auto res = makeResult(m, "UTOT1", 1);
+    KeywordSet kw;
+    auto& occ = kw.addOccurrence("RESU");
+    occ.setValues("RESULTAT", {ConceptPtr(res)});
+    occ.setValues("NOM_CHAM", {std::string("DEPL")});
+    call("IMPR_RESU", kw);
+    const std::string path = dir + "/fort.80";
+    auto values = test::probeField(path, "UTOT1___DEPL");
+    const auto& depl = *res->steps[0].nodal("DEPL");
+    ASSERT_EQ(values.size(), size_t(m->nodeCount()));
+    for (int i = 0; i < m->nodeCount(); ++i) {
+        ASSERT_EQ(values[i].size(), 3u);
+        EXPECT_EQ(values[i][0], depl.at(i, 0));
+        EXPECT_EQ(values[i][1], depl.at(i, 1));
+        EXPECT_EQ(values[i][2], i % 4 == 0 ? depl.at(i, 2) : 0.0);  // absent component written as 0
+    }
+    const auto dump = test::runCommand("mdump4 '" + path + "' NODALE FULL_INTERLACE 0");
+    EXPECT_NE(dump.find("CHAMP |UTOT1___DEPL| A L'ÉTAPE DE CALCUL (n°dt,n°it)=( 01, 01)"), std::string::npos) << dump;
+    EXPECT_NE(dump.find("Nom des composantes : |DX              DY              H1X             |"), std::string::npos);
+    EXPECT_NE(dump.find("Valeur de la date du champ 0.500000"), std::string::npos);
+    EXPECT_EQ(dump.find("ERR"), std::string::npos);
+}
+
+TEST_F(MedCommands, SecondImprResuOnTheSameUnitAddsToTheFile) {
+    auto m = lire(test::astest("ssnv511a.mmed"));
+    auto r1 = makeResult(m, "RES_XFEM", 2);
+    auto r2 = makeResult(m, "UTOT1", 1);
+    for (auto& r : {r1, r2}) {
+        KeywordSet kw;
+        kw.setValues("UNITE", {82LL});
+        auto& occ = kw.addOccurrence("RESU");
+        occ.setValues("RESULTAT", {ConceptPtr(r)});
+        if (r == r1) occ.setValues("TOUT_ORDRE", {std::string("OUI")});
+        call("IMPR_RESU", kw);
+    }
+    const auto dump = test::runCommand("mdump4 '" + dir + "/fort.82' NODALE FULL_INTERLACE 0");
+    EXPECT_NE(dump.find("CHAMP |RES_XFEMDEPL| A L'ÉTAPE DE CALCUL (n°dt,n°it)=( 01, 01)"), std::string::npos);
+    EXPECT_NE(dump.find("CHAMP |RES_XFEMDEPL| A L'ÉTAPE DE CALCUL (n°dt,n°it)=( 02, 02)"), std::string::npos);
+    EXPECT_NE(dump.find("CHAMP |UTOT1___DEPL| A L'ÉTAPE DE CALCUL (n°dt,n°it)=( 01, 01)"), std::string::npos);
+    // One mesh only.
+    EXPECT_EQ(med::meshNames(dir + "/fort.82").size(), 1u);
+}
+
+TEST_F(MedCommands, PartialNodalFieldUsesAProfile) {
+    auto m = lire(test::astest("ssnv511a.mmed"));
+    auto f = std::make_shared<NodalField>();
+    f->resize(m, {"DX", "DY"});
+    for (int i = 0; i < 6; ++i) f->set(i, 0, 10.0 + i), f->set(i, 1, -1.0 * i);  // bottom row only
+    f->name = "CH";
+    KeywordSet kw;
+    kw.addOccurrence("RESU").setValues("CHAM_GD", {ConceptPtr(f)});
+    call("IMPR_RESU", kw);
+    const auto dump = test::runCommand("mdump4 '" + dir + "/fort.80' NODALE FULL_INTERLACE 0");
+    EXPECT_NE(dump.find("CHAMP |CH| A L'ÉTAPE DE CALCUL (n°dt,n°it)=(-01,-01)"), std::string::npos) << dump;
+    EXPECT_NE(dump.find("Il y a 6 entités qui portent des valeurs"), std::string::npos) << dump;
+    EXPECT_NE(dump.find("| 15.000000  -5.000000 |"), std::string::npos) << dump;
+}
+
+TEST_F(MedCommands, GaussFieldWithLocalisations) {
+    auto m = lire(test::astest("ssnv511a.mmed"));
+    // SIEF_ELGA-like field on the 25 QUAD4: 4 standard points, except one cell with 3 points
+    // (as an X-FEM sub-cell rule would give), and no value on the SEG2 cells.
+    auto g = std::make_shared<GaussField>();
+    g->mesh = m;
+    g->components = {"SIXX", "SIYY"};
+    const double a = 1.0 / std::sqrt(3.0);
+    const std::array<std::array<double, 3>, 4> std4{{{-a, -a, 0}, {a, -a, 0}, {a, a, 0}, {-a, a, 0}}};
+    const std::array<std::array<double, 3>, 3> odd3{{{-0.5, -0.5, 0}, {0.5, -0.5, 0}, {0, 0.5, 0}}};
+    for (int c = 20; c < 45; ++c) {
+        g->cells.push_back(c);
+        const bool odd = c == 32;
+        const int n = odd ? 3 : 4;
+        for (int p = 0; p < n; ++p) {
+            g->pointRefCoords.push_back(odd ? odd3[p] : std4[p]);
+            g->pointCoords.push_back({0, 0, 0});
+            g->pointWeights.push_back(odd ? 4.0 / 3.0 : 1.0);  // 2x2 cells: |J| = 1
+            g->pointSubcell.push_back(0);
+            g->values.push_back(100.0 * c + p);
+            g->values.push_back(-1.0 * p);
+        }
+        g->pointOffsets.push_back(int(g->pointWeights.size()));
+    }
+    auto res = std::make_shared<Result>("evol_elas");
+    res->name = "RES";
+    res->mesh = m;
+    ResultStep step;
+    step.order = 1;
+    step.gaussFields.emplace_back("SIEF_ELGA", g);
+    res->steps.push_back(step);
+    KeywordSet kw;
+    kw.addOccurrence("RESU").setValues("RESULTAT", {ConceptPtr(res)});
+    call("IMPR_RESU", kw);
+    const auto dump = test::runCommand("mdump4 '" + dir + "/fort.80' NODALE FULL_INTERLACE 0");
+    EXPECT_EQ(dump.find("ERR"), std::string::npos) << dump;
+    EXPECT_NE(dump.find("CHAMP |RES_____SIEF_ELGA|"), std::string::npos) << dump;
+    EXPECT_NE(dump.find("Il y a 24 entités qui portent des valeurs"), std::string::npos) << dump;
+    EXPECT_NE(dump.find("Il y a 1 entités qui portent des valeurs"), std::string::npos) << dump;
+    EXPECT_NE(dump.find("LOC_QUAD4_4PG_1"), std::string::npos) << dump;
+    EXPECT_NE(dump.find("LOC_QUAD4_3PG_2"), std::string::npos) << dump;
+    // Values of cell M33 (the odd one): 3 points.
+    EXPECT_NE(dump.find("3200.000000  -0.000000"), std::string::npos) << dump;
+    EXPECT_NE(dump.find("3202.000000  -2.000000"), std::string::npos) << dump;
+}
+
+TEST_F(MedCommands, BadInputGivesClearErrors) {
+    units.setInput(20, dir + "/nothing.med");
+    KeywordSet kw;
+    EXPECT_EQ(errorOf([&] { call("LIRE_MAILLAGE", kw, "M"); }), "MED file '" + dir + "/nothing.med' does not exist");
+    KeywordSet other;
+    other.setValues("UNITE", {21LL});
+    EXPECT_NE(errorOf([&] { call("LIRE_MAILLAGE", other, "M"); }).find("logical unit 21"), std::string::npos);
+    units.setInput(20, test::astest("ssnv511a.mmed"));
+    KeywordSet named;
+    named.setValues("NOM_MED", {std::string("MAIL2")});
+    EXPECT_EQ(errorOf([&] { call("LIRE_MAILLAGE", named, "M"); }),
+              "NOM_MED='MAIL2': MED file '" + test::astest("ssnv511a.mmed") +
+                  "' has no mesh of that name; meshes in the file: 'MAILLAGE'");
+    KeywordSet gibi;
+    gibi.setValues("FORMAT", {std::string("GIBI")});
+    EXPECT_THROW(call("LIRE_MAILLAGE", gibi, "M"), NotImplemented);
+}
