@@ -47,10 +47,11 @@ inline void writeText(const std::filesystem::path& path, const std::string& text
 }
 
 // Runs `miniaster run <input> --out-dir <dir>/out <extra>` in `dir`.
-inline RunResult runMiniaster(const std::filesystem::path& dir, const std::string& input, const std::string& extra = "") {
+inline RunResult runMiniaster(const std::filesystem::path& dir, const std::string& input, const std::string& extra = "",
+                              const std::string& env = "") {
     RunResult r;
     r.dir = dir;
-    const std::string cmd = "cd '" + dir.string() + "' && '" + std::string(MINIASTER_BINARY) + "' run '" + input +
+    const std::string cmd = "cd '" + dir.string() + "' && " + env + " '" + std::string(MINIASTER_BINARY) + "' run '" + input +
                             "' --out-dir out " + extra + " 2>&1";
     FILE* pipe = popen(cmd.c_str(), "r");
     if (!pipe) return r;
@@ -63,10 +64,10 @@ inline RunResult runMiniaster(const std::filesystem::path& dir, const std::strin
 }
 
 // Writes `comm` as t.comm in a fresh folder and runs it.
-inline RunResult runComm(const std::string& comm, const std::string& extra = "") {
+inline RunResult runComm(const std::string& comm, const std::string& extra = "", const std::string& env = "") {
     auto dir = freshDir();
     writeText(dir / "t.comm", comm);
-    return runMiniaster(dir, "t.comm", extra);
+    return runMiniaster(dir, "t.comm", extra, env);
 }
 
 // The run failed with exactly this error paragraph: exit 1, diagnostic in the .mess, no .resu.
