@@ -90,11 +90,12 @@ public:
     // segment/face rule of a skin cell (§3.6).
     std::string subcellRule(int cell) const;
     int droppedSlots() const { return droppedSlots_; }
+    // X-FEM cells (volume and skin) containing a node, in increasing cell number.
+    std::vector<int> cellsOfNode(int node) const;
 
 private:
     void buildCells(const Model& model);
     void buildNodes();
-    std::vector<int> cellsOfNode(int node) const;
     std::vector<signed char> domainKeyFor(const std::vector<int>& active, const CellCut& cut, int s) const;
 
     std::shared_ptr<const Mesh> mesh_;
