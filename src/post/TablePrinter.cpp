@@ -45,10 +45,12 @@ std::string formatTable(const Table& table, const TablePrintOptions& options) {
         widths.push_back(std::max(col.name.size(), valueWidth));
     }
 
+    // A lone '#' then each title line as '#' + title (80 characters): '##TITLE' for the first.
     std::string out = "#\n#" + std::string(80, '-') + "\n#";
-    for (size_t i = 0; i < table.title.size(); ++i) {
-        if (i > 0) out += "#";
-        out += ljust(table.title[i], 80) + "\n";
+    for (const auto& line : table.title) {
+        out += '#';
+        out += ljust(line, 80);
+        out += '\n';
     }
     std::string header;
     for (size_t k = 0; k < cols.size(); ++k) {
