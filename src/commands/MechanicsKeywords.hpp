@@ -91,6 +91,7 @@ inline SolverOptions solverOptions(const KeywordSet& kw, int info) {
     o.renum = s.text("RENUM", "AUTO");
     if (o.method != "MUMPS") o.renum = "AUTO";  // MD/MDA/METIS/RCMK of the native solvers: Eigen uses AMD
     o.nprec = static_cast<int>(s.integer("NPREC", 8));
+    o.typeResol = s.text("TYPE_RESOL", "AUTO");
     if (s.has("PCENT_PIVOT")) {
         const auto& v = s.values("PCENT_PIVOT")[0];
         o.pcentPivot = std::holds_alternative<long long>(v) ? int(std::get<long long>(v))

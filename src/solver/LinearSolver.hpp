@@ -21,6 +21,7 @@ struct SolverOptions {
     std::string renum = "AUTO";    // MUMPS ordering: AUTO AMD AMF QAMD PORD SCOTCH (METIS -> SCOTCH)
     int nprec = 8;                 // singular pivot threshold 10^-NPREC; < 0 disables the detection
     int pcentPivot = 20;           // MUMPS workspace relaxation (%)
+    std::string typeResol = "AUTO";  // MUMPS TYPE_RESOL: SYMDEF forces SYM=1 on SPD systems
     bool conditionEstimate = false;  // MUMPS ICNTL(11)=1: condition numbers (costs a few solves)
     int info = 1;
     // Appended to the "singular system" message: what the caller knows about likely causes.

@@ -79,7 +79,11 @@ public:
         id_ = DMUMPS_STRUC_C{};
         id_.job = kJobInit;
         id_.par = 1;
-        id_.sym = kind == MatrixKind::SymmetricPositiveDefinite ? 1 : 2;
+        // SYM=1 (positive definite, no pivoting) performs no null-pivot detection: a floating body
+        // goes through unnoticed (checked). SYM=2 detects it at a similar cost, so SYM=1 is used only
+        // when the detection is off (NPREC < 0) or asked for (TYPE_RESOL='SYMDEF').
+        const bool spd = kind == MatrixKind::SymmetricPositiveDefinite;
+        id_.sym = spd && (options_.nprec < 0 || options_.typeResol == "SYMDEF") ? 1 : 2;
         id_.comm_fortran = kUseCommWorld;
         dmumps_c(&id_);
         initialised_ = true;
@@ -124,12 +128,18 @@ public:
         const int usedOrdering = id_.infog[6];
         msg().infof("    MUMPS ({}): n = {}, non-zeros (upper triangle) = {}, ordering {} (asked {}), "
                     "factor entries = {}, factorisation {:.3f} s, peak memory {} MB",
-                    id_.sym == 1 ? "symmetric positive definite" : "symmetric indefinite", A.rows, a_.size(),
+                    id_.sym == 1 ? "SYM=1, positive definite" : "SYM=2, general symmetric", A.rows, a_.size(),
                     usedOrdering >= 0 && usedOrdering <= 7 ? orderings[usedOrdering] : "?", ordering,
                     id_.infog[28] < 0 ? -static_cast<long long>(id_.infog[28]) * 1000000 : id_.infog[28],
                     seconds(t0), id_.infog[21]);
-        if (id_.sym == 2 && id_.infog[11] > 0)
-            msg().infof("    MUMPS: {} negative pivots (expected with Lagrange multipliers)", id_.infog[11]);
+        if (id_.sym == 2 && id_.infog[11] > 0) {
+            if (spd)
+                msg().alarm("FACTOR_10", fmt::format("MUMPS found {} negative pivot(s) in a stiffness matrix that should "
+                                                     "be positive definite (inverted or degenerate elements?)",
+                                                     id_.infog[11]));
+            else
+                msg().infof("    MUMPS: {} negative pivots (expected: one per Lagrange multiplier)", id_.infog[11]);
+        }
     }
 
     double solve(std::span<double> rhs) override {
