@@ -1,0 +1,276 @@
+#include "xfem/Visualisation.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "core/Error.hpp"
+#include "fe/Quadrature.hpp"
+#include "fe/ShapeFunctions.hpp"
+#include "xfem/CellGeometry.hpp"
+#include "xfem/XfemModel.hpp"
+
+namespace ma::xfem {
+
+namespace {
+
+std::vector<std::array<double, 3>> nodeCoords(const Mesh& mesh, int cell) {
+    std::vector<std::array<double, 3>> x;
+    for (int n : mesh.cellNodes(cell)) x.push_back(mesh.coords[n]);
+    return x;
+}
+
+// Level set of local crack j at a point for naming: a branch's value on the forbidden side of a
+// master is replaced by 1 (xpolsn).
+double namingLevelSet(const CellCut& cut, const CutPoint& p, size_t j) {
+    const Crack& c = *cut.lsnCracks[j];
+    for (const auto& m : c.masters) {
+        const auto it = std::find(cut.lsnCracks.begin(), cut.lsnCracks.end(), m.crack.get());
+        if (it == cut.lsnCracks.end()) continue;
+        if (m.coef * p.lsn[it - cut.lsnCracks.begin()] > 0) return 1.0;
+    }
+    return p.lsn[j];
+}
+
+}  // namespace
+
+std::string base36(long long value) {
+    static const char* digits = "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ";
+    if (value <= 0) return "0";
+    std::string s;
+    while (value > 0) s.insert(s.begin(), digits[value % 36]), value /= 36;
+    return s;
+}
+
+Visualisation buildVisualisation(const Model& model, const XfemModel& xm, const VisualisationNames& names) {
+    const Mesh& mesh = xm.mesh();
+    Visualisation out;
+    out.mesh = std::make_shared<Mesh>();
+    Mesh& vm = *out.mesh;
+    vm.dim = mesh.dim;
+
+    std::vector<int> modelCells;
+    for (const auto& e : model.elements) modelCells.push_back(e.cell);
+    for (const auto& e : model.skinElements) modelCells.push_back(e.cell);
+    std::sort(modelCells.begin(), modelCells.end());
+    modelCells.erase(std::unique(modelCells.begin(), modelCells.end()), modelCells.end());
+    modelCells.erase(std::remove_if(modelCells.begin(), modelCells.end(),
+                                    [&](int c) { return mesh.cellTypes[c] == CellType::POI1; }),
+                     modelCells.end());
+
+    // Classical cells: their nodes first, in original order, then the cells.
+    std::vector<int> nodeMap(mesh.nodeCount(), -1);
+    std::vector<char> used(mesh.nodeCount(), 0);
+    for (int c : modelCells)
+        if (!xm.isEnriched(c))
+            for (int n : mesh.cellNodes(c)) used[n] = 1;
+    for (int n = 0; n < mesh.nodeCount(); ++n)
+        if (used[n]) {
+            nodeMap[n] = vm.addNode(mesh.coords[n], mesh.nodeNames[n]);
+            out.nodes.push_back({n, -1, -1, -1, false});
+        }
+    std::vector<std::vector<int>> cellMap(mesh.cellCount());
+    for (int c : modelCells) {
+        if (xm.isEnriched(c)) continue;
+        std::vector<int> nodes;
+        for (int n : mesh.cellNodes(c)) nodes.push_back(nodeMap[n]);
+        cellMap[c].push_back(vm.addCell(mesh.cellTypes[c], nodes, mesh.cellNames[c]));
+        out.cells.push_back({c, -1, -1});
+    }
+
+    // X-FEM cells: sub-cells, with nodes per (vertex, side) and per parent cell.
+    long long nodeCounter = 0, cellCounter = 0;
+    std::vector<int> crackNodes;
+    for (int c : modelCells) {
+        const CellCut* cut = xm.cut(c);
+        if (!cut) continue;
+        const auto xs = nodeCoords(mesh, c);
+        std::map<std::pair<int, std::vector<signed char>>, int> made;
+        const CellType simplex = simplexType(cut->type);
+        for (int s = 0; s < static_cast<int>(cut->subcells.size()); ++s) {
+            const SubCell& sub = cut->subcells[s];
+            std::vector<int> nodes;
+            for (int v = 0; v < cut->vertexCount(); ++v) {
+                const int pid = sub.vertices[v];
+                auto key = std::make_pair(pid, sub.heaviside);
+                auto it = made.find(key);
+                if (it != made.end()) {
+                    nodes.push_back(it->second);
+                    continue;
+                }
+                const CutPoint& p = cut->points[pid];
+                bool onCrack = p.parentNode < 0;
+                for (size_t j = 0; j < cut->cracks.size() && !onCrack; ++j)
+                    onCrack = namingLevelSet(*cut, p, j) == 0.0;
+                std::string prefix = names.nodeX;
+                if (onCrack) {
+                    // The interface closest to the point among those the sub-cell has a side of.
+                    int best = -1;
+                    double bestValue = std::numeric_limits<double>::infinity();
+                    for (size_t j = 0; j < cut->cracks.size(); ++j) {
+                        if (sub.heaviside[j] == 0) continue;
+                        const double value = std::abs(namingLevelSet(*cut, p, j));
+                        if (value < bestValue) bestValue = value, best = static_cast<int>(j);
+                    }
+                    if (best >= 0) prefix = sub.heaviside[best] < 0 ? names.nodeMinus : names.nodePlus;
+                }
+                const auto x = mapToPhysical(cut->type, xs, p.ref);
+                const int id = vm.addNode(x, prefix + base36(++nodeCounter));
+                out.nodes.push_back({-1, c, pid, s, onCrack});
+                if (onCrack) crackNodes.push_back(id);
+                made.emplace(std::move(key), id);
+                nodes.push_back(id);
+            }
+            // Sub-cells are positive in the parent's reference coordinates; keep them positive in
+            // physical ones (a parent with a negative Jacobian flips them).
+            if (cut->dim == vm.maxCellDimension() || cut->dim >= 2) {
+                std::vector<std::array<double, 3>> pv;
+                for (int id : nodes) pv.push_back(vm.coords[id]);
+                if (cut->dim == 2 && mesh.dim == 2 && simplexMeasure(2, pv) < 0) std::swap(nodes[0], nodes[1]);
+                if (cut->dim == 3 && simplexMeasure(3, pv) < 0) std::swap(nodes[0], nodes[1]);
+            }
+            cellMap[c].push_back(vm.addCell(simplex, nodes, names.cellX + std::to_string(++cellCounter)));
+            out.cells.push_back({-1, c, s});
+        }
+    }
+    if (cellCounter > 999999)
+        throw UserError("POST_MAIL_XFEM: more than 999999 sub-cells; the MX names would overflow");
+
+    for (const auto& g : mesh.cellGroups.names()) {
+        std::vector<int> members;
+        for (int c : mesh.cellGroups.get(g))
+            members.insert(members.end(), cellMap[c].begin(), cellMap[c].end());
+        if (!members.empty()) vm.cellGroups.set(g, std::move(members));
+    }
+    if (!crackNodes.empty()) vm.nodeGroups.set(names.crackGroup, crackNodes);
+    return out;
+}
+
+std::shared_ptr<Result> visualisationResult(const Result& input, const std::shared_ptr<Model>& modelVisu) {
+    if (!input.model) throw UserError("RESULTAT " + input.name + " has no model");
+    const Model& model = *input.model;
+    const auto* xm = dynamic_cast<const XfemModel*>(model.enrichment.get());
+    if (!xm)
+        throw UserError("RESULTAT " + input.name + " was not computed on an X-FEM model (MODI_MODELE_XFEM)");
+    if (modelVisu->enrichment)
+        throw UserError("MODELE_VISU must be a classical model built on the POST_MAIL_XFEM mesh, not an X-FEM "
+                        "model (code_aster XFEM2_30)");
+    const Visualisation visu = buildVisualisation(model, *xm);
+    const auto& vmesh = modelVisu->mesh;
+    if (!vmesh || vmesh->nodeCount() != visu.mesh->nodeCount() || vmesh->cellCount() != visu.mesh->cellCount())
+        throw UserError(fmt::format("MODELE_VISU {} is not built on the POST_MAIL_XFEM mesh of the model {} of "
+                                    "RESULTAT {} ({} nodes and {} cells expected)",
+                                    modelVisu->name, model.name, input.name, visu.mesh->nodeCount(),
+                                    visu.mesh->cellCount()));
+    const Mesh& mesh = xm->mesh();
+    const int dim = model.dim;
+    auto out = std::make_shared<Result>(input.typeName());
+    out->mesh = vmesh;
+    out->model = modelVisu;
+
+    std::vector<std::string> comps = dim == 3 ? std::vector<std::string>{"DX", "DY", "DZ"}
+                                              : std::vector<std::string>{"DX", "DY"};
+    std::array<double, 8> N{};
+    for (const auto& step : input.steps) {
+        ResultStep s;
+        s.order = step.order;
+        s.inst = step.inst;
+        if (auto depl = step.nodal("DEPL")) {
+            auto field = std::make_shared<NodalField>();
+            field->resize(vmesh, comps);
+            // (slot, component) -> column of the input field
+            const int maxSlot = 5;
+            std::vector<int> column(maxSlot * 3, -1);
+            for (int k = 0; k < maxSlot; ++k)
+                for (int j = 0; j < dim; ++j)
+                    column[k * 3 + j] =
+                        depl->componentIndex(k == 0 ? comps[j] : fmt::format("H{}{}", k, "XYZ"[j]));
+            auto value = [&](int node, int k, int j) {
+                const int col = k < maxSlot ? column[k * 3 + j] : -1;
+                return col >= 0 && depl->has(node, col) ? depl->at(node, col) : 0.0;
+            };
+            for (int v = 0; v < vmesh->nodeCount(); ++v) {
+                const auto& vn = visu.nodes[v];
+                std::array<double, 3> u{0, 0, 0};
+                if (vn.original >= 0) {
+                    for (int j = 0; j < dim; ++j) u[j] = value(vn.original, 0, j);
+                } else {
+                    const CellCut& cut = *xm->cut(vn.parentCell);
+                    const auto cn = mesh.cellNodes(vn.parentCell);
+                    shapeValues(cut.type, cut.points[vn.point].ref, N);
+                    for (size_t a = 0; a < cn.size(); ++a) {
+                        if (N[a] == 0.0) continue;
+                        for (int j = 0; j < dim; ++j) u[j] += N[a] * value(cn[a], 0, j);
+                        for (int k = 1; k <= xm->activeSlots(cn[a]); ++k) {
+                            const double psi = xm->psi(cn[a], k, cut, vn.subcell);
+                            if (psi == 0.0) continue;
+                            for (int j = 0; j < dim; ++j) u[j] += N[a] * psi * value(cn[a], k, j);
+                        }
+                    }
+                }
+                for (int j = 0; j < dim; ++j) field->set(v, j, u[j]);
+            }
+            s.nodalFields.emplace_back("DEPL", field);
+        }
+        if (auto sief = step.gauss("SIEF_ELGA")) {
+            auto field = std::make_shared<GaussField>();
+            field->mesh = vmesh;
+            field->quantity = sief->quantity;
+            field->components = sief->components;
+            const size_t nc = sief->components.size();
+            std::map<int, int> elementOf;  // input cell -> element index of the input field
+            for (size_t e = 0; e < sief->cells.size(); ++e) elementOf[sief->cells[e]] = static_cast<int>(e);
+            for (const auto& el : modelVisu->elements) {
+                const int vc = el.cell;
+                const auto& info = visu.cells[vc];
+                const int parent = info.original >= 0 ? info.original : info.parentCell;
+                auto it = elementOf.find(parent);
+                if (it == elementOf.end()) continue;
+                const int e = it->second;
+                const int p0 = sief->pointOffsets[e], p1 = sief->pointOffsets[e + 1];
+                field->cells.push_back(vc);
+                if (info.original >= 0) {  // classical element: same points
+                    for (int p = p0; p < p1; ++p) {
+                        field->pointCoords.push_back(sief->pointCoords[p]);
+                        field->pointWeights.push_back(sief->pointWeights[p]);
+                        field->pointSubcell.push_back(0);
+                        field->pointRefCoords.push_back(p < int(sief->pointRefCoords.size()) ? sief->pointRefCoords[p]
+                                                                                             : std::array<double, 3>{});
+                        for (size_t j = 0; j < nc; ++j) field->values.push_back(sief->values[size_t(p) * nc + j]);
+                    }
+                } else {  // sub-cell: mean of the parent's points of that sub-cell, at every point
+                    std::vector<double> mean(nc, 0.0);
+                    int count = 0;
+                    for (int p = p0; p < p1; ++p)
+                        if (sief->pointSubcell[p] == info.subcell) {
+                            ++count;
+                            for (size_t j = 0; j < nc; ++j) mean[j] += sief->values[size_t(p) * nc + j];
+                        }
+                    for (auto& m : mean) m = count ? m / count : 0.0;
+                    const CellType type = vmesh->cellTypes[vc];
+                    const QuadratureRule& rule = stiffnessRule(type);
+                    const auto xs = nodeCoords(*vmesh, vc);
+                    std::vector<std::array<double, 3>> corners(xs.begin(), xs.end());
+                    const double measure = std::abs(simplexMeasure(cellDimension(type), corners));
+                    const double refMeasure = cellDimension(type) == 2 ? 0.5 : 1.0 / 6.0;
+                    for (int q = 0; q < rule.size(); ++q) {
+                        field->pointCoords.push_back(mapToPhysical(type, xs, rule.points[q]));
+                        field->pointWeights.push_back(rule.weights[q] * measure / refMeasure);
+                        field->pointSubcell.push_back(0);
+                        field->pointRefCoords.push_back(rule.points[q]);
+                        field->values.insert(field->values.end(), mean.begin(), mean.end());
+                    }
+                }
+                field->pointOffsets.push_back(static_cast<int>(field->pointWeights.size()));
+            }
+            s.gaussFields.emplace_back("SIEF_ELGA", field);
+        }
+        out->steps.push_back(std::move(s));
+    }
+    return out;
+}
+
+}  // namespace ma::xfem

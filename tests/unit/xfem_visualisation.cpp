@@ -1,0 +1,152 @@
+// POST_MAIL_XFEM / POST_CHAM_XFEM (src/xfem/Visualisation): counts, names, NFISSU on the
+// interfaces, and the lip displacements of the four rigid blocks of ssnv511.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "core/Error.hpp"
+#include "core/Messages.hpp"
+#include "fe/ShapeFunctions.hpp"
+#include "xfem/Visualisation.hpp"
+#include "xfem_test_meshes.hpp"
+
+using namespace ma;
+using namespace ma::xfem;
+
+namespace {
+
+int blockOf(double x, double y) { return (x > 0 ? 2 : 0) + (y < 0 ? 1 : 0); }
+const std::array<double, 4> kDx{-0.25, -0.5, 0.75, 1.0};  // ssnv511a's block values
+
+// Block of the sub-cell s of a cell (its centroid).
+int subcellBlock(const XfemModel& xm, int cell, int s) {
+    const CellCut* cut = xm.cut(cell);
+    std::array<double, 3> bary{0, 0, 0};
+    for (int v = 0; v < cut->vertexCount(); ++v)
+        for (int j = 0; j < 3; ++j) bary[j] += cut->points[cut->subcells[s].vertices[v]].ref[j] / cut->vertexCount();
+    std::vector<std::array<double, 3>> xs;
+    for (int n : xm.mesh().cellNodes(cell)) xs.push_back(xm.mesh().coords[n]);
+    const auto x = mapToPhysical(cut->type, xs, bary);
+    return blockOf(x[0], x[1]);
+}
+
+// DEPL of the four rigid blocks (DX = block value, DY = 0) in the enriched basis.
+std::shared_ptr<NodalField> rigidBlocks(const XfemModel& xm) {
+    const Mesh& m = xm.mesh();
+    auto f = std::make_shared<NodalField>();
+    std::vector<std::string> comps{"DX", "DY"};
+    for (int k = 1; k <= 3; ++k) comps.push_back(fmt::format("H{}X", k)), comps.push_back(fmt::format("H{}Y", k));
+    f->resize(xm.meshPtr(), comps);
+    for (int n = 0; n < m.nodeCount(); ++n) {
+        const NodeEnrichment* e = xm.node(n);
+        auto blockOfDomain = [&](const std::vector<signed char>& key) {
+            for (int c : xm.cellsOfNode(n)) {
+                const CellCut* cut = xm.cut(c);
+                for (int s = 0; s < int(cut->subcells.size()); ++s)
+                    if (!cut->skin && xm.domainKey(n, *cut, s) == key) return subcellBlock(xm, c, s);
+            }
+            return -1;
+        };
+        const double x = m.coords[n][0], y = m.coords[n][1];
+        int own = blockOf(x == 0 ? 1e-9 : x, y == 0 ? 1e-9 : y);
+        if (e && xm.activeSlots(n) > 0) own = blockOfDomain(e->own);
+        f->set(n, 0, kDx[own]);
+        f->set(n, 1, 0.0);
+        for (int k = 1; k <= xm.activeSlots(n); ++k) {
+            const int b = blockOfDomain(e->slotDomain[k - 1]);
+            f->set(n, 2 * k, (kDx[b] - kDx[own]) / e->slotValue[k - 1]);
+            f->set(n, 2 * k + 1, 0.0);
+        }
+    }
+    return f;
+}
+
+}  // namespace
+
+TEST(XfemVisualisation, Base36Names) {
+    EXPECT_EQ(base36(1), "1");
+    EXPECT_EQ(base36(10), "A");
+    EXPECT_EQ(base36(35), "Z");
+    EXPECT_EQ(base36(36), "10");
+    EXPECT_EQ(base36(1296), "100");
+}
+
+TEST(XfemVisualisation, Ssnv511aMeshAndLips) {
+    msg().setEcho(false);
+    for (auto kind : {CellType::QUAD4, CellType::TRIA3}) {
+        for (int n : {5, 6}) {
+            auto mesh = xfemtest::square(n, kind);
+            auto j = xfemtest::ssnv511Cracks(mesh);
+            auto model = std::make_shared<Model>(xfemtest::model(mesh));
+            auto xm = std::make_shared<XfemModel>(*model, std::vector<std::shared_ptr<const Crack>>{j.fiss1, j.fiss2, j.fiss3});
+            model->enrichment = xm;
+            const Visualisation v = buildVisualisation(*model, *xm);
+            const Mesh& vm = *v.mesh;
+            // Cells: the classical ones copied first, then one per sub-cell.
+            int subcells = 0, classical = 0;
+            for (int c = 0; c < mesh->cellCount(); ++c) {
+                if (cellDimension(mesh->cellTypes[c]) != 2) continue;
+                if (xm->isEnriched(c)) subcells += int(xm->cut(c)->subcells.size());
+                else ++classical;
+            }
+            EXPECT_EQ(vm.cellCount(), classical + subcells);
+            if (kind == CellType::QUAD4 && n == 5) {
+                EXPECT_EQ(classical, 4);
+                EXPECT_EQ(vm.cellNames[4], "MX1");
+                EXPECT_EQ(vm.nodeNames[16].substr(0, 2), "NX");  // corner cells' 16 nodes are copied first
+            }
+            EXPECT_TRUE(vm.cellGroups.has("SURF"));
+            EXPECT_EQ(vm.cellGroups.get("SURF").size(), size_t(vm.cellCount()));
+            EXPECT_FALSE(vm.cellGroups.has("LG"));  // segments are not in the model
+            // NFISSU: NP/NM nodes, all on an interface (x = 0 or y = 0).
+            ASSERT_TRUE(vm.nodeGroups.has("NFISSU"));
+            const auto& crack = vm.nodeGroups.get("NFISSU");
+            EXPECT_GT(crack.size(), 10u);
+            int np = 0, nm = 0;
+            for (int id : crack) {
+                const auto& x = vm.coords[id];
+                EXPECT_TRUE(std::abs(x[0]) < 1e-12 || std::abs(x[1]) < 1e-12) << vm.nodeNames[id];
+                const std::string prefix = vm.nodeNames[id].substr(0, 2);
+                EXPECT_TRUE(prefix == "NP" || prefix == "NM") << vm.nodeNames[id];
+                np += prefix == "NP", nm += prefix == "NM";
+            }
+            EXPECT_GT(np, 0);
+            EXPECT_GT(nm, 0);
+            // Every node name is unique.
+            std::map<std::string, int> names;
+            for (const auto& s : vm.nodeNames) EXPECT_EQ(names[s]++, 0) << s;
+
+            // POST_CHAM_XFEM of the four rigid blocks: each new node has its side's value.
+            Result res("evol_elas");
+            res.name = "UTOT1";
+            res.mesh = mesh;
+            res.model = model;
+            ResultStep step;
+            step.order = 1;
+            step.inst = 0.0;
+            step.nodalFields.emplace_back("DEPL", rigidBlocks(*xm));
+            res.steps.push_back(step);
+            auto visuModel = std::make_shared<Model>(xfemtest::model(v.mesh));
+            auto out = visualisationResult(res, visuModel);
+            ASSERT_EQ(out->steps.size(), 1u);
+            EXPECT_EQ(out->typeName(), "evol_elas");
+            const auto depl = out->steps[0].nodal("DEPL");
+            ASSERT_TRUE(depl);
+            for (int id = 0; id < vm.nodeCount(); ++id) {
+                const auto& info = v.nodes[id];
+                const double expected = info.original >= 0 ? kDx[blockOf(vm.coords[id][0], vm.coords[id][1])]
+                                                           : kDx[subcellBlock(*xm, info.parentCell, info.subcell)];
+                EXPECT_NEAR(depl->at(id, 0), expected, 1e-14) << vm.nodeNames[id];
+                EXPECT_NEAR(depl->at(id, 1), 0.0, 1e-14);
+            }
+            // Zones of ssnv511 (xfem_spec §8.8): NP with x > 0.02 are on the upper lip, right half.
+            for (int id : crack)
+                if (vm.nodeNames[id].substr(0, 2) == "NP" && vm.coords[id][0] > 0.02) {
+                    EXPECT_NEAR(depl->at(id, 0), 0.75, 1e-14) << vm.nodeNames[id];
+                }
+            // A model on another mesh is refused.
+            EXPECT_THROW(visualisationResult(res, model), UserError);
+        }
+    }
+}
