@@ -1,0 +1,110 @@
+// The supervisor end to end: .export runs, outputs, naming of concepts, reuse, FIN, alarms.
+#include <gtest/gtest.h>
+
+#include "parser_run.hpp"
+
+using namespace ma::test;
+
+TEST(ParserSupervisor, ExportRunWritesMessAndResu) {
+    auto dir = freshDir();
+    std::filesystem::create_directories(dir / "data");
+    writeText(dir / "data" / "case.comm", R"(
+DEBUT(CODE=_F(NIV_PUB_WEB='INTERNET'))
+L_INST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1, NOMBRE=4))
+VAR1 = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 2.0), PROL_DROITE='CONSTANT')
+F = FORMULE(VALE='2*INST', NOM_PARA='INST')
+print('VAR1', VAR1(0.25), VAR1(3.0), 'F', F(0.25))
+FIN()
+print('after FIN')
+)");
+    writeText(dir / "data" / "case.export",
+              "P time_limit 30\nP testlist submit verification\nF comm case.comm D 1\nF mess case.mess R 6\n");
+    auto r = runMiniaster(dir, "data/case.export");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("L_INST = DEFI_LIST_REEL("), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("VAR1 0.5 2.0 F 0.5"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("after FIN"), std::string::npos) << "nothing runs after FIN";
+    EXPECT_NE(r.output.find("TIMING SUMMARY"), std::string::npos);
+    EXPECT_NE(r.output.find("<I> <FIN> ARRET NORMAL"), std::string::npos);
+    EXPECT_NE(r.output.find("--- DIAGNOSTIC JOB : OK\n"), std::string::npos);
+    // R paths of the .export are relative to --out-dir when given; the .resu takes the default name.
+    EXPECT_TRUE(r.exists("out/case.mess"));
+    EXPECT_TRUE(r.exists("out/case.resu"));
+    EXPECT_NE(r.file("out/case.mess").find("--- DIAGNOSTIC JOB : OK"), std::string::npos);
+}
+
+TEST(ParserSupervisor, ConceptNaming) {
+    auto r = runComm(R"(
+DEBUT()
+A = FORMULE(VALE='X', NOM_PARA='X')
+T = [None] * 5
+T[1] = FORMULE(VALE='X', NOM_PARA='X')
+for i in [2, 3]:
+    T[i] = FORMULE(VALE='X', NOM_PARA='X')
+def make():
+    B = FORMULE(VALE='X', NOM_PARA='X')
+    return B
+C = make()
+D = {}
+D['k'] = FORMULE(VALE='X', NOM_PARA='X')
+print(A.getName(), T[1].getName(), T[2].getName(), T[3].getName(), C.getName(), D['k'].getName(), A.getType())
+FIN()
+)");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("\nA T_1 T_2 T_3 B D_k formule\n"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("T_2 = FORMULE("), std::string::npos);
+}
+
+TEST(ParserSupervisor, ReuseIsHonouredForReentrantCommands) {
+    // Validation only: CALC_TABLE is reentrant; the result must be assigned to the reused object.
+    auto ok = runComm("DEBUT()\nL = DEFI_LIST_REEL(VALE=(0., 1.))\n"
+                      "R = STAT_NON_LINE(MODELE=None, CHAM_MATER=None, INCREMENT=_F(LIST_INST=L))\n",
+                      "--check-syntax");
+    EXPECT_EQ(ok.status, 1);  // MODELE=None is an absent mandatory keyword
+    EXPECT_NE(ok.output.find("mandatory keyword MODELE is missing"), std::string::npos) << ok.output;
+
+    auto mismatch = runComm(R"(
+DEBUT()
+F = FORMULE(VALE='X', NOM_PARA='X')
+L = DEFI_LIST_REEL(VALE=(0., 1.))
+M = LIRE_MAILLAGE()
+M2 = DEFI_GROUP(reuse=M, MAILLAGE=M, CREA_GROUP_NO=_F(GROUP_MA='A'))
+)", "--check-syntax");
+    expectError(mismatch, "<F> <ERROR> DEFI_GROUP (t.comm, line 6): reuse=M but the result is assigned to M2: a "
+                          "reentrant command modifies the object given by reuse=, assign the result to it");
+
+    auto good = runComm("DEBUT()\nM = LIRE_MAILLAGE()\nM = DEFI_GROUP(reuse=M, MAILLAGE=M, "
+                        "CREA_GROUP_NO=_F(GROUP_MA='A'))\nFIN()\n",
+                        "--check-syntax");
+    EXPECT_EQ(good.status, 0) << good.output;
+    EXPECT_NE(good.output.find("M = DEFI_GROUP("), std::string::npos);
+}
+
+TEST(ParserSupervisor, MissingFinAndDebutAreAlarms) {
+    auto r = runComm("L = DEFI_LIST_REEL(VALE=(0., 1.))\n");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("<A> <SUPERVIS_1>"), std::string::npos);
+    EXPECT_NE(r.output.find("<A> <SUPERVIS_2>"), std::string::npos);
+    EXPECT_NE(r.output.find("--- DIAGNOSTIC JOB : <A>_ALARM\n"), std::string::npos);
+    EXPECT_TRUE(r.exists("out/t.resu"));
+}
+
+TEST(ParserSupervisor, CommWithMissingMesh) {
+    auto r = runComm("DEBUT()\nFIN()\n", "--mesh nowhere.med");
+    expectError(r, "<F> <ERROR> the mesh file nowhere.med (--mesh) does not exist");
+}
+
+TEST(ParserSupervisor, MeshOptionSetsUnit20) {
+    auto dir = freshDir();
+    writeText(dir / "t.comm", "DEBUT()\nFIN()\n");
+    writeText(dir / "m.med", "");
+    auto r = runMiniaster(dir, "t.comm", "--mesh m.med");
+    EXPECT_EQ(r.status, 0) << r.output;
+}
+
+TEST(ParserSupervisor, BadCommandLine) {
+    auto dir = freshDir();
+    auto r = runMiniaster(dir, "t.comm", "--frobnicate");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.output.find("miniaster: unknown option --frobnicate"), std::string::npos) << r.output;
+}
