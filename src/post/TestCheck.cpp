@@ -294,8 +294,9 @@ std::string describe(const TestTableRequest& rq, const CheckInput& in, const Che
         what += fmt::format(" [{} {}{}{}]", f.column, f.comparison, isEmpty(f.value) ? "" : " ",
                             isEmpty(f.value) ? std::string() : describeCell(f.value));
     if (out.status == TestLine::Status::Skip) return what + ": skipped (VALE_CALC is zero, no ORDRE_GRANDEUR)";
+    auto trimmed = [](const std::string& t) { return t.substr(std::min(t.find_first_not_of(' '), t.size())); };
     return fmt::format("{}: computed {}, expected {}, error {} {} tolerance {}", what, describeCell(in.computed),
-                       describeCell(in.expected), out.shownError,
+                       describeCell(in.expected), trimmed(out.shownError),
                        out.status == TestLine::Status::Ok ? "<=" : ">", out.shownTolerance);
 }
 
