@@ -229,12 +229,14 @@ void checkLevel(const std::string& where, const std::vector<cata::Keyword>& cont
         names.insert(k.name);
         if (k.kind == cata::Keyword::Kind::Factor) checkLevel(where + "/" + k.name, k.content, k.rulesList, {});
         for (const auto& d : k.defaultValues) {
-            if (std::holds_alternative<std::string>(d) && !k.intoTexts.empty())
+            if (std::holds_alternative<std::string>(d) && !k.intoTexts.empty()) {
                 EXPECT_NE(std::find(k.intoTexts.begin(), k.intoTexts.end(), std::get<std::string>(d)), k.intoTexts.end())
                     << where << "/" << k.name << ": default not in the allowed values";
-            if (std::holds_alternative<long long>(d) && !k.intoInts.empty())
+            }
+            if (std::holds_alternative<long long>(d) && !k.intoInts.empty()) {
                 EXPECT_NE(std::find(k.intoInts.begin(), k.intoInts.end(), std::get<long long>(d)), k.intoInts.end())
                     << where << "/" << k.name;
+            }
         }
     }
     for (const auto& k : content)
