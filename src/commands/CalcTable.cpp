@@ -77,6 +77,7 @@ ConceptPtr calcTable(const KeywordSet& kw, CommandContext& ctx) {
                                              action.pathOf("OPERATION"), op));
         }
     }
+    table->removeEmptyRows();  // code_aster rebuilds the table: rows without any value vanish
     if (kw.has("TITRE")) title = kw.texts("TITRE");
     table->title.clear();
     if (!title.empty()) table->title.push_back(title.front());
