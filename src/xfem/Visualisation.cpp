@@ -35,6 +35,21 @@ double namingLevelSet(const CellCut& cut, const CutPoint& p, size_t j) {
     return p.lsn[j];
 }
 
+// Counter strings that would make a node name contain another prefix (e.g. NM + "NP" = "NMNP",
+// which CALC_TABLE FILTRE REGEXP 'NP' would take for an upper-lip node) are skipped.
+bool clashes(const std::string& digits, const VisualisationNames& names) {
+    const std::string prefixes[] = {names.nodeX, names.nodeMinus, names.nodePlus};
+    for (const auto& p : prefixes) {
+        const std::string full = p + digits;
+        for (const auto& r : prefixes) {
+            if (r.empty()) continue;
+            for (size_t pos = full.find(r); pos != std::string::npos; pos = full.find(r, pos + 1))
+                if (!(pos == 0 && r == p)) return true;
+        }
+    }
+    return false;
+}
+
 }  // namespace
 
 std::string base36(long long value) {
@@ -118,7 +133,9 @@ Visualisation buildVisualisation(const Model& model, const XfemModel& xm, const 
                     if (best >= 0) prefix = sub.heaviside[best] < 0 ? names.nodeMinus : names.nodePlus;
                 }
                 const auto x = mapToPhysical(cut->type, xs, p.ref);
-                const int id = vm.addNode(x, prefix + base36(++nodeCounter));
+                std::string digits = base36(++nodeCounter);
+                while (clashes(digits, names)) digits = base36(++nodeCounter);
+                const int id = vm.addNode(x, prefix + digits);
                 out.nodes.push_back({-1, c, pid, s, onCrack});
                 if (onCrack) crackNodes.push_back(id);
                 made.emplace(std::move(key), id);

@@ -72,6 +72,20 @@ TEST(XfemVisualisation, Base36Names) {
     EXPECT_EQ(base36(1296), "100");
 }
 
+TEST(XfemVisualisation, NamesNeverContainAnotherPrefix) {
+    // 40 x 40 cells: more than 36^2 new nodes, so base-36 counters such as "NP" (853) occur.
+    auto mesh = xfemtest::square(40, CellType::QUAD4);
+    auto j = xfemtest::ssnv511Cracks(mesh);
+    auto model = std::make_shared<Model>(xfemtest::model(mesh));
+    auto xm = std::make_shared<XfemModel>(*model, std::vector<std::shared_ptr<const Crack>>{j.fiss1, j.fiss2, j.fiss3});
+    const Visualisation v = buildVisualisation(*model, *xm);
+    ASSERT_GT(v.mesh->nodeCount(), 1400);
+    for (const auto& name : v.mesh->nodeNames) {
+        if (name.rfind("N", 0) != 0 || name.size() < 3) continue;
+        for (const char* p : {"NP", "NM", "NX"}) EXPECT_EQ(name.find(p, 1), std::string::npos) << name;
+    }
+}
+
 TEST(XfemVisualisation, Ssnv511aMeshAndLips) {
     msg().setEcho(false);
     for (auto kind : {CellType::QUAD4, CellType::TRIA3}) {
