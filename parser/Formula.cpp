@@ -16,49 +16,36 @@ namespace ma {
 
 // Hidden like pybind11's own types (avoids -Wattributes on the py::object members).
 struct __attribute__((visibility("hidden"))) Formula::Python {
-    py::object code;       // compiled expression
+    py::object code;       // compiled `lambda <parameters>: (<expression>)`
     py::object evaluator;  // evaluate_many below
-    py::object scope;      // name lookup: parameters are set in it, then the fallbacks
+    py::dict context;      // extra keywords of FORMULE
+    py::dict commGlobals;  // the command file's namespace (live)
 };
 
 namespace {
-// Python side of a formula. `Scope` is the locals mapping of eval(): parameters are stored in it;
-// a missing name is looked up in the context objects and math names, then in the command
-// file's globals (pre-2018 files), else NameError. `evaluate_many` runs the whole batch inside
-// Python and reports the index of the failing point instead of raising.
+// Python side of a formula: the expression is compiled once as `lambda <NOM_PARA>: (<VALE>)`;
+// `evaluate_many` builds the function for a batch and runs the whole batch inside Python,
+// reporting the index of the failing point instead of raising.
 const char* kFormulaSupport = R"PY(
+import builtins as _builtins
 import math as _math
 
-class Scope(dict):
-    __slots__ = ("fallbacks",)
-    def __missing__(self, key):
-        for mapping in self.fallbacks:
-            if key in mapping:
-                return mapping[key]
-        raise KeyError(key)
+_MATH = {k: getattr(_math, k) for k in dir(_math) if not k.startswith("_")}
 
-def make_scope(context, comm_globals):
-    s = Scope()
-    names = {k: getattr(_math, k) for k in dir(_math) if not k.startswith("_")}
-    names.update(context)
-    s.fallbacks = (names, comm_globals)
-    return s
-
-def evaluate_many(code, scope, names, values, npar):
+def evaluate_many(code, context, comm_globals, values, npar):
+    # Name lookup, innermost first: parameters, context objects, math, the command file's globals
+    # (read at each batch, so that pre-2018 files see the functions they define).
+    g = dict(comm_globals)
+    g.update(_MATH)
+    g.update(context)
+    g["__builtins__"] = _builtins
+    f = eval(code, g)
     n = len(values) // npar if npar else 1
     out = [0.0] * n
     i = 0
-    g = {"__builtins__": __builtins__}
     try:
         for i in range(n):
-            base = i * npar
-            for j in range(npar):
-                scope[names[j]] = values[base + j]
-            out[i] = float(eval(code, g, scope))
-    except NameError as e:
-        return None, i, "NameError: %s" % e
-    except KeyError as e:
-        return None, i, "NameError: name %s is not defined" % e
+            out[i] = float(f(*values[i * npar:(i + 1) * npar]))
     except Exception as e:
         return None, i, "%s: %s" % (type(e).__name__, e)
     return out, -1, ""
@@ -89,13 +76,19 @@ Formula::Formula(std::string expression, std::vector<std::string> parameters, py
     for (const auto& p : parameters_)
         if (!isIdentifier(p)) throw UserError(fmt::format("FORMULE: NOM_PARA '{}' is not a valid parameter name", p));
     python_ = std::make_unique<Python>();
+    auto builtins = py::module_::import("builtins");
     try {
-        python_->code = py::module_::import("builtins").attr("compile")(expression_, "<FORMULE>", "eval");
+        builtins.attr("compile")(expression_, "<FORMULE>", "eval");  // the expression alone, for the message
+        std::string lambda = "lambda ";
+        for (size_t i = 0; i < parameters_.size(); ++i) lambda += (i ? ", " : "") + parameters_[i];
+        lambda += ": (" + expression_ + "\n)";
+        python_->code = builtins.attr("compile")(lambda, "<FORMULE>", "eval");
     } catch (py::error_already_set& e) {
         throw UserError(fmt::format("FORMULE: VALE '{}' is not a valid Python expression ({})", expression_, e.what()));
     }
     auto& support = supportModule();
-    python_->scope = support.attr("make_scope")(context, commGlobals);
+    python_->context = context;
+    python_->commGlobals = commGlobals;
     python_->evaluator = support.attr("evaluate_many");
 }
 
@@ -105,7 +98,8 @@ Formula::~Formula() {
     if (!Py_IsInitialized()) {
         python_->code.release();
         python_->evaluator.release();
-        python_->scope.release();
+        python_->context.release();
+        python_->commGlobals.release();
         return;
     }
     py::gil_scoped_acquire gil;
@@ -133,9 +127,7 @@ std::vector<double> Formula::evaluateMany(std::span<const double> args, size_t n
     py::gil_scoped_acquire gil;
     py::list values(args.size());
     for (size_t i = 0; i < args.size(); ++i) values[i] = py::float_(args[i]);
-    py::list names;
-    for (const auto& p : parameters_) names.append(p);
-    py::tuple result = python_->evaluator(python_->code, python_->scope, names, values, np);
+    py::tuple result = python_->evaluator(python_->code, python_->context, python_->commGlobals, values, np);
     const long failed = result[1].cast<long>();
     if (failed >= 0) fail(args.subspan(size_t(failed) * np, np), result[2].cast<std::string>());
     std::vector<double> out = result[0].cast<std::vector<double>>();
