@@ -29,6 +29,17 @@ void checkReadableMedFile(const std::string& path) {
     }
     if (H5Fis_hdf5(path.c_str()) <= 0)
         throw UserError("file '" + path + "' is not a MED file: it is not in HDF5 format");
+    // A truncated file keeps its HDF5 signature but HDF5 refuses to open it (end of file before
+    // the end address written in the superblock).
+    const hid_t h5 = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (h5 < 0)
+        throw UserError("MED file '" + path + "' is damaged or truncated: HDF5 cannot open it");
+    // Every MED file has the group /INFOS_GENERALES (version numbers); checked here so that the
+    // MED library does not print its own error messages on other HDF5 files.
+    const bool hasMedHeader = H5Lexists(h5, "INFOS_GENERALES", H5P_DEFAULT) > 0;
+    H5Fclose(h5);
+    if (!hasMedHeader)
+        throw UserError("file '" + path + "' is an HDF5 file but not a MED file (no MED header /INFOS_GENERALES)");
     med_bool hdfOk = MED_FALSE, medOk = MED_FALSE;
     if (MEDfileCompatibility(path.c_str(), &hdfOk, &medOk) < 0 || !hdfOk)
         throw UserError("MED file '" + path +

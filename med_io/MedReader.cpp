@@ -166,12 +166,23 @@ std::shared_ptr<Mesh> readMesh(const std::string& path, const std::string& meshN
         if (n < 0) damaged(path, "the " + cellTypeName(t) + " cells of " + where);
         if (n > 0) types.push_back(med_geometry_type(t));
     }
-    if (med_int(types.size()) < ntype)
-        throw NotImplemented(fmt::format("MED file '{}', {}: the mesh holds cells of a kind miniaster "
-                                         "does not read (polygons, polyhedra or structural elements); "
-                                         "supported: POI1, SEG2/3/4, TRIA3/6/7, QUAD4/8/9, TETRA4/10, "
-                                         "PYRA5/13, PENTA6/15/18, HEXA8/20/27",
-                                         path, where));
+    if (med_int(types.size()) < ntype) {
+        // Some cell block was not found by number: either a kind we do not read, or a block
+        // whose connectivity is missing (damaged file).
+        for (med_int i = 1; i <= ntype; ++i) {
+            char tname[MED_NAME_SIZE + 1] = {};
+            med_geometry_type geo;
+            if (MEDmeshEntityInfo(fid, mname, numdt, numit, MED_CELL, int(i), tname, &geo) < 0)
+                damaged(path, "the cell types of " + where);
+            if (std::find(types.begin(), types.end(), geo) != types.end()) continue;
+            const std::string name = cellTypeName(CellType(geo));
+            if (name.rfind("UNKNOWN", 0) != 0) damaged(path, "the connectivity of the " + name + " cells of " + where);
+            throw NotImplemented(fmt::format("MED file '{}', {}: cells of MED type {} ({}) are not supported; "
+                                             "miniaster reads POI1, SEG2/3/4, TRIA3/6/7, QUAD4/8/9, TETRA4/10, "
+                                             "PYRA5/13, PENTA6/15/18, HEXA8/20/27",
+                                             path, where, trimName(tname, MED_NAME_SIZE), int(geo)));
+        }
+    }
 
     std::vector<med_int> cellFamily;
     for (med_geometry_type geo : types) {

@@ -224,7 +224,7 @@ void MedWriter::commit() {
     impl_->target.commit();
 }
 
-void MedWriter::writeMesh(const Mesh& mesh, const std::string& meshName) {
+bool MedWriter::writeMesh(const Mesh& mesh, const std::string& meshName) {
     const med_idt fid = impl_->fid();
     const std::string& tmp = impl_->target.tempPath();
     auto fail = [&](const std::string& what) {
@@ -236,7 +236,7 @@ void MedWriter::writeMesh(const Mesh& mesh, const std::string& meshName) {
             throw UserError(fmt::format("the MED file already holds a mesh named '{}' with {} nodes, "
                                         "not the {} nodes of the mesh to print",
                                         meshName, existing, mesh.nodeCount()));
-        return;
+        return false;
     }
     const int dim = mesh.dim;
     const char* axes3 = "X               Y               Z               ";
@@ -310,6 +310,7 @@ void MedWriter::writeMesh(const Mesh& mesh, const std::string& meshName) {
     writeFamilies(nodeFam);
     writeFamilies(cellFam);
     if (MEDfamilyCr(fid, meshName.c_str(), "FAMILLE_ZERO", 0, 0, "") < 0) fail("family 0");
+    return true;
 }
 
 void MedWriter::writeNodalField(const std::string& fieldName, const std::string& meshName,

@@ -25,8 +25,9 @@ public:
 
     // Writes the mesh with its groups (as families) under `meshName`. When the file already holds
     // a mesh of that name with the same numbers of nodes and cells, nothing is written (several
-    // IMPR_RESU to one file); a different mesh of the same name is a UserError.
-    void writeMesh(const Mesh& mesh, const std::string& meshName);
+    // IMPR_RESU to one file) and false is returned; a different mesh of the same name is a
+    // UserError.
+    bool writeMesh(const Mesh& mesh, const std::string& meshName);
 
     // A nodal field at step (numdt, numit, dt) on the mesh written as `meshName`: components that
     // at least one node carries; nodes carrying none are left out through a MED profile; a

@@ -129,8 +129,8 @@ ConceptPtr imprResu(const KeywordSet& kw, CommandContext& ctx) {
     for (const auto& occ : kw.factor("RESU")) {
         if (occ.has("MAILLAGE")) {
             auto mesh = occ.object<Mesh>("MAILLAGE");
-            writer.writeMesh(*mesh, meshNameOf(*mesh));
-            msg().infof("    mesh {} printed", meshNameOf(*mesh));
+            if (writer.writeMesh(*mesh, meshNameOf(*mesh))) msg().infof("    mesh {} printed", meshNameOf(*mesh));
+            else msg().infof("    mesh {} is already in the file", meshNameOf(*mesh));
         }
         if (occ.has("RESULTAT")) printResult(writer, *occ.object<Result>("RESULTAT"), occ);
         if (occ.has("CHAM_GD")) printField(writer, occ.rawObject("CHAM_GD"), occ);

@@ -10,6 +10,7 @@
 #include "core/Messages.hpp"
 #include "med_io/MedCellOrder.hpp"
 #include "med_io/MedReader.hpp"
+#include "med_io/MedWriter.hpp"
 #include "med_test_support.hpp"
 
 using namespace ma;
@@ -238,8 +239,28 @@ TEST(MedReader, BadInputIsAClearUserError) {
     std::filesystem::copy_file(test::astest("ssnv511g.mmed"), truncated);
     std::filesystem::resize_file(truncated, std::filesystem::file_size(truncated) / 2);
     auto err = errorOf([&] { med::readMesh(truncated); });
-    EXPECT_NE(err.find("'" + truncated + "'"), std::string::npos) << err;
-    EXPECT_NE(err.find("truncated"), std::string::npos) << err;
+    EXPECT_EQ(err, "MED file '" + truncated + "' is damaged or truncated: HDF5 cannot open it");
+
+    auto plainHdf5 = dir + "/plain.h5";
+    test::runCommand("/usr/bin/python3 -c \"import h5py; f = h5py.File('" + plainHdf5 + "', 'w'); f['x'] = [1, 2]\"");
+    EXPECT_EQ(errorOf([&] { med::readMesh(plainHdf5); }),
+              "file '" + plainHdf5 + "' is an HDF5 file but not a MED file (no MED header /INFOS_GENERALES)");
+
+    auto damaged = dir + "/damaged.med";
+    std::filesystem::copy_file(test::astest("ssnv511a.mmed"), damaged);
+    std::filesystem::permissions(damaged, std::filesystem::perms::owner_write, std::filesystem::perm_options::add);
+    test::runCommand("/usr/bin/python3 -c \"import h5py; f = h5py.File('" + damaged +
+                     "', 'r+'); del f['/ENS_MAA/MAILLAGE/-0000000000000000001-0000000000000000001/MAI/QU4/NOD']\"");
+    EXPECT_EQ(errorOf([&] { med::readMesh(damaged); }),
+              "MED file '" + damaged + "' is damaged or truncated: cannot read the connectivity of the QUAD4 cells "
+              "of mesh 'MAILLAGE'");
+
+    auto empty = dir + "/empty.med";
+    {
+        med::MedWriter w(empty, false);
+        w.commit();
+    }
+    EXPECT_EQ(errorOf([&] { med::readMesh(empty); }), "MED file '" + empty + "' contains no mesh");
 
     EXPECT_EQ(errorOf([&] { med::readMesh(test::astest("ssnv511a.mmed"), "MAIL"); }),
               "NOM_MED='MAIL': MED file '" + test::astest("ssnv511a.mmed") +
