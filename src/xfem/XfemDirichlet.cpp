@@ -128,8 +128,10 @@ std::vector<LinearRelation> xfemDirichlet(const XfemModel& xm, const ImposedDof&
             const size_t fMinus = at(along(mesh.coords[vm], mesh.coords[vp], std::max(0.0, t - kSideOffset)));
             const bool minusNode = n == vm;
             emit.push_back([&, n, h, s, pn, pm, pp, fPlus, fMinus, Nm, Np, minusNode](const std::vector<double>& f) {
-                const double b = minusNode ? (f[fPlus] - Np * f[pp] - Nm * f[pm]) / (s * Nm)
-                                           : (f[fMinus] - Nm * f[pm] - Np * f[pp]) / (s * Np);
+                // (f+ - Np f(V+) - Nm f(V-)) / (s Nm) written without the cancellation of
+                // f(V+) - Np f(V+) when the crossing is close to V- (Nm small), using Nm + Np = 1.
+                const double b = minusNode ? ((f[fPlus] - f[pp]) + Nm * (f[pp] - f[pm])) / (s * Nm)
+                                           : ((f[fMinus] - f[pm]) + Np * (f[pm] - f[pp])) / (s * Np);
                 out.push_back({{{n, h, 1.0}}, b});
                 out.push_back({{{n, comp, 1.0}}, f[pn]});
             });
