@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <limits>
 
 #include "core/Error.hpp"
@@ -18,6 +19,13 @@ namespace {
 
 double seconds(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// CPU time of the calling thread: phase costs that do not depend on the machine's load.
+double threadCpuSeconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
 // Global dofs of the element's local unknowns (node-major, then slot, then component).
@@ -154,6 +162,14 @@ void MechanicalProblem::buildConstraints(double inst, Constraints& out) const {
     auto describe = [&](int dof) {
         return fmt::format("{} of node {}", numbering_->componentOf(dof), mesh.nodeNames[numbering_->nodeOf(dof)]);
     };
+    // Inactive Heaviside slots (Enrichment::inactiveSlots, xfem_spec §3.9): fixed to 0 first, so
+    // that a user condition giving them another value is reported as a conflict.
+    if (model_->enrichment)
+        for (const auto& [node, slot] : model_->enrichment->inactiveSlots())
+            for (int comp = 0; comp < numbering_->dim(); ++comp) {
+                const int d = numbering_->dof(node, slot, comp);
+                if (d >= 0) out.fixed[d] = 1, out.fixedValue[d] = 0.0;
+            }
     std::vector<std::pair<int, double>> terms;
     std::vector<const LinearRelation*> multiTerm;
     std::vector<std::vector<std::pair<int, double>>> multiTerms;
@@ -217,6 +233,7 @@ void MechanicalProblem::buildConstraints(double inst, Constraints& out) const {
 
 void MechanicalProblem::buildPattern() {
     const auto t0 = std::chrono::steady_clock::now();
+    const double cpu0 = threadCpuSeconds();
     const Mesh& mesh = *model_->mesh;
     const auto& c = *constraints_;
     const int nNodes = mesh.nodeCount();
@@ -293,12 +310,15 @@ void MechanicalProblem::buildPattern() {
         for (int i = 0; i < c.freeCount; ++i)
             std::sort(matrix_.cols.begin() + matrix_.rowStart[i], matrix_.cols.begin() + matrix_.rowStart[i + 1]);
     matrix_.values.assign(matrix_.cols.size(), 0.0);
-    msg().infof("    matrix pattern: {} equations ({} free dofs, {} eliminated, {} multipliers), {} non-zeros, {:.3f} s",
-                nEq, c.freeCount, numbering_->size() - c.freeCount, c.multi.size(), matrix_.nonZeros(), seconds(t0));
+    msg().infof("    matrix pattern: {} equations ({} free dofs, {} eliminated, {} multipliers), {} non-zeros, "
+                "{:.3f} s (cpu {:.3f} s)",
+                nEq, c.freeCount, numbering_->size() - c.freeCount, c.multi.size(), matrix_.nonZeros(), seconds(t0),
+                threadCpuSeconds() - cpu0);
 }
 
 void MechanicalProblem::assembleMatrix() {
     const auto t0 = std::chrono::steady_clock::now();
+    const double cpu0 = threadCpuSeconds();
     const Mesh& mesh = *model_->mesh;
     const auto& c = *constraints_;
     const int dim = numbering_->dim();
@@ -308,6 +328,7 @@ void MechanicalProblem::assembleMatrix() {
     std::vector<int> dofs;
     std::vector<int> base;  // local index of (a, slot 0)
     std::vector<double> Ke;
+    std::vector<std::pair<int, int>> sorted;  // (equation, local index)
     for (size_t e = 0; e < model_->elements.size(); ++e) {
         const auto& element = model_->elements[e];
         const ElementIntegration* ei = &scratch;
@@ -322,6 +343,31 @@ void MechanicalProblem::assembleMatrix() {
         for (int a = 0; a < ei->nodeCount; ++a) base[a + 1] = base[a] + ei->slots[a] * dim;
         Ke.assign(size_t(nd) * nd, 0.0);
         const int n = ei->nodeCount;
+        if (ei->psi.empty()) {
+            // Classical element (one slot per node): upper blocks only, mirrored.
+            for (size_t p = 0; p < ei->refPoints.size(); ++p) {
+                const double w = geo.weight[p];
+                const double* g = &geo.gradN[p * n * 3];
+                for (int a = 0; a < n; ++a) {
+                    const double* ga = g + 3 * a;
+                    for (int b = a; b < n; ++b) {
+                        const double* gb = g + 3 * b;
+                        const double wdot = w * law.mu * (ga[0] * gb[0] + ga[1] * gb[1] + ga[2] * gb[2]);
+                        for (int ci = 0; ci < dim; ++ci)
+                            for (int di = 0; di < dim; ++di) {
+                                const double v = w * (law.lambdaEff * ga[ci] * gb[di] + law.mu * ga[di] * gb[ci]) +
+                                                 (ci == di ? wdot : 0.0);
+                                Ke[size_t(a * dim + ci) * nd + b * dim + di] += v;
+                            }
+                    }
+                }
+            }
+            for (int a = 0; a < n; ++a)
+                for (int b = a + 1; b < n; ++b)
+                    for (int ci = 0; ci < dim; ++ci)
+                        for (int di = 0; di < dim; ++di)
+                            Ke[size_t(b * dim + di) * nd + a * dim + ci] = Ke[size_t(a * dim + ci) * nd + b * dim + di];
+        } else
         for (size_t p = 0; p < ei->refPoints.size(); ++p) {
             const double w = geo.weight[p];
             for (int a = 0; a < n; ++a) {
@@ -348,15 +394,17 @@ void MechanicalProblem::assembleMatrix() {
                 }
             }
         }
-        for (int i = 0; i < nd; ++i) {
-            const int row = c.eq[dofs[i]];
-            if (row < 0) continue;
-            const long long rb = matrix_.rowStart[row], re = matrix_.rowStart[row + 1];
-            for (int j = 0; j < nd; ++j) {
-                const int col = c.eq[dofs[j]];
-                if (col < 0) continue;
-                const auto it = std::lower_bound(matrix_.cols.begin() + rb, matrix_.cols.begin() + re, col);
-                matrix_.values[it - matrix_.cols.begin()] += Ke[size_t(i) * nd + j];
+        // Scatter: the element's equations sorted once, then merged with each (sorted) row.
+        sorted.clear();
+        for (int j = 0; j < nd; ++j)
+            if (c.eq[dofs[j]] >= 0) sorted.emplace_back(c.eq[dofs[j]], j);
+        std::sort(sorted.begin(), sorted.end());
+        for (const auto& [row, i] : sorted) {
+            long long k = matrix_.rowStart[row];
+            const int* cols = matrix_.cols.data();
+            for (const auto& [col, j] : sorted) {
+                while (cols[k] < col) ++k;
+                matrix_.values[k] += Ke[size_t(i) * nd + j];
             }
         }
     }
@@ -376,8 +424,9 @@ void MechanicalProblem::assembleMatrix() {
         }
     }
     factorised_ = false;
-    msg().infof("    stiffness assembled: {} elements, {:.3f} s ({:.3f} us per dof){}", model_->elements.size(),
-                seconds(t0), 1e6 * seconds(t0) / std::max(1, numbering_->size()),
+    const double cpu = threadCpuSeconds() - cpu0;
+    msg().infof("    stiffness assembled: {} elements, {:.3f} s (cpu {:.3f} s, {:.3f} us per dof){}", model_->elements.size(),
+                seconds(t0), cpu, 1e6 * cpu / std::max(1, numbering_->size()),
                 c.multi.empty() ? "" : fmt::format(", multiplier scaling {:.3e}", alpha_));
 }
 

@@ -238,12 +238,19 @@ const QuadratureRule& quadratureRule(CellType cell, const std::string& family) {
 }
 
 const QuadratureRule& stiffnessRule(CellType cell, bool boundary) {
+    // Called once per element: resolved once, without the string lookup of quadratureRule.
+    static const QuadratureRule& seg2 = quadratureRule(CellType::SEG2, "FPG2");
+    static const QuadratureRule& tria1 = quadratureRule(CellType::TRIA3, "FPG1");
+    static const QuadratureRule& tria3 = quadratureRule(CellType::TRIA3, "FPG3");
+    static const QuadratureRule& quad4 = quadratureRule(CellType::QUAD4, "FPG4");
+    static const QuadratureRule& tetra1 = quadratureRule(CellType::TETRA4, "FPG1");
+    static const QuadratureRule& hexa8 = quadratureRule(CellType::HEXA8, "FPG8");
     switch (cell) {
-        case CellType::SEG2: return quadratureRule(cell, "FPG2");
-        case CellType::TRIA3: return quadratureRule(cell, boundary ? "FPG3" : "FPG1");
-        case CellType::QUAD4: return quadratureRule(cell, "FPG4");
-        case CellType::TETRA4: return quadratureRule(cell, "FPG1");
-        case CellType::HEXA8: return quadratureRule(cell, "FPG8");
+        case CellType::SEG2: return seg2;
+        case CellType::TRIA3: return boundary ? tria3 : tria1;
+        case CellType::QUAD4: return quad4;
+        case CellType::TETRA4: return tetra1;
+        case CellType::HEXA8: return hexa8;
         default: throw NotImplemented("no mechanical element for cell type " + cellTypeName(cell));
     }
 }
