@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
@@ -154,4 +155,34 @@ TEST(XfemSkin, CutBoundarySegments) {
     }
     // LG and LD at y = 0, LH and LB at x = 0.
     EXPECT_EQ(cutSegments, 4);
+}
+
+TEST(XfemSkin, CutBoundaryFaces3D) {
+    msg().setEcho(false);
+    const int n = 5;
+    auto mesh = xfemtest::slab(n, CellType::HEXA8);
+    auto id = [&](int i, int j, int k) { return k * (n + 1) * (n + 1) + j * (n + 1) + i; };
+    std::vector<int> sd;
+    for (int j = 0; j < n; ++j)
+        sd.push_back(mesh->addCell(CellType::QUAD4, std::vector<int>{id(n, j, 0), id(n, j + 1, 0), id(n, j + 1, 1), id(n, j, 1)}));
+    mesh->cellGroups.set("SD", sd);
+    auto j = xfemtest::ssnv511Cracks(mesh);
+    XfemModel xm(xfemtest::model(mesh, true), {j.fiss1, j.fiss2, j.fiss3});
+    ElementIntegration ei;
+    int faces = 0, cutFaces = 0;
+    for (int c : xm.xfemCells()) {
+        const CellCut* cut = xm.cut(c);
+        if (!cut->skin) continue;
+        ++faces;
+        EXPECT_EQ(xm.subcellRule(c), "FPG12");
+        xm.integration(c, ei);
+        double area = 0;
+        for (double w : ei.refWeights) area += w;
+        EXPECT_NEAR(area, 4.0, 1e-13);  // reference area of QUAD4 (FPG12 weights sum to 1/2 within 4e-15)
+        std::set<int> sides;
+        for (const auto& s : cut->subcells) sides.insert(s.heaviside[0]);
+        if (sides.size() == 2) ++cutFaces;
+    }
+    EXPECT_EQ(faces, 3);     // the faces of SD touching the nodes y = +-1
+    EXPECT_EQ(cutFaces, 1);  // the face crossed by y = 0
 }
