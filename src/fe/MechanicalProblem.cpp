@@ -590,12 +590,16 @@ IncrementReport MechanicalProblem::solveIncrement(double inst, const Convergence
             for (const auto& [d, coef] : c.multi[m].terms) g += coef * u[d];
             rhs[c.freeCount + m] = -alpha_ * g;
         }
-        if (!factorised_) {
-            solver_->factorize(matrix_, c.multi.empty() ? MatrixKind::SymmetricPositiveDefinite
-                                                        : MatrixKind::SymmetricIndefinite);
-            factorised_ = true;
+        if (matrix_.rows == 0) {
+            msg().info("    every unknown is imposed by a Dirichlet condition: nothing to solve");
+        } else {
+            if (!factorised_) {
+                solver_->factorize(matrix_, c.multi.empty() ? MatrixKind::SymmetricPositiveDefinite
+                                                            : MatrixKind::SymmetricIndefinite);
+                factorised_ = true;
+            }
+            solver_->solve(rhs);
         }
-        solver_->solve(rhs);
         for (int d = 0; d < ndof; ++d)
             if (c.eq[d] >= 0) u[d] += rhs[c.eq[d]];
         for (size_t m = 0; m < c.multi.size(); ++m) lambda_[m] += rhs[c.freeCount + m];
