@@ -4,6 +4,8 @@
   med_meshio_probe.py dump FILE          mesh as text: nodes, cells (MED node order, 0-based,
                                          numbered by increasing MED type code), groups
   med_meshio_probe.py field FILE NAME    values of the nodal field NAME (meshio point_data)
+  med_meshio_probe.py rawconn FILE TYP    connectivity of MED cell type TYP (HE8, H20, ...) read
+                                         with h5py from the first mesh, one cell per line, 1-based
   med_meshio_probe.py write-mixed FILE   writes a small mesh of quadratic and linear cells with
                                          multi-group families (another MED writer than ours)
 """
@@ -68,6 +70,18 @@ def field(path, name):
         print(" ".join(repr(float(v)) for v in row))
 
 
+def rawconn(path, typ):
+    import h5py
+    f = h5py.File(path, "r")
+    mesh = f["ENS_MAA"][list(f["ENS_MAA"].keys())[0]]
+    step = mesh[list(mesh.keys())[0]]
+    nod = np.asarray(step["MAI"][typ]["NOD"])
+    n = int(step["MAI"][typ]["NOD"].attrs["NBR"])
+    rows = nod.reshape(-1, n).T  # stored no-interlace: all first nodes, then all second nodes...
+    for row in rows:
+        print(" ".join(str(int(v)) for v in row))
+
+
 def write_mixed(path):
     # Two unit cubes side by side in x (HEXA20 + HEXA8 would need a conforming face: keep the
     # HEXA20 alone), a QUAD8 and a TRIA6 on its bottom face z=0, SEG3 edges. Node numbering
@@ -126,6 +140,8 @@ if __name__ == "__main__":
         dump(sys.argv[2])
     elif cmd == "field":
         field(sys.argv[2], sys.argv[3])
+    elif cmd == "rawconn":
+        rawconn(sys.argv[2], sys.argv[3])
     elif cmd == "write-mixed":
         write_mixed(sys.argv[2])
     else:
