@@ -84,6 +84,7 @@ inline std::vector<int> selectedNodes(const Mesh& mesh, const KeywordSet& occ, c
 inline SolverOptions solverOptions(const KeywordSet& kw, int info) {
     SolverOptions o;
     o.info = info;
+    o.conditionEstimate = info >= 2;  // MUMPS ICNTL(11)=1 costs a few extra solves: INFO=2 only
     const auto& occ = kw.factor("SOLVEUR");
     if (occ.empty()) return o;
     const KeywordSet& s = occ.front();
