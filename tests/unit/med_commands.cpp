@@ -259,3 +259,23 @@ TEST_F(MedCommands, BadInputGivesClearErrors) {
     gibi.setValues("FORMAT", {std::string("GIBI")});
     EXPECT_THROW(call("LIRE_MAILLAGE", gibi, "M"), NotImplemented);
 }
+
+TEST_F(MedCommands, FailedAppendLeavesTheFileAsItWas) {
+    auto a = lire(test::astest("ssnv511a.mmed"));
+    auto g = lire(test::astest("ssnv511g.mmed"));  // another mesh under the same name MAILLAG
+    auto print = [&](const std::shared_ptr<Mesh>& m) {
+        KeywordSet kw;
+        kw.setValues("UNITE", {83LL});
+        kw.addOccurrence("RESU").setValues("MAILLAGE", {ConceptPtr(m)});
+        call("IMPR_RESU", kw);
+    };
+    print(a);
+    const std::string path = dir + "/fort.83";
+    const auto before = mdumpBody(path);
+    EXPECT_EQ(errorOf([&] { print(g); }),
+              "the MED file already holds a mesh named 'MAILLAG' with 36 nodes, not the 72 nodes of the mesh to print");
+    EXPECT_EQ(mdumpBody(path), before);
+    size_t files = 0;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) files += e.path().filename().string().rfind("fort.83", 0) == 0;
+    EXPECT_EQ(files, 1u);  // no temporary file left
+}
