@@ -1,0 +1,122 @@
+// The engine's generic (enriched) path: a test Enrichment describes some elements with explicit
+// psi values and gives nodes Heaviside slots. With psi = 1 on slot 0 and psi = 0 on slot 1 the
+// generic kernel must reproduce the classical one exactly, the unused Heaviside dofs must be
+// neutralised (value 0), and the numbering must expose DX DY H1X H1Y.
+#include <gtest/gtest.h>
+
+#include "fe/DofNumbering.hpp"
+#include "fe/ElementKinematics.hpp"
+#include "fe/Enrichment.hpp"
+#include "fe/FieldSampling.hpp"
+#include "fe/MechanicalProblem.hpp"
+#include "fe_test_support.hpp"
+
+using namespace ma;
+using namespace fetest;
+
+namespace {
+
+class TestEnrichment : public Enrichment {
+public:
+    TestEnrichment(std::shared_ptr<const Mesh> mesh, std::vector<int> cells) : mesh_(std::move(mesh)), cells_(std::move(cells)) {
+        enrichedNode_.assign(mesh_->nodeCount(), 0);
+        for (int c : cells_)
+            for (int n : mesh_->cellNodes(c)) enrichedNode_[n] = 1;
+    }
+    int nodeSlots(int node) const override { return enrichedNode_[node] ? 2 : 1; }
+    bool isEnriched(int cell) const override { return std::find(cells_.begin(), cells_.end(), cell) != cells_.end(); }
+    void integration(int cell, ElementIntegration& out) const override {
+        classicalIntegration(*mesh_, cell, false, out);
+        out.maxSlots = 2;
+        out.slots.assign(out.nodeCount, 2);
+        out.psi.assign(out.refPoints.size() * out.nodeCount * 2, 0.0);
+        for (size_t p = 0; p < out.refPoints.size(); ++p)
+            for (int a = 0; a < out.nodeCount; ++a) out.psi[(p * out.nodeCount + a) * 2] = 1.0;  // slot 0: psi = 1
+    }
+
+private:
+    std::shared_ptr<const Mesh> mesh_;
+    std::vector<int> cells_;
+    std::vector<char> enrichedNode_;
+};
+
+}  // namespace
+
+TEST(FeEnrichment, GenericKernelMatchesClassicalAndUnusedSlotsAreNeutralised) {
+    msg().setEcho(false);
+    auto mesh = planeMesh(4, 4, false);
+    auto classical = affeModele(mesh, "D_PLAN", {"ALL", "RIGHT"});
+    auto enriched = std::make_shared<Model>(*classical);
+    enriched->name = "MODX";
+    const std::vector<int> cells{5, 6, 9};
+    enriched->enrichment = std::make_shared<TestEnrichment>(mesh, cells);
+
+    const DofNumbering numbering(*enriched);
+    EXPECT_EQ(numbering.componentNames(), (std::vector<std::string>{"DX", "DY", "H1X", "H1Y"}));
+    const int node = mesh->cellNodes(5)[0];
+    EXPECT_EQ(numbering.slots(node), 2);
+    EXPECT_EQ(numbering.dofOf(node, "H1Y"), numbering.first(node) + 3);
+    EXPECT_EQ(numbering.componentOf(numbering.dofOf(node, "H1X")), "H1X");
+    EXPECT_EQ(numbering.dofOf(0, "H1X"), -1);  // corner node: not enriched
+    EXPECT_THROW(numbering.dofOf(0, "FOO"), UserError);
+
+    std::shared_ptr<NodalField> u[2];
+    std::shared_ptr<GaussField> s[2];
+    int i = 0;
+    for (const auto& model : {classical, enriched}) {
+        auto mat = material(model, 2.0e5, 0.25);
+        KeywordSet kw;
+        set(kw, "MODELE", model);
+        auto& d = kw.addOccurrence("DDL_IMPO");
+        setTexts(d, "GROUP_MA", {"LEFT"});
+        auto constant = [](double v) {
+            return ConceptPtr(std::make_shared<LambdaFunction>([v](double, double, double) { return v; }));
+        };
+        set(d, "DX", constant(0.0)), set(d, "DY", constant(0.0));
+        set(d, "H1X", constant(5.0));  // skipped on the nodes that do not carry H1X
+        auto& p = kw.addOccurrence("PRES_REP");
+        setTexts(p, "GROUP_MA", {"RIGHT"});
+        set(p, "PRES", ConceptPtr(std::make_shared<LambdaFunction>([](double, double y, double) { return 10.0 * y; })));
+        auto& f = kw.addOccurrence("FORCE_INTERNE");
+        set(f, "TOUT", std::string("OUI"));
+        set(f, "FX", ConceptPtr(std::make_shared<LambdaFunction>([](double x, double, double) { return 3.0 + x; })));
+        set(f, "FY", constant(-2.0));
+        auto load = std::dynamic_pointer_cast<MechanicalLoad>(run("AFFE_CHAR_MECA_F", kw, "CHAR"));
+        MechanicalProblem problem(model, mat, {{load, nullptr}}, SolverOptions{});
+        ConvergenceOptions conv;
+        conv.resiGlobRela = 1e-12;
+        const auto report = problem.solveIncrement(0.0, conv);
+        EXPECT_TRUE(report.converged);
+        u[i] = problem.displacementField();
+        s[i] = problem.stressField();
+        ++i;
+    }
+    // Same standard displacements and stresses; Heaviside dofs present only on enriched nodes, 0.
+    const int hx = u[1]->componentIndex("H1X");
+    ASSERT_GE(hx, 0);
+    double scale = 0;
+    for (double v : u[0]->values) scale = std::max(scale, std::abs(v));
+    ASSERT_GT(scale, 0.0);
+    for (int n = 0; n < mesh->nodeCount(); ++n) {
+        for (int c = 0; c < 2; ++c) EXPECT_NEAR(u[0]->at(n, c), u[1]->at(n, c), 1e-12 * scale);
+        EXPECT_EQ(u[1]->has(n, hx), numbering.slots(n) == 2);
+        if (u[1]->has(n, hx)) {
+            EXPECT_EQ(u[1]->at(n, hx), 0.0);
+        }
+    }
+    ASSERT_EQ(s[0]->values.size(), s[1]->values.size());
+    double smax = 0;
+    for (double v : s[0]->values) smax = std::max(smax, std::abs(v));
+    for (size_t k = 0; k < s[0]->values.size(); ++k) EXPECT_NEAR(s[0]->values[k], s[1]->values[k], 1e-11 * smax);
+    // Displacement sampling at the elements' own points: both models agree, weights sum to 4.
+    const auto a = sampleDisplacement(*classical, *u[0], {});
+    const auto b = sampleDisplacement(*enriched, *u[1], {});
+    ASSERT_EQ(a.size(), b.size());
+    double area = 0;
+    for (size_t k = 0; k < a.size(); ++k) {
+        area += a[k].weight;
+        for (int c = 0; c < 2; ++c) EXPECT_NEAR(a[k].u[c], b[k].u[c], 1e-12 * scale);
+    }
+    EXPECT_NEAR(area, 4.0, 1e-12);
+    EXPECT_EQ(sampleDisplacement(*classical, *u[0], {5}).size(), 4u);
+}
