@@ -421,3 +421,47 @@ TEST(FeErrors, ClearMessages) {
         EXPECT_NE(std::string(e.what()).find("GROUP_MA=Q"), std::string::npos) << e.what();
     }
 }
+
+// Non-convergence is never silenced: NumericalError with ARRET='OUI', alarm and continue with
+// ARRET='NON' (here an unreachable RESI_GLOB_MAXI).
+TEST(FeStatNonLine, NonConvergenceStopsOrAlarms) {
+    msg().setEcho(false);
+    auto mesh = planeMesh(3, 3, false);
+    auto model = affeModele(mesh, "D_PLAN", {"ALL", "RIGHT"});
+    auto mat = material(model, E, NU);
+    KeywordSet kw;
+    set(kw, "MODELE", model);
+    auto& d = kw.addOccurrence("DDL_IMPO");
+    setTexts(d, "GROUP_MA", {"LEFT"});
+    set(d, "DX", 0.0), set(d, "DY", 0.0);
+    auto& p = kw.addOccurrence("PRES_REP");
+    setTexts(p, "GROUP_MA", {"RIGHT"});
+    set(p, "PRES", 1.0e3);
+    auto load = run("AFFE_CHAR_MECA", kw, "CHAR");
+    auto list = std::make_shared<RealList>();
+    list->values = {0.0, 1.0, 2.0};
+    for (const char* arret : {"OUI", "NON"}) {
+        KeywordSet s;
+        set(s, "MODELE", model);
+        set(s, "CHAM_MATER", mat);
+        set(s.addOccurrence("EXCIT"), "CHARGE", load);
+        set(s.addOccurrence("INCREMENT"), "LIST_INST", ConceptPtr(list));
+        auto& conv = s.addOccurrence("CONVERGENCE");
+        set(conv, "RESI_GLOB_MAXI", 1e-300);
+        set(conv, "ITER_GLOB_MAXI", 2LL);
+        set(conv, "ARRET", std::string(arret));
+        const int alarmsBefore = msg().alarmCount();
+        if (arret[0] == 'O') {
+            try {
+                run("STAT_NON_LINE", s, "RESNL");
+                ADD_FAILURE() << "non-convergence not reported";
+            } catch (const NumericalError& e) {
+                EXPECT_NE(std::string(e.what()).find("did not converge"), std::string::npos) << e.what();
+            }
+        } else {
+            auto res = std::dynamic_pointer_cast<Result>(run("STAT_NON_LINE", s, "RESNL"));
+            EXPECT_EQ(res->steps.size(), 3u);
+            EXPECT_EQ(msg().alarmCount(), alarmsBefore + 2);  // one per increment
+        }
+    }
+}
