@@ -279,3 +279,32 @@ TEST_F(MedCommands, FailedAppendLeavesTheFileAsItWas) {
     for (const auto& e : std::filesystem::directory_iterator(dir)) files += e.path().filename().string().rfind("fort.83", 0) == 0;
     EXPECT_EQ(files, 1u);  // no temporary file left
 }
+
+TEST_F(MedCommands, InstAndNomCmpSelectWhatIsPrinted) {
+    auto m = lire(test::astest("ssnv511c.mmed"));
+    auto res = makeResult(m, "U", 3);  // INST 0.5, 1.0, 1.5
+    KeywordSet kw;
+    auto& occ = kw.addOccurrence("RESU");
+    occ.setValues("RESULTAT", {ConceptPtr(res)});
+    occ.setValues("NOM_CHAM", {std::string("DEPL")});
+    occ.setValues("INST", {1.0});
+    occ.setValues("NOM_CMP", {std::string("DY"), std::string("DX")});
+    call("IMPR_RESU", kw);
+    const auto dump = test::runCommand("mdump4 '" + dir + "/fort.80' NODALE FULL_INTERLACE 0");
+    EXPECT_NE(dump.find("CHAMP |U_______DEPL| A L'ÉTAPE DE CALCUL (n°dt,n°it)=( 02, 02)"), std::string::npos) << dump;
+    EXPECT_EQ(dump.find("(n°dt,n°it)=( 01, 01)"), std::string::npos);
+    EXPECT_EQ(dump.find("(n°dt,n°it)=( 03, 03)"), std::string::npos);
+    EXPECT_NE(dump.find("Nom des composantes : |DY              DX              |"), std::string::npos) << dump;
+    auto values = test::probeField(dir + "/fort.80", "U_______DEPL");
+    const auto& depl = *res->steps[1].nodal("DEPL");
+    ASSERT_EQ(values.size(), size_t(m->nodeCount()));
+    for (int i = 0; i < m->nodeCount(); ++i) {
+        EXPECT_EQ(values[i][0], depl.at(i, 1));
+        EXPECT_EQ(values[i][1], depl.at(i, 0));
+    }
+    KeywordSet missing;
+    auto& bad = missing.addOccurrence("RESU");
+    bad.setValues("RESULTAT", {ConceptPtr(res)});
+    bad.setValues("NUME_ORDRE", {7LL});
+    EXPECT_EQ(errorOf([&] { call("IMPR_RESU", missing); }), "result U has no NUME_ORDRE 7");
+}
