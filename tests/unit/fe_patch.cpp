@@ -449,7 +449,7 @@ TEST(FeStatNonLine, NonConvergenceStopsOrAlarms) {
         auto& conv = s.addOccurrence("CONVERGENCE");
         set(conv, "RESI_GLOB_MAXI", 1e-300);
         set(conv, "ITER_GLOB_MAXI", 2LL);
-        set(conv, "ARRET", std::string(arret));
+        set(conv, "ARRET", arret[0] == 'O' ? std::string("OUI") : std::string("NON"));
         const int alarmsBefore = msg().alarmCount();
         if (arret[0] == 'O') {
             try {
