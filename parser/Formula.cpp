@@ -51,15 +51,16 @@ def evaluate_many(code, context, comm_globals, values, npar):
     return out, -1, ""
 )PY";
 
+// Leaked on purpose: a static py::object would be released after the interpreter is gone.
 py::module_& supportModule() {
-    static py::module_ module = [] {
-        py::module_ m = py::module_::import("types").attr("ModuleType")("_miniaster_formula");
-        py::dict ns = m.attr("__dict__");
+    static py::module_* module = [] {
+        auto* m = new py::module_(py::module_::import("types").attr("ModuleType")("_miniaster_formula"));
+        py::dict ns = m->attr("__dict__");
         ns["__builtins__"] = py::module_::import("builtins");
         py::exec(kFormulaSupport, ns);
         return m;
     }();
-    return module;
+    return *module;
 }
 
 bool isIdentifier(const std::string& s) { return py::str(s).attr("isidentifier")().cast<bool>(); }

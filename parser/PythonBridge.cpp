@@ -176,8 +176,8 @@ bool isDisabledForTests(const std::string& name) {
 }
 
 py::object& resultNameFunction() {
-    static py::object f;
-    return f;
+    static auto* f = new py::object();  // leaked: released after the interpreter otherwise
+    return *f;
 }
 
 // ------------------------------------------------------------------------------------------
@@ -262,8 +262,13 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
         // Echo in code_aster's style.
         ++run.commandCount;
         std::string extra;
-        for (auto [k, v] : context) extra += fmt::format("    {}={},\n", py::str(k).cast<std::string>(),
-                                                         py::repr(v).cast<std::string>());
+        for (auto [k, v] : context) {
+            // Functions by name (their repr holds an address, which would make logs differ run to run).
+            const std::string shown = py::hasattr(v, "__name__") && !py::isinstance<ConceptHandle>(v)
+                                          ? v.attr("__name__").cast<std::string>()
+                                          : py::repr(v).cast<std::string>();
+            extra += fmt::format("    {}={},\n", py::str(k).cast<std::string>(), shown);
+        }
         const std::string resultType = command->resultType(kw);
         msg().info(fmt::format("\n # {}\n # Command #{:04d} from {}, line {}{}\n{}\n", std::string(78, '-'),
                                run.commandCount, run.commBaseName, line,

@@ -22,7 +22,9 @@ std::vector<Keyword> filterKeywords(bool regexp) {
              {values(R("VALE")), values(I("VALE_I")), values(TXM("VALE_K")),
               unsupported("VALE_C", "complex values")},
              {unParmi({"VALE", "VALE_I", "VALE_K"})}),
-        bloc(when("CRIT_COMP", {"EQ", "NE"}), {critere(), R("PRECISION").def(1.0e-3)}),
+        // Tolerance of real equality: EQ/NE in CALC_TABLE, EQ only in TEST_TABLE (commands_spec §1.1, §3.3).
+        bloc(when("CRIT_COMP", regexp ? std::vector<std::string>{"EQ", "NE"} : std::vector<std::string>{"EQ"}),
+             {critere(), R("PRECISION").def(1.0e-3)}),
     };
     if (regexp) out.push_back(bloc(when("CRIT_COMP", {"REGEXP"}), {TXM("VALE_K").mandatory()}));
     return out;
