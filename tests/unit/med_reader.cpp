@@ -267,3 +267,28 @@ TEST(MedReader, BadInputIsAClearUserError) {
                   "' has no mesh of that name; meshes in the file: 'MAILLAGE'");
     std::filesystem::remove_all(dir);
 }
+
+TEST(MedReader, FirstMeshOrTheOneNamedByNomMed) {
+    const auto dir = test::scratchDir("med_two");
+    const auto path = dir + "/two.med";
+    auto a = med::readMesh(test::astest("ssnv511a.mmed"));
+    auto g = med::readMesh(test::astest("ssnv511g.mmed"));
+    {
+        med::MedWriter w(path, false);
+        w.writeMesh(*a, "PLAN");
+        w.writeMesh(*g, "VOLUME");
+        w.commit();
+    }
+    EXPECT_EQ(med::meshNames(path), (std::vector<std::string>{"PLAN", "VOLUME"}));
+    med::MeshReadReport rep;
+    auto first = med::readMesh(path, "", &rep);
+    EXPECT_EQ(rep.meshName, "PLAN");
+    EXPECT_EQ(first->nodeCount(), 36);
+    auto second = med::readMesh(path, "VOLUME", &rep);
+    EXPECT_EQ(rep.meshName, "VOLUME");
+    EXPECT_EQ(second->nodeCount(), 72);
+    EXPECT_EQ(second->connectivity, g->connectivity);
+    EXPECT_EQ(errorOf([&] { med::readMesh(path, "X"); }),
+              "NOM_MED='X': MED file '" + path + "' has no mesh of that name; meshes in the file: 'PLAN', 'VOLUME'");
+    std::filesystem::remove_all(dir);
+}
