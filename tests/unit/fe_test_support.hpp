@@ -23,7 +23,7 @@ using namespace ma;
 // A function of X, Y, Z given by a C++ lambda (stands for a FORMULE).
 class LambdaFunction : public Function {
 public:
-    explicit LambdaFunction(std::function<double(double, double, double)> f) : f_(std::move(f)) { name = "F"; }
+    explicit LambdaFunction(std::function<double(double, double, double)> f) : f_(std::move(f)) { name.push_back('F'); }
     std::string typeName() const override { return "formule"; }
     const std::vector<std::string>& parameters() const override { return params_; }
     double evaluate(std::span<const double> a) const override { return f_(a[0], a[1], a[2]); }
@@ -36,7 +36,7 @@ private:
 // A function of INST only (FONC_MULT).
 class TimeFunction : public Function {
 public:
-    explicit TimeFunction(std::function<double(double)> f) : f_(std::move(f)) { name = "RAMPE"; }
+    explicit TimeFunction(std::function<double(double)> f) : f_(std::move(f)) { name.append("RAMPE", 5); }
     std::string typeName() const override { return "formule"; }
     const std::vector<std::string>& parameters() const override { return params_; }
     double evaluate(std::span<const double> a) const override { return f_(a[0]); }
