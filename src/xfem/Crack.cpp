@@ -19,16 +19,22 @@ namespace {
 constexpr double kMachineEpsilon = DBL_EPSILON;  // code_aster's r8prem
 constexpr double kSnapTolerance = 1e-6;          // xajuls
 
-// Nodal average of the level-set gradient computed at the nodes of every volume cell (§1.3).
-std::vector<std::array<double, 3>> nodalGradient(const Mesh& mesh, const std::vector<double>& lsn) {
+// Nodal average of the level-set gradient computed at the nodes of every volume cell (§1.3), for
+// the nodes of the cut cells (the only ones the contact normals use); 0 elsewhere.
+std::vector<std::array<double, 3>> nodalGradient(const Mesh& mesh, const std::vector<double>& lsn,
+                                                 const std::vector<int>& cutCells) {
     const int dim = mesh.maxCellDimension();
     std::vector<std::array<double, 3>> grad(mesh.nodeCount(), {0, 0, 0});
     std::vector<int> count(mesh.nodeCount(), 0);
+    std::vector<char> wanted(mesh.nodeCount(), 0);
+    for (int c : cutCells)
+        for (int n : mesh.cellNodes(c)) wanted[n] = 1;
     std::array<double, 24> dN{};
     for (int c = 0; c < mesh.cellCount(); ++c) {
         const CellType type = mesh.cellTypes[c];
         if (cellDimension(type) != dim || dim < 2 || !hasShapeFunctions(type)) continue;
         const auto nodes = mesh.cellNodes(c);
+        if (std::none_of(nodes.begin(), nodes.end(), [&](int n) { return wanted[n] != 0; })) continue;
         const auto ref = referenceNodes(type);
         for (size_t a = 0; a < nodes.size(); ++a) {
             shapeDerivatives(type, ref[a], dN);
@@ -137,7 +143,6 @@ std::shared_ptr<Crack> buildCrack(const std::shared_ptr<const Mesh>& meshPtr, st
     crack->adjustedLevelSets = snapLevelSet(mesh, lsn);
     crack->lsn = std::move(lsn);
     const auto& ls = crack->lsn;
-    crack->lsnGradient = nodalGradient(mesh, ls);
     if (junction && !junction->masters.empty()) crack->masters = junctionMasters(mesh, *junction);
 
     // Cut cells (§1.4): some vertex has LSN * LSN(first vertex) <= 0.
@@ -154,6 +159,7 @@ std::shared_ptr<Crack> buildCrack(const std::shared_ptr<const Mesh>& meshPtr, st
     if (crack->cutCells.empty())
         throw UserError("DEFI_FISS/FONC_LN: the interface does not cut any cell of the mesh " + mesh.name +
                         " (it lies outside the structure); code_aster stops with XFEM_57");
+    crack->lsnGradient = nodalGradient(mesh, ls, crack->cutCells);
 
     // Node status (§1.5): min * max of LSN over the vertices of the cut cells around the node < 0.
     const int nn = mesh.nodeCount();

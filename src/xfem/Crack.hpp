@@ -28,7 +28,7 @@ public:
 
     std::shared_ptr<const Mesh> mesh;
     std::vector<double> lsn;                       // normal level set at every mesh node
-    std::vector<std::array<double, 3>> lsnGradient; // nodal average of the cell gradients (§1.3)
+    std::vector<std::array<double, 3>> lsnGradient; // nodal average of the cell gradients (§1.3), nodes of cut cells
     std::vector<int> cutCells;                     // MAFIS (§1.4), increasing
     std::vector<unsigned char> nodeStatus;         // STNO: 1 = Heaviside enriched (§1.5, §2.4)
     std::vector<int> heavisideCells;               // MAILFISS.HEAV (§1.6), increasing

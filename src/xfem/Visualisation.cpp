@@ -143,11 +143,11 @@ Visualisation buildVisualisation(const Model& model, const XfemModel& xm, const 
             }
             // Sub-cells are positive in the parent's reference coordinates; keep them positive in
             // physical ones (a parent with a negative Jacobian flips them).
-            if (cut->dim == vm.maxCellDimension() || cut->dim >= 2) {
-                std::vector<std::array<double, 3>> pv;
-                for (int id : nodes) pv.push_back(vm.coords[id]);
-                if (cut->dim == 2 && mesh.dim == 2 && simplexMeasure(2, pv) < 0) std::swap(nodes[0], nodes[1]);
-                if (cut->dim == 3 && simplexMeasure(3, pv) < 0) std::swap(nodes[0], nodes[1]);
+            if ((cut->dim == 2 && mesh.dim == 2) || cut->dim == 3) {
+                std::array<std::array<double, 3>, 4> pv{};
+                for (int v = 0; v < cut->vertexCount(); ++v) pv[v] = vm.coords[nodes[v]];
+                const auto span = std::span<const std::array<double, 3>>(pv.data(), cut->vertexCount());
+                if (simplexMeasure(cut->dim, span) < 0) std::swap(nodes[0], nodes[1]);
             }
             cellMap[c].push_back(vm.addCell(simplex, nodes, names.cellX + std::to_string(++cellCounter)));
             out.cells.push_back({-1, c, s});
