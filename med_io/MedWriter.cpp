@@ -315,8 +315,10 @@ bool MedWriter::writeMesh(const Mesh& mesh, const std::string& meshName) {
 
 void MedWriter::writeNodalField(const std::string& fieldName, const std::string& meshName,
                                 const NodalField& field, int numdt, int numit, double dt) {
-    const int nn = field.mesh ? field.mesh->nodeCount() : int(field.present.size() / std::max<size_t>(1, field.components.size()));
     const int nc = field.componentCount();
+    const int nn = field.mesh ? field.mesh->nodeCount() : 0;
+    if (!field.mesh || field.values.size() != size_t(nn) * size_t(nc) || field.present.size() != field.values.size())
+        throw UserError("field " + fieldName + " is inconsistent with its mesh (value array size); it cannot be printed");
     std::vector<int> comps;
     std::vector<med_int> nodes;
     std::vector<char> anyNode(size_t(nn), 0);
@@ -354,6 +356,11 @@ int MedWriter::writeGaussField(const std::string& fieldName, const std::string& 
     if (!field.mesh) throw UserError("field " + fieldName + " has no mesh");
     const Mesh& mesh = *field.mesh;
     const int nc = int(field.components.size());
+    const size_t npoints = field.pointWeights.size();
+    if (field.pointOffsets.size() != field.cells.size() + 1 || size_t(field.pointOffsets.back()) != npoints ||
+        field.pointRefCoords.size() != npoints || field.values.size() != npoints * size_t(nc))
+        throw UserError("field " + fieldName + " is incomplete (integration points without reference coordinates or "
+                        "values); it cannot be printed with its MED localisations");
     // Index of each cell among the cells of its type, as written by writeMesh.
     std::vector<int> rankInType(size_t(mesh.cellCount()));
     {
