@@ -4,7 +4,7 @@
 # rollers on two sides and pressure on the other two, solved by MECA_STATIQUE with MUMPS (or
 # the METHODE given). Prints the per-phase times of the engine and the peak memory of the run.
 #
-#   tools/bench_elasticity.sh [N] [METHODE] [BUILD_DIR]
+#   tools/bench_elasticity.sh [N] [METHODE] [BUILD_DIR] [RENUM]
 #
 # Results are recorded in docs/fe.md.
 set -euo pipefail
@@ -12,6 +12,7 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 n=${1:-710}
 method=${2:-MUMPS}
 build=${3:-$here/build}
+renum=${4:-AUTO}
 work=$(mktemp -d /tmp/bench_elasticity.XXXXXX)
 trap 'rm -rf "$work"' EXIT
 
@@ -25,10 +26,10 @@ ACIER = DEFI_MATERIAU(ELAS=_F(E=100.0E6, NU=0.3))
 CM = AFFE_MATERIAU(MAILLAGE=MA, AFFE=_F(TOUT='OUI', MATER=ACIER))
 CH = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=(_F(GROUP_MA='LG', DX=0.0), _F(GROUP_MA='LB', DY=0.0)),
                     PRES_REP=_F(GROUP_MA=('LD', 'LH'), PRES=1.0E6))
-RES = MECA_STATIQUE(MODELE=MO, CHAM_MATER=CM, EXCIT=_F(CHARGE=CH), SOLVEUR=_F(METHODE='$method'))
+RES = MECA_STATIQUE(MODELE=MO, CHAM_MATER=CM, EXCIT=_F(CHARGE=CH), SOLVEUR=_F(METHODE='$method'$([ "$method" = MUMPS ] && echo ", RENUM='$renum'")))
 FIN()
 COMM
-echo "N = $n, $((2 * (n + 1) * (n + 1))) dofs, METHODE = $method"
+echo "N = $n, $((2 * (n + 1) * (n + 1))) dofs, METHODE = $method, RENUM = $renum"
 /usr/bin/time -v "$build/miniaster" run "$work/bench.comm" --mesh "$work/square.med" --out-dir "$work/out" \
     > "$work/log.txt" 2> "$work/time.txt" || { tail -40 "$work/log.txt"; exit 1; }
 grep -E "model MO|matrix pattern|stiffness assembled|MUMPS|Eigen|Newton iteration|MECA_STATIQUE:|LIRE_MAILLAGE  |TOTAL" "$work/log.txt"
