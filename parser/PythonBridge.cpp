@@ -115,6 +115,17 @@ for _name in _miniaster.command_names():
     setattr(builtins, _name, _make_command(_name))
 builtins._F = _F
 
+# Files written for code_aster ≥ 14 may start with `from code_aster.Commands import *`.
+import types as _types
+_code_aster = _types.ModuleType("code_aster")
+_code_aster.Commands = _types.ModuleType("code_aster.Commands")
+for _name in _miniaster.command_names():
+    setattr(_code_aster.Commands, _name, getattr(builtins, _name))
+_code_aster.Commands._F = _F
+_code_aster.Commands.__all__ = list(_miniaster.command_names()) + ["_F"]
+sys.modules["code_aster"] = _code_aster
+sys.modules["code_aster.Commands"] = _code_aster.Commands
+
 _STORE = {"STORE_NAME", "STORE_GLOBAL", "STORE_FAST", "STORE_DEREF"}
 _LOAD = {"LOAD_NAME", "LOAD_GLOBAL", "LOAD_FAST", "LOAD_DEREF"}
 _instructions = {}

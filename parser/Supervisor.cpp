@@ -302,9 +302,15 @@ int supervisorMain(int argc, char** argv) {
     msg().info(fmt::format("\n{}\n--- DIAGNOSTIC JOB : {}\n{}", rule, diagnostic, rule));
 
     try {
+        // On an error the result file is not written: its TEST lines would be incomplete. A result
+        // file of an earlier run of the same case is removed, so that it cannot be taken for this one.
+        if (!run.failure && !opt.checkOnly) {
+            writeFileAtomically(outputs.resu, msg().resuText());
+        } else if (run.failure && fs::is_regular_file(outputs.resu)) {
+            fs::remove(outputs.resu);
+            msg().info("  (removed the result file of an earlier run: " + outputs.resu + ")");
+        }
         writeFileAtomically(outputs.mess, msg().messText());
-        // On an error the result file is not written: its TEST lines would be incomplete.
-        if (!run.failure && !opt.checkOnly) writeFileAtomically(outputs.resu, msg().resuText());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "miniaster: cannot write the outputs: %s\n", e.what());
         return 1;

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace ma::test {
 
 struct RunResult {
@@ -35,7 +37,7 @@ struct RunResult {
 inline std::filesystem::path freshDir() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     auto dir = std::filesystem::temp_directory_path() / "miniaster-parser-tests" /
-               (std::string(info->test_suite_name()) + "." + info->name());
+               (std::string(info->test_suite_name()) + "." + info->name() + "." + std::to_string(getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;

@@ -108,3 +108,21 @@ TEST(ParserSupervisor, BadCommandLine) {
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.output.find("miniaster: unknown option --frobnicate"), std::string::npos) << r.output;
 }
+
+TEST(ParserSupervisor, CodeAsterCommandsModule) {
+    auto r = runComm("from code_aster.Commands import *\nDEBUT()\nL = DEFI_LIST_REEL(VALE=(0., 1.))\nFIN()\n");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("--- DIAGNOSTIC JOB : OK"), std::string::npos);
+}
+
+TEST(ParserSupervisor, ErrorRemovesTheResultOfAnEarlierRun) {
+    auto dir = freshDir();
+    writeText(dir / "t.comm", "DEBUT()\nFIN()\n");
+    auto first = runMiniaster(dir, "t.comm");
+    ASSERT_EQ(first.status, 0) << first.output;
+    ASSERT_TRUE(first.exists("out/t.resu"));
+    writeText(dir / "t.comm", "DEBUT()\nx = 1/0\n");
+    auto second = runMiniaster(dir, "t.comm");
+    expectError(second, "<F> <ERROR> (t.comm, line 2): error in the Python code of the command file: ZeroDivisionError: "
+                        "division by zero");
+}
