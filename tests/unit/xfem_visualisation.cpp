@@ -140,6 +140,26 @@ TEST(XfemVisualisation, Ssnv511aMeshAndLips) {
             step.order = 1;
             step.inst = 0.0;
             step.nodalFields.emplace_back("DEPL", rigidBlocks(*xm));
+            // SIEF_ELGA: value = 10 * parent cell + sub-cell + 0.1 * point on X-FEM elements (the mean
+            // per sub-cell is then known), 7 on classical ones.
+            auto sief = std::make_shared<GaussField>();
+            sief->mesh = mesh;
+            sief->components = {"SIXX"};
+            ElementIntegration ei;
+            for (const auto& el : model->elements) {
+                sief->cells.push_back(el.cell);
+                const int np = xm->isEnriched(el.cell) ? (xm->integration(el.cell, ei), int(ei.refPoints.size())) : 4;
+                for (int p = 0; p < np; ++p) {
+                    const bool x = xm->isEnriched(el.cell);
+                    sief->pointCoords.push_back({0, 0, 0});
+                    sief->pointWeights.push_back(1.0);
+                    sief->pointSubcell.push_back(x ? ei.pointSubcell[p] : 0);
+                    sief->pointRefCoords.push_back({0, 0, 0});
+                    sief->values.push_back(x ? 10.0 * el.cell + ei.pointSubcell[p] + 0.1 * (p % 4) : 7.0);
+                }
+                sief->pointOffsets.push_back(int(sief->pointWeights.size()));
+            }
+            step.gaussFields.emplace_back("SIEF_ELGA", sief);
             res.steps.push_back(step);
             auto visuModel = std::make_shared<Model>(xfemtest::model(v.mesh));
             auto out = visualisationResult(res, visuModel);
@@ -153,6 +173,21 @@ TEST(XfemVisualisation, Ssnv511aMeshAndLips) {
                                                            : kDx[subcellBlock(*xm, info.parentCell, info.subcell)];
                 EXPECT_NEAR(depl->at(id, 0), expected, 1e-14) << vm.nodeNames[id];
                 EXPECT_NEAR(depl->at(id, 1), 0.0, 1e-14);
+            }
+            const auto sOut = out->steps[0].gauss("SIEF_ELGA");
+            ASSERT_TRUE(sOut);
+            EXPECT_EQ(sOut->cells.size(), size_t(vm.cellCount()));
+            for (size_t e = 0; e < sOut->cells.size(); ++e) {
+                const auto& info = v.cells[sOut->cells[e]];
+                for (int p = sOut->pointOffsets[e]; p < sOut->pointOffsets[e + 1]; ++p) {
+                    if (info.original >= 0) {
+                        EXPECT_EQ(sOut->values[p], 7.0);
+                    } else {
+                        // FPG4 (multi) and FPG12 (mono) rules: 0.1 * mean(p % 4) = 0.15 either way.
+                        EXPECT_NEAR(sOut->values[p], 10.0 * info.parentCell + info.subcell + 0.15, 1e-12);
+                        EXPECT_GT(sOut->pointWeights[p], 0.0);
+                    }
+                }
             }
             // Zones of ssnv511 (xfem_spec §8.8): NP with x > 0.02 are on the upper lip, right half.
             for (int id : crack)
