@@ -396,3 +396,52 @@ TEST(ParserCatalog, EveryCommandIsAcceptedBySyntaxCheck) {
     // The run never pretends: the commands were validated, not executed.
     EXPECT_NE(r.output.find("syntax checked; not executed (--check-syntax)"), std::string::npos);
 }
+
+// A command file in the syntax of the 2011-2012 versions of ssnv511 (commands_spec §9, old-only
+// keywords) passes the syntax check.
+TEST(ParserCatalog, LegacySsnv511SyntaxIsAccepted) {
+    auto r = runComm(R"(
+DEBUT(CODE=_F(NOM='SSNV511E', NIV_PUB_WEB='INTERNET'), PAR_LOT='NON')
+PRE_GIBI()
+MAILLAG = LIRE_MAILLAGE(INFO=1)
+MODELEIN = AFFE_MODELE(MAILLAGE=MAILLAG, AFFE=_F(GROUP_MA=('SURF', 'LH', 'LD'), PHENOMENE='MECANIQUE',
+                                                 MODELISATION='D_PLAN'))
+LN1 = FORMULE(VALE='Y', NOM_PARA=('X', 'Y'))
+FISS1 = DEFI_FISS_XFEM(MODELE=MODELEIN, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN1), INFO=1)
+MODELEK = MODI_MODELE_XFEM(MODELE_IN=MODELEIN, FISSURE=FISS1, CONTACT='P1P1', INFO=1)
+CTXFEM = DEFI_CONTACT(MODELE=MODELEK, FORMULATION='XFEM', ITER_CONT_MAXI=10, NB_ITER_GEOM=1,
+                      ZONE=_F(FISS_MAIT=FISS1, INTEGRATION='GAUSS', CONTACT_INIT='OUI', ALGO_LAGR='VERSION2',
+                              COEF_ECHELLE=1.0, GLISSIERE='NON'))
+ACIER = DEFI_MATERIAU(ELAS=_F(E=100.0E6, NU=0.3, RHO=7800.0))
+CHAMPMAT = AFFE_MATERIAU(MAILLAGE=MAILLAG, MODELE=MODELEK, AFFE=_F(TOUT='OUI', MATER=ACIER))
+CH1 = AFFE_CHAR_MECA(MODELE=MODELEK, LIAISON_XFEM='OUI', DDL_IMPO=_F(GROUP_MA='LB', DY=0, H1Y=0), INFO=1)
+CH2 = AFFE_CHAR_MECA(MODELE=MODELEK, CONTACT_XFEM=CTXFEM)
+VAR1 = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0))
+L_INST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, NOMBRE=1))
+UTOT1 = STAT_NON_LINE(MODELE=MODELEK, CHAM_MATER=CHAMPMAT, CONTACT=CTXFEM,
+                      EXCIT=(_F(CHARGE=CH1, FONC_MULT=VAR1), _F(CHARGE=CH2)),
+                      COMP_ELAS=_F(RELATION='ELAS', GROUP_MA='SURF'),
+                      INCREMENT=_F(LIST_INST=L_INST),
+                      CONVERGENCE=_F(ITER_GLOB_MAXI=20, RESI_GLOB_MAXI=1e-6, ARRET='NON'),
+                      SOLVEUR=_F(METHODE='MUMPS', PCENT_PIVOT=250, NPREC=-1), INFO=1)
+MA_XFEM = POST_MAIL_XFEM(MODELE=MODELEK)
+MOD_VISU = AFFE_MODELE(MAILLAGE=MA_XFEM, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='D_PLAN'))
+RES_XFEM = POST_CHAM_XFEM(MODELE_VISU=MOD_VISU, RESULTAT=UTOT1)
+DEP = POST_RELEVE_T(ACTION=_F(INTITULE='DEPLE', GROUP_NO=('NFISSU',), RESULTAT=RES_XFEM, NOM_CHAM='DEPL',
+                              TOUT_CMP='OUI', OPERATION='EXTRACTION'))
+vale = [0, -0.25, -0.5, 0.75, 1]
+preci = 1e-13
+for i in [1, 2]:
+    TEST_TABLE(TABLE=DEP, NOM_PARA='DX', TYPE_TEST='MIN', VALE=vale[i], CRITERE='RELATIF', PRECISION=preci,
+               REFERENCE='ANALYTIQUE')
+    TEST_TABLE(TABLE=DEP, NOM_PARA='DY', TYPE_TEST='MAX', VALE_CALC=0., VALE_REFE=vale[0], TOLE_MACHINE=2e-4,
+               PRECISION=preci, CRITERE='ABSOLU', REFERENCE='ANALYTIQUE')
+TEST_TABLE(TABLE=DEP, NOM_PARA='DX', TYPE_TEST='MAX', VALE=1.0, REFERENCE='NON_REGRESSION', VERSION='10.3')
+FIN()
+)",
+                     "--check-syntax");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(r.output.find("<F>"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("CONTACT='STANDARD'"), std::string::npos);  // 'P1P1' read as the current value
+    EXPECT_NE(r.output.find("PRE_GIBI is a no-op in miniaster"), std::string::npos);
+}
