@@ -89,14 +89,14 @@ struct MechanicalProblem::Constraints {
 };
 
 MechanicalProblem::MechanicalProblem(std::shared_ptr<const Model> model, std::shared_ptr<const MaterialField> material,
-                                     std::vector<LoadCase> loads, SolverOptions solver)
+                                     std::vector<LoadCase> loads, SolverOptions solver, const ExtraUnknowns& extra)
     : model_(std::move(model)), material_(std::move(material)), loads_(std::move(loads)), solverOptions_(std::move(solver)) {
     const auto t0 = std::chrono::steady_clock::now();
     const Mesh& mesh = *model_->mesh;
     for (const auto& lc : loads_)
         if (lc.load->model && lc.load->model.get() != model_.get() && lc.load->model->mesh != model_->mesh)
             throw UserError("load " + lc.load->name + " is defined on another mesh than the model " + model_->name);
-    numbering_ = std::make_unique<DofNumbering>(*model_);
+    numbering_ = std::make_unique<DofNumbering>(*model_, extra);
     u.assign(numbering_->size(), 0.0);
     attached_.assign(numbering_->size(), 0);
     // Check materials and mark the dofs each element really uses.
@@ -140,6 +140,11 @@ MechanicalProblem::MechanicalProblem(std::shared_ptr<const Model> model, std::sh
 }
 
 MechanicalProblem::~MechanicalProblem() = default;
+
+void MechanicalProblem::setAdditionalTerms(std::shared_ptr<const AdditionalTerms> terms) {
+    additional_ = std::move(terms);
+    constraints_.reset();  // the pattern changes: rebuilt at the next increment
+}
 
 double MechanicalProblem::loadFactor(const LoadCase& lc, double inst) const {
     if (!lc.multiplier) return 1.0;
@@ -253,11 +258,23 @@ void MechanicalProblem::buildPattern() {
         for (size_t m = 0; m < c.multi.size(); ++m)
             for (const auto& [d, coef] : c.multi[m].terms) dofMultipliers[d].push_back(c.freeCount + int(m));
     }
+    // Couplings of the additional terms, by dof (free dofs only, as equations).
+    std::vector<std::vector<int>> extraColumns;
+    if (additional_) {
+        std::vector<std::pair<int, int>> pairs;
+        additional_->couplings(pairs);
+        if (!pairs.empty()) extraColumns.resize(numbering_->size());
+        for (const auto& [i, j] : pairs) {
+            if (c.eq[i] < 0 || c.eq[j] < 0) continue;
+            extraColumns[i].push_back(c.eq[j]);
+            extraColumns[j].push_back(c.eq[i]);
+        }
+    }
     matrix_ = CsrMatrix{};
     matrix_.rows = nEq;
     matrix_.rowStart.assign(nEq + 1, 0);
     std::vector<int> marker(nNodes, -1), neighbours;
-    std::vector<int> columns;
+    std::vector<int> columns, rowColumns;
     // Two passes over the nodes: count, then fill (rows of a node are contiguous in eq order).
     for (int pass = 0; pass < 2; ++pass) {
         std::fill(marker.begin(), marker.end(), -1);
@@ -285,6 +302,17 @@ void MechanicalProblem::buildPattern() {
                 const int row = c.eq[d];
                 if (row < 0) continue;
                 const size_t extra = dofMultipliers.empty() ? 0 : dofMultipliers[d].size();
+                if (!extraColumns.empty() && !extraColumns[d].empty()) {
+                    // Rare rows (contact): merged with the element columns, sorted, unique.
+                    rowColumns.assign(columns.begin(), columns.end());
+                    rowColumns.insert(rowColumns.end(), extraColumns[d].begin(), extraColumns[d].end());
+                    if (extra) rowColumns.insert(rowColumns.end(), dofMultipliers[d].begin(), dofMultipliers[d].end());
+                    std::sort(rowColumns.begin(), rowColumns.end());
+                    rowColumns.erase(std::unique(rowColumns.begin(), rowColumns.end()), rowColumns.end());
+                    if (pass == 0) matrix_.rowStart[row + 1] = static_cast<long long>(rowColumns.size());
+                    else std::copy(rowColumns.begin(), rowColumns.end(), matrix_.cols.begin() + matrix_.rowStart[row]);
+                    continue;
+                }
                 if (pass == 0) {
                     matrix_.rowStart[row + 1] = static_cast<long long>(columns.size() + extra);
                 } else {
@@ -408,6 +436,15 @@ void MechanicalProblem::assembleMatrix() {
             }
         }
     }
+    if (additional_)
+        additional_->tangent(u, [&](int i, int j, double v) {
+            const int row = c.eq[i], col = c.eq[j];
+            if (row < 0 || col < 0) return;
+            const long long k = matrix_.find(row, col);
+            if (k < 0)
+                throw std::logic_error(fmt::format("additional term ({}, {}) outside the declared couplings", i, j));
+            matrix_.values[k] += v;
+        });
     // Multiplier scaling: the mean stiffness diagonal, so that the constraint rows are of the same
     // magnitude as the stiffness rows.
     double sum = 0.0;
@@ -424,6 +461,7 @@ void MechanicalProblem::assembleMatrix() {
         }
     }
     factorised_ = false;
+    matrixValid_ = true;
     const double cpu = threadCpuSeconds() - cpu0;
     msg().infof("    stiffness assembled: {} elements, {:.3f} s (cpu {:.3f} s, {:.3f} us per dof){}", model_->elements.size(),
                 seconds(t0), cpu, 1e6 * cpu / std::max(1, numbering_->size()),
@@ -566,6 +604,8 @@ IncrementReport MechanicalProblem::solveIncrement(double inst, const Convergence
         buildPattern();
         assembleMatrix();
         lambda_.assign(c.multi.size(), 0.0);
+    } else if (!matrixValid_) {
+        assembleMatrix();
     }
     const int ndof = numbering_->size();
     for (int d = 0; d < ndof; ++d)
@@ -579,6 +619,7 @@ IncrementReport MechanicalProblem::solveIncrement(double inst, const Convergence
         for (int d = 0; d < ndof; ++d) R[d] = fint[d] - fext[d];
         for (size_t m = 0; m < c.multi.size(); ++m)
             for (const auto& [d, coef] : c.multi[m].terms) R[d] += alpha_ * coef * lambda_[m];
+        if (additional_) additional_->residual(u, R);
     };
     std::vector<double> R;
     for (int it = 0; it <= options.maxIterations; ++it) {

@@ -9,6 +9,7 @@
 //     [ alpha*C    0     ] [dlam]    [ alpha*(C*u - v)                     ]
 // (symmetric indefinite, MUMPS SYM=2). Enriched dofs that no element uses (psi = 0 at every
 // point, xfem_spec §3.9) are set to 0 and eliminated.
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -37,6 +38,20 @@ struct ConvergenceOptions {
     bool stopOnFailure = true;    // ARRET='OUI'
 };
 
+// Terms another engine adds to the problem (contact: multipliers and their couplings). All
+// indices are dofs of numbering(); the extra unknowns themselves come from ExtraUnknowns.
+class AdditionalTerms {
+public:
+    virtual ~AdditionalTerms() = default;
+    // Dof pairs (i, j) that may carry matrix entries besides the element couplings (the pattern
+    // is made symmetric). Asked when the pattern is built.
+    virtual void couplings(std::vector<std::pair<int, int>>& pairs) const = 0;
+    // Tangent contributions at state u: add(i, j, value) (both triangles explicitly).
+    virtual void tangent(const std::vector<double>& u, const std::function<void(int, int, double)>& add) const = 0;
+    // Contribution to the residual R = F_int - F_ext + ... at state u.
+    virtual void residual(const std::vector<double>& u, std::vector<double>& R) const = 0;
+};
+
 struct IncrementReport {
     int iterations = 0;
     double maxResidual = 0.0;       // max_i |R_i| (RESI_GLOB_MAXI)
@@ -47,8 +62,13 @@ struct IncrementReport {
 class MechanicalProblem {
 public:
     MechanicalProblem(std::shared_ptr<const Model> model, std::shared_ptr<const MaterialField> material,
-                      std::vector<LoadCase> loads, SolverOptions solver);
+                      std::vector<LoadCase> loads, SolverOptions solver, const ExtraUnknowns& extra = {});
     ~MechanicalProblem();
+
+    // Extension for other engines (contact): their terms join the matrix and the residual.
+    // After a change of what `tangent` returns (new active set), call invalidateMatrix().
+    void setAdditionalTerms(std::shared_ptr<const AdditionalTerms> terms);
+    void invalidateMatrix() { matrixValid_ = false; }
 
     const DofNumbering& numbering() const { return *numbering_; }
     const Model& model() const { return *model_; }
@@ -86,6 +106,8 @@ private:
     CsrMatrix matrix_;
     std::unique_ptr<LinearSolver> solver_;
     bool factorised_ = false;
+    bool matrixValid_ = false;
+    std::shared_ptr<const AdditionalTerms> additional_;
     double alpha_ = 1.0;
 };
 

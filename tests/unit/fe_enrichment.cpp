@@ -120,3 +120,77 @@ TEST(FeEnrichment, GenericKernelMatchesClassicalAndUnusedSlotsAreNeutralised) {
     EXPECT_NEAR(area, 4.0, 1e-12);
     EXPECT_EQ(sampleDisplacement(*classical, *u[0], {5}).size(), 4u);
 }
+
+namespace {
+// A grounded spring k on one dof, and a spring of stiffness k between two dofs.
+class Springs : public AdditionalTerms {
+public:
+    Springs(int ground, int a, int b, double k) : ground_(ground), a_(a), b_(b), k_(k) {}
+    void couplings(std::vector<std::pair<int, int>>& pairs) const override {
+        pairs.emplace_back(ground_, ground_);
+        pairs.emplace_back(a_, b_);
+    }
+    void tangent(const std::vector<double>&, const std::function<void(int, int, double)>& add) const override {
+        add(ground_, ground_, k_);
+        add(a_, a_, k_), add(b_, b_, k_), add(a_, b_, -k_), add(b_, a_, -k_);
+    }
+    void residual(const std::vector<double>& u, std::vector<double>& R) const override {
+        R[ground_] += k_ * u[ground_];
+        R[a_] += k_ * (u[a_] - u[b_]);
+        R[b_] -= k_ * (u[a_] - u[b_]);
+    }
+
+private:
+    int ground_, a_, b_;
+    double k_;
+};
+}  // namespace
+
+// Terms of another engine (AdditionalTerms): a grounded spring k holds a plate under a vertical
+// volume force f (area 4): by equilibrium it carries 4f, so the solution equals the one with
+// DY = 4f/k imposed at that node. A spring between two nodes that share no element (outside the
+// element pattern) joins the pattern, the matrix and the residual.
+TEST(FeAdditionalTerms, SpringsJoinMatrixAndResidual) {
+    msg().setEcho(false);
+    auto mesh = planeMesh(3, 3, false);
+    auto model = affeModele(mesh, "D_PLAN", {"ALL", "RIGHT"});
+    auto mat = material(model, 2.0e5, 0.3);
+    const int corner = mesh->nodeGroups.get("CORNER")[0];
+    auto makeLoad = [&](bool pin) {
+        KeywordSet kw;
+        set(kw, "MODELE", model);
+        auto& d = kw.addOccurrence("DDL_IMPO");
+        setTexts(d, "GROUP_MA", {"LEFT"});
+        set(d, "DX", 0.0);
+        if (pin) {
+            auto& c = kw.addOccurrence("DDL_IMPO");
+            setTexts(c, "GROUP_NO", {"CORNER"});
+            set(c, "DY", 4.0 * 50.0 / 1.0e4);
+        }
+        auto& f = kw.addOccurrence("FORCE_INTERNE");
+        set(f, "TOUT", std::string("OUI"));
+        set(f, "FY", 50.0);
+        auto& p = kw.addOccurrence("PRES_REP");
+        setTexts(p, "GROUP_MA", {"RIGHT"});
+        set(p, "PRES", -30.0);
+        return std::dynamic_pointer_cast<MechanicalLoad>(run("AFFE_CHAR_MECA", kw, "CHAR"));
+    };
+    MechanicalProblem pinned(model, mat, {{makeLoad(true), nullptr}}, SolverOptions{});
+    MechanicalProblem sprung(model, mat, {{makeLoad(false), nullptr}}, SolverOptions{});
+    const int dy = sprung.numbering().dof(corner, 0, 1);
+    // The second spring links the two ends of the right side (no common element), horizontally.
+    // Both problems get it; in the pinned one the grounded spring sits on an imposed dof.
+    const auto& right = mesh->cellGroups.get("RIGHT");
+    const int n1 = mesh->cellNodes(right.front())[0], n2 = mesh->cellNodes(right.back())[1];
+    auto springs = std::make_shared<Springs>(dy, sprung.numbering().dof(n1, 0, 0), sprung.numbering().dof(n2, 0, 0), 1.0e4);
+    sprung.setAdditionalTerms(springs);
+    pinned.setAdditionalTerms(springs);
+    pinned.solveIncrement(0.0, ConvergenceOptions{});
+    ConvergenceOptions conv;
+    conv.resiGlobRela = 1e-12;
+    EXPECT_TRUE(sprung.solveIncrement(0.0, conv).converged);
+    double scale = 0;
+    for (double v : pinned.u) scale = std::max(scale, std::abs(v));
+    ASSERT_GT(scale, 0.0);
+    for (size_t i = 0; i < pinned.u.size(); ++i) EXPECT_NEAR(pinned.u[i], sprung.u[i], 1e-11 * scale) << i;
+}
