@@ -13,7 +13,7 @@ foreach(_export ${_cases})
 endforeach()
 
 # Originals (read in place from ../shared/astest, never copied). Added as their issues land.
-set(MINIASTER_ORIGINALS "" CACHE INTERNAL "")
+set(MINIASTER_ORIGINALS ssnv511a ssnv511b ssnv511c ssnv511d CACHE INTERNAL "")
 foreach(_name ${MINIASTER_ORIGINALS})
   add_test(NAME original.${_name}
            COMMAND ${_run} $<TARGET_FILE:miniaster-bin> ${CMAKE_SOURCE_DIR}/../shared/astest/${_name}.export
