@@ -622,6 +622,7 @@ IncrementReport MechanicalProblem::solveIncrement(double inst, const Convergence
         if (additional_) additional_->residual(u, R);
     };
     std::vector<double> R;
+    bool zeroLoadNoted = false;
     for (int it = 0; it <= options.maxIterations; ++it) {
         residual(R);
         for (int d = 0; d < ndof; ++d)
@@ -668,6 +669,20 @@ IncrementReport MechanicalProblem::solveIncrement(double inst, const Convergence
             throw NumericalError(fmt::format("the residual is not finite at INST {} (iteration {})", inst, it));
         report.iterations = it + 1;
         report.maxResidual = maxR;
+        // Loads and reactions that are round-off compared with the elastic forces of the current
+        // displacement (imposed rigid motions, zero load): the relative criterion then uses that
+        // force scale (mean stiffness diagonal x largest displacement) instead of noise.
+        double umax = 0.0;
+        for (double v : u) umax = std::max(umax, std::abs(v));
+        const double forceScale = alpha_ * umax;
+        if (denominator <= 1e-12 * forceScale) {
+            if (!zeroLoadNoted)
+                msg().infof("    loads and reactions are negligible (max {:.3e} vs elastic force scale {:.3e}): "
+                            "RESI_GLOB_RELA is taken relative to the force scale",
+                            denominator, forceScale);
+            zeroLoadNoted = true;
+            denominator = forceScale;
+        }
         report.relativeResidual = denominator > 0.0 ? maxR / denominator : maxR;
         const bool okMaxi = options.resiGlobMaxi < 0.0 || maxR <= options.resiGlobMaxi;
         const bool okRela = options.resiGlobRela < 0.0 || report.relativeResidual <= options.resiGlobRela;
