@@ -310,7 +310,11 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
             const CommandFunction* fn = CommandRegistry::instance().find(name);
             if (isDisabledForTests(name)) fn = nullptr;
             if (!fn) throw NotImplemented(name + " is not implemented yet in miniaster");
-            result = (*fn)(kw, ctx);
+            {
+                // Commands run without the GIL: they may use threads; formulas re-acquire it.
+                py::gil_scoped_release noGil;
+                result = (*fn)(kw, ctx);
+            }
             if (!result && !resultType.empty())
                 throw UserError(fmt::format("internal error: {} returned no {}", name, resultType));
             if (result && !resultType.empty() && result->typeName() != resultType)
