@@ -132,7 +132,18 @@ void executeCommandFile(RunState& run) {
     py::module_ builtins = py::module_::import("builtins");
     py::object code;
     try {
-        code = builtins.attr("compile")(py::bytes(source), run.commFile, "exec", 0, true);
+        try {
+            code = builtins.attr("compile")(py::bytes(source), run.commFile, "exec", 0, true);
+        } catch (py::error_already_set& e) {
+            // Files of the Python 2 era may hold latin-1 comments without a coding declaration.
+            const std::string what = e.what();
+            if (!e.matches(PyExc_SyntaxError) ||
+                (what.find("UTF-8") == std::string::npos && what.find("utf-8") == std::string::npos))
+                throw;
+            py::object text = py::bytes(source).attr("decode")("latin-1");
+            code = builtins.attr("compile")(text, run.commFile, "exec", 0, true);
+            msg().alarm("SUPERVIS_3", "The command file is not UTF-8: it was read as latin-1.");
+        }
     } catch (py::error_already_set& e) {
         int line = 0;
         std::string text;
@@ -173,6 +184,17 @@ void executeCommandFile(RunState& run) {
             const std::string name = value.attr("name").cast<std::string>();
             bool upper = !name.empty();
             for (char c : name) upper = upper && (std::isupper(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '_');
+            // A call of an unknown name in capitals: an unknown command (not an undefined variable).
+            std::string lineText;
+            if (line > 0) {
+                std::istringstream lines(source);
+                for (int k = 0; k < line && std::getline(lines, lineText); ++k) {
+                }
+            }
+            const auto call = lineText.find(name);
+            upper = upper && call != std::string::npos &&
+                    lineText.find_first_not_of(" \t", call + name.size()) != std::string::npos &&
+                    lineText[lineText.find_first_not_of(" \t", call + name.size())] == '(';
             if (upper) {
                 run.fail("ERROR", name, line, "unknown command " + name + " (not a code_aster command known to miniaster)");
                 return;

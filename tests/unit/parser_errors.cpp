@@ -13,6 +13,12 @@ TEST(ParserErrors, UnknownCommand) {
     expectError(r, "<F> <ERROR> FOO_BAR (t.comm, line 2): unknown command FOO_BAR (not a code_aster command known to miniaster)");
 }
 
+TEST(ParserErrors, UndefinedVariableInCapitals) {
+    auto r = runComm("DEBUT()\nL = DEFI_LIST_REEL(VALE=(0., EMAX))\n");
+    expectError(r, "<F> <ERROR> (t.comm, line 2): error in the Python code of the command file: NameError: name 'EMAX' "
+                   "is not defined");
+}
+
 TEST(ParserErrors, CodeAsterCommandNotSupported) {
     auto r = runComm("DEBUT()\nA = CALC_CHAMP(RESULTAT=None)\nFIN()\n");
     expectError(r, "<F> <ERROR> CALC_CHAMP (t.comm, line 2): command CALC_CHAMP is not supported by miniaster");

@@ -126,3 +126,9 @@ TEST(ParserSupervisor, ErrorRemovesTheResultOfAnEarlierRun) {
     expectError(second, "<F> <ERROR> (t.comm, line 2): error in the Python code of the command file: ZeroDivisionError: "
                         "division by zero");
 }
+
+TEST(ParserSupervisor, Latin1CommandFileIsRead) {
+    auto r = runComm("DEBUT()\n# d\xe9placement impos\xe9\nL = DEFI_LIST_REEL(VALE=(0., 1.), TITRE='d\xe9" "but')\nFIN()\n");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("<A> <SUPERVIS_3>"), std::string::npos) << r.output;
+}
