@@ -248,6 +248,11 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
                                             reused->name, resultName));
         }
 
+        if (!reused && command->reentrant == cata::Reuse::Mandatory)
+            throw UserError(fmt::format("{0} modifies its input in place: reuse= is mandatory (write X = {0}(reuse=X, "
+                                        "...) with the object it modifies)",
+                                        name));
+
         // Python arguments -> checked keyword tree. FORMULE keeps its extra keywords as Python objects.
         CallArguments callArgs;
         py::dict context;
@@ -321,7 +326,8 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
                 throw UserError(fmt::format("internal error: {} returned a concept of type {}, the catalog says {}",
                                             name, result->typeName(), resultType));
         }
-        if (result && !resultName.empty()) result->name = resultName;
+        // A new object takes the variable's name; an existing one keeps its name unless reused.
+        if (result && !resultName.empty() && (result->name.empty() || result == reused)) result->name = resultName;
 
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         run.recordTiming(name, seconds);

@@ -73,6 +73,11 @@ M2 = DEFI_GROUP(reuse=M, MAILLAGE=M, CREA_GROUP_NO=_F(GROUP_MA='A'))
     expectError(mismatch, "<F> <ERROR> DEFI_GROUP (t.comm, line 6): reuse=M but the result is assigned to M2: a "
                           "reentrant command modifies the object given by reuse=, assign the result to it");
 
+    auto noReuse = runComm("DEBUT()\nM = LIRE_MAILLAGE()\nM2 = DEFI_GROUP(MAILLAGE=M, CREA_GROUP_NO=_F(GROUP_MA='A'))\n",
+                           "--check-syntax");
+    expectError(noReuse, "<F> <ERROR> DEFI_GROUP (t.comm, line 3): DEFI_GROUP modifies its input in place: reuse= is "
+                         "mandatory (write X = DEFI_GROUP(reuse=X, ...) with the object it modifies)");
+
     auto good = runComm("DEBUT()\nM = LIRE_MAILLAGE()\nM = DEFI_GROUP(reuse=M, MAILLAGE=M, "
                         "CREA_GROUP_NO=_F(GROUP_MA='A'))\nFIN()\n",
                         "--check-syntax");
