@@ -89,7 +89,8 @@ ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
         }
         if (o.has("PAS_ARCH")) {
             const long long pas = o.integer("PAS_ARCH");
-            for (size_t i = 0; i < list.size(); ++i) archive[i] = (i - first) % pas == 0;
+            if (pas <= 0) throw UserError(o.pathOf("PAS_ARCH") + " must be positive");
+            for (size_t i = first; i < list.size(); ++i) archive[i] = (i - first) % static_cast<size_t>(pas) == 0;
         }
         archive[last] = 1;  // the last computed step is always archived
     }
