@@ -33,6 +33,9 @@ public:
     bool finSeen = false;
     bool missingDebutReported = false;
     int commandCount = 0;
+    // The command being executed, for the crash report (see installCrashHandler).
+    char runningCommand[64] = {};
+    int runningLine = 0;
     std::optional<RunFailure> failure;
     std::vector<CommandTiming> timings;  // in order of first call
 
@@ -44,6 +47,11 @@ public:
 
 // Peak resident memory of the process in kB: max of getrusage ru_maxrss and /proc VmHWM.
 long peakMemoryKb();
+
+// On a fatal signal (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT) write, best effort, the message log
+// so far plus an <F>_ABNORMAL_ABORT diagnostic naming the running command to `messPath`, then die
+// with the signal. No result file is written.
+void installCrashHandler(const std::string& messPath);
 
 // Installs the `_miniaster` module, the builtins (every catalogued command, _F...) and the
 // stdout/stderr redirection into the message log. Needs a running interpreter.

@@ -283,6 +283,7 @@ int supervisorMain(int argc, char** argv) {
                     outputs.resu, opt.checkOnly ? "\n  mode        : syntax check only (--check-syntax)" : "");
         // The interpreter lives until the process ends: concepts may hold Python objects (FORMULE).
         py::initialize_interpreter();
+        installCrashHandler(outputs.mess);  // after Python, which installs its own handlers
         try {
             installPythonBuiltins();
             executeCommandFile(run);

@@ -137,3 +137,13 @@ TEST(ParserSupervisor, Latin1CommandFileIsRead) {
     EXPECT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("<A> <SUPERVIS_3>"), std::string::npos) << r.output;
 }
+
+TEST(ParserSupervisor, CrashLeavesADiagnosisAndNoResult) {
+    auto r = runComm("DEBUT()\nimport ctypes\nctypes.string_at(0)\nFIN()\n");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.output.find("--- DIAGNOSTIC JOB : <F>_ABNORMAL_ABORT"), std::string::npos) << r.output;
+    EXPECT_NE(r.file("out/t.mess").find("<F> <ABNORMAL_ABORT> (t.comm): the process received signal 11"),
+              std::string::npos)
+        << r.file("out/t.mess");
+    EXPECT_FALSE(r.exists("out/t.resu"));
+}
