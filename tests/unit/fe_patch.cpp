@@ -465,3 +465,50 @@ TEST(FeStatNonLine, NonConvergenceStopsOrAlarms) {
         }
     }
 }
+
+// MECA_STATIQUE with LIST_INST cut by INST_FIN and a FONC_MULT: one order per instant, each a
+// linear solve scaled by the multiplier; CREA_CHAMP refuses a missing order.
+TEST(FeMecaStatique, ListInstAndFoncMult) {
+    msg().setEcho(false);
+    auto mesh = planeMesh(2, 2, false);
+    auto model = affeModele(mesh, "C_PLAN", {"ALL", "RIGHT"});
+    auto mat = material(model, E, NU);
+    KeywordSet kw;
+    set(kw, "MODELE", model);
+    auto& d = kw.addOccurrence("DDL_IMPO");
+    setTexts(d, "GROUP_MA", {"LEFT"});
+    set(d, "DX", 0.0);
+    auto& c = kw.addOccurrence("DDL_IMPO");
+    setTexts(c, "GROUP_NO", {"CORNER"});
+    set(c, "DY", 0.0);
+    auto& p = kw.addOccurrence("PRES_REP");
+    setTexts(p, "GROUP_MA", {"RIGHT"});
+    set(p, "PRES", -100.0);
+    auto load = run("AFFE_CHAR_MECA", kw, "CHAR");
+    auto list = std::make_shared<RealList>();
+    list->values = {0.0, 0.5, 1.0, 2.0};
+    KeywordSet s;
+    set(s, "MODELE", model);
+    set(s, "CHAM_MATER", mat);
+    auto& ex = s.addOccurrence("EXCIT");
+    set(ex, "CHARGE", load);
+    set(ex, "FONC_MULT", ConceptPtr(std::make_shared<TimeFunction>([](double t) { return 3.0 * t; })));
+    set(s, "LIST_INST", ConceptPtr(list));
+    set(s, "INST_FIN", 1.0);
+    auto res = std::dynamic_pointer_cast<Result>(run("MECA_STATIQUE", s, "RESU"));
+    ASSERT_EQ(res->steps.size(), 3u);
+    const double strain = 3.0 * 100.0 / E;  // sigma_xx = 3 t * 100 at t = 1
+    const int right = mesh->cellNodes(mesh->cellGroups.get("RIGHT").front())[0];
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(res->steps[k].order, k + 1);
+        const auto u = res->steps[k].nodal("DEPL");
+        EXPECT_NEAR(u->at(right, 0), 2.0 * strain * list->values[k], 1e-14);
+    }
+    KeywordSet bad;
+    set(bad, "OPERATION", std::string("EXTR"));
+    set(bad, "TYPE_CHAM", std::string("NOEU_DEPL_R"));
+    set(bad, "RESULTAT", res);
+    set(bad, "NOM_CHAM", std::string("DEPL"));
+    set(bad, "NUME_ORDRE", 7LL);
+    EXPECT_THROW(run("CREA_CHAMP", bad, "CH"), UserError);
+}
