@@ -93,6 +93,20 @@ CallValue toCallValue(py::handle h) {
     return v;
 }
 
+bool isInput(const CallValue& v, const ConceptPtr& c) {
+    if (v.kind == CallValue::Kind::Concept) return v.object == c;
+    for (const auto& item : v.items)
+        if (isInput(item, c)) return true;
+    for (const auto& [k, item] : v.dict)
+        if (isInput(item, c)) return true;
+    return false;
+}
+bool isInput(const CallArguments& args, const ConceptPtr& c) {
+    for (const auto& [k, v] : args)
+        if (isInput(v, c)) return true;
+    return false;
+}
+
 py::object wrap(const ConceptPtr& c) {
     if (!c) return py::none();
     return py::cast(ConceptHandle{c});
@@ -332,8 +346,9 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
                 throw UserError(fmt::format("internal error: {} returned a concept of type {}, the catalog says {}",
                                             name, result->typeName(), resultType));
         }
-        // A new object takes the variable's name; an existing one keeps its name unless reused.
-        if (result && !resultName.empty() && (result->name.empty() || result == reused)) result->name = resultName;
+        // The result takes the variable's name, unless it is one of the call's input objects returned
+        // as is (it keeps its name; with reuse= the names are the same).
+        if (result && !resultName.empty() && (result == reused || !isInput(callArgs, result))) result->name = resultName;
 
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         run.runningCommand[0] = '\0';

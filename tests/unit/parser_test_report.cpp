@@ -38,7 +38,11 @@ private:
     std::string type_;
 };
 ma::CommandFunction standIn(const std::string& type) {
-    return [type](const ma::KeywordSet&, ma::CommandContext&) { return std::make_shared<StandIn>(type); };
+    return [type](const ma::KeywordSet&, ma::CommandContext&) {
+        auto c = std::make_shared<StandIn>(type);
+        c->name = "NAME_IN_FILE";  // e.g. a MED mesh name: replaced by the variable's name
+        return c;
+    };
 }
 }  // namespace
 
@@ -80,6 +84,8 @@ FIN()
     EXPECT_NE(mess.find("  non-regression checks            2        1      0\n"), std::string::npos) << mess;
     EXPECT_NE(mess.find("    NOOK NON_REGRESSION   check NOOK\n"), std::string::npos) << mess;
     EXPECT_NE(mess.find("--- DIAGNOSTIC JOB : NOOK_TEST_RESU\n"), std::string::npos) << mess;
+    EXPECT_NE(mess.find("    MAILLAGE=M,\n"), std::string::npos) << mess;
+    EXPECT_NE(mess.find("    TABLE=T,\n"), std::string::npos) << mess;
     const auto resu = ma::test::RunResult{0, "", dir}.file("out/t.resu");
     EXPECT_EQ(resu, " OK  first\nNOOK NOOK\n OK  last\n");
 }
