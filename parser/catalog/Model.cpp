@@ -18,9 +18,15 @@ void addModelCommands(Catalog& c) {
                  .notSupported({"AXIS", "DKT", "DST", "COQUE_3D", "POU_D_E", "POU_D_T", "BARRE", "DIS_T", "DIS_TR",
                                 "3D_SI", "D_PLAN_SI", "C_PLAN_SI", "AXIS_SI", "PLAN_ELDI", "3D_INCO_UP"}),
          }).rules({unParmi({"TOUT", "GROUP_MA", "MAILLE"})}),
-         yesNo("VERI_JACOBIEN").def("OUI"), info()},
-        unsupported({"DISTRIBUTION", "PARTITION", "GRANDEUR_CARA", "AFFE_SOUS_STRUC", "VERI_NORM_IFS"},
-                    "parallel distribution and sub-structures are not modelled"),
+         yesNo("VERI_JACOBIEN").def("OUI"),
+         // Accepted without effect: miniaster is sequential, every distribution gives the same model.
+         fact("DISTRIBUTION").keywords({TXM("METHODE").into({"CENTRALISE", "SOUS_DOMAINE", "MAIL_CONTIGU",
+                                                             "MAIL_DISPERSE", "GROUP_ELEM", "SOUS_DOM.OLD"}),
+                                        I("NB_SOUS_DOMAINE"), TXM("PARTITIONNEUR"), I("CHARGE_PROC0_MA"),
+                                        I("CHARGE_PROC0_SD")}),
+         info()},
+        unsupported({"PARTITION", "GRANDEUR_CARA", "AFFE_SOUS_STRUC", "VERI_NORM_IFS"},
+                    "sub-structures and characteristic sizes are not modelled"),
     })));
 
     c.add(cmd("DEFI_MATERIAU", kMaterial)
