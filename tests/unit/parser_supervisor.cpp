@@ -147,3 +147,17 @@ TEST(ParserSupervisor, CrashLeavesADiagnosisAndNoResult) {
         << r.file("out/t.mess");
     EXPECT_FALSE(r.exists("out/t.resu"));
 }
+
+TEST(ParserSupervisor, ExportUnitsReachTheCommands) {
+    // D 20 is what LIRE_MAILLAGE reads, R 80 is where IMPR_RESU writes (relative to --out-dir).
+    auto dir = freshDir();
+    const std::string mesh = std::string(MINIASTER_SHARED_DIR) + "/astest/ssnv511a.mmed";
+    writeText(dir / "u.comm", "DEBUT()\nMA = LIRE_MAILLAGE(FORMAT='MED')\nIMPR_RESU(FORMAT='MED', UNITE=80, "
+                              "RESU=_F(MAILLAGE=MA))\nFIN()\n");
+    writeText(dir / "u.export", "F comm u.comm D 1\nF mmed " + mesh + " D 20\nF rmed u.rmed R 80\n");
+    auto r = runMiniaster(dir, "u.export");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_TRUE(r.exists("out/u.rmed")) << r.output;
+    EXPECT_TRUE(r.exists("out/u.mess"));
+    EXPECT_TRUE(r.exists("out/u.resu"));
+}
