@@ -3,14 +3,15 @@
 // RESI_GLOB_RELA / ITER_GLOB_MAXI / ARRET. Order 0 is the initial state (zero displacement at the
 // first instant); one step per later instant up to INST_FIN; ARCHIVAGE selects the stored steps.
 //
-// The contact engine will wrap MechanicalProblem::solveIncrement in its active-set loop; until it
-// lands, CONTACT is refused.
+// CONTACT (DEFI_CONTACT, FORMULATION='XFEM'): each increment runs the contact loop of
+// src/contact (statuses frozen during a Newton solve, then updated; docs/contact.md).
 #include <fmt/format.h>
 
 #include <chrono>
 #include <cmath>
 
 #include "commands/MechanicsKeywords.hpp"
+#include "contact/ContactLoop.hpp"
 #include "core/Messages.hpp"
 #include "fe/MechanicalProblem.hpp"
 #include "fields/Fields.hpp"
@@ -24,8 +25,6 @@ bool near(double a, double b, double precision) { return std::abs(a - b) <= prec
 ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
     const auto t0 = std::chrono::steady_clock::now();
     if (ctx.reused) throw NotImplemented("STAT_NON_LINE with reuse= (continuation) is not supported by miniaster");
-    if (kw.has("CONTACT"))
-        throw NotImplemented("STAT_NON_LINE/CONTACT: contact is not available in miniaster yet");
     for (const auto& occ : kw.factor("COMPORTEMENT")) {
         if (occ.text("RELATION", "ELAS") != "ELAS")
             throw NotImplemented(occ.pathOf("RELATION") + "='" + occ.text("RELATION") + "': only ELAS is supported");
@@ -99,6 +98,14 @@ ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
     };
 
     MechanicalProblem problem(model, material, mechanics::loadCases(kw), mechanics::solverOptions(kw, ctx.info));
+    std::shared_ptr<contact::ContactTerms> contactTerms;
+    if (kw.has("CONTACT")) {
+        auto definition = kw.object<contact::ContactDefinition>("CONTACT");
+        if (definition->model->enrichment != model->enrichment)
+            throw UserError(fmt::format("{}: {} was defined on model {}, not on MODELE {}", kw.pathOf("CONTACT"),
+                                        definition->name, definition->model->name, model->name));
+        contactTerms = contact::attachContact(problem, *material, definition);
+    }
     auto result = std::make_shared<Result>("evol_noli");
     result->mesh = model->mesh;
     result->model = model;
@@ -115,7 +122,16 @@ ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
     store(list[first]);  // initial state: u = 0, sigma = 0
     int totalIterations = 0;
     for (size_t i = first + 1; i <= last; ++i) {
-        const auto report = problem.solveIncrement(list[i], conv);
+        IncrementReport report;
+        if (contactTerms) {
+            const auto cr = contact::solveIncrementWithContact(problem, *contactTerms, list[i], conv);
+            report = cr.lastNewton;
+            report.iterations = cr.newtonIterations;
+            msg().infof("    increment {} (INST {}): {} contact iteration(s), {} active contact points of {}", i - first,
+                        list[i], cr.contactIterations, cr.last.active, cr.last.points);
+        } else {
+            report = problem.solveIncrement(list[i], conv);
+        }
         totalIterations += report.iterations;
         msg().infof("    increment {} (INST {}): {} Newton iteration(s), RESI_GLOB_RELA {:.3e}, RESI_GLOB_MAXI {:.3e}",
                     i - first, list[i], report.iterations, report.relativeResidual, report.maxResidual);

@@ -1,0 +1,114 @@
+// DEFI_CONTACT with FORMULATION='XFEM' (xfem_spec §5.1): frictionless contact on the interfaces of
+// an X-FEM model, one zone per interface (FISS_MAIT). What miniaster computes is described in
+// docs/contact.md; keywords that only tune code_aster's own algorithm (augmented Lagrangian
+// coefficient, multiplier space, nodal integration, geometric loop) are accepted and logged as
+// ignored.
+#include <fmt/format.h>
+
+#include <set>
+
+#include "contact/ContactDefinition.hpp"
+#include "core/Error.hpp"
+#include "core/Messages.hpp"
+#include "fe/Model.hpp"
+#include "parser/CommandRegistry.hpp"
+#include "xfem/Crack.hpp"
+#include "xfem/XfemModel.hpp"
+
+namespace ma {
+namespace {
+
+using contact::ContactAlgorithm;
+
+ConceptPtr defiContact(const KeywordSet& kw, CommandContext& ctx) {
+    (void)ctx;
+    const std::string formulation = kw.text("FORMULATION", "DISCRETE");
+    if (formulation != "XFEM")
+        throw NotImplemented(kw.pathOf("FORMULATION") + "='" + formulation +
+                             "' is not supported by miniaster (only FORMULATION='XFEM')");
+    if (kw.text("FROTTEMENT", "SANS") != "SANS")
+        throw NotImplemented(kw.pathOf("FROTTEMENT") + "='" + kw.text("FROTTEMENT") +
+                             "': friction is not supported by miniaster (frictionless contact only)");
+    auto model = kw.object<Model>("MODELE");
+    auto xm = std::dynamic_pointer_cast<const xfem::XfemModel>(model->enrichment);
+    if (!xm)
+        throw UserError(fmt::format("{}: {} is not an X-FEM model; FORMULATION='XFEM' needs the model made by "
+                                    "MODI_MODELE_XFEM(..., CONTACT='STANDARD')",
+                                    kw.pathOf("MODELE"), model->name));
+    if (xm->contact() != xfem::XfemContact::Standard)
+        throw UserError(fmt::format("{}: the X-FEM model {} was made without contact; use "
+                                    "MODI_MODELE_XFEM(..., CONTACT='STANDARD') (code_aster XFEM2_9)",
+                                    kw.pathOf("MODELE"), model->name));
+
+    auto def = std::make_shared<contact::ContactDefinition>();
+    def->model = model;
+    def->maxContactIterations = static_cast<int>(kw.integer("ITER_CONT_MAXI", 30));
+
+    std::vector<std::string> ignored;
+    auto ignore = [&](const KeywordSet& set, const std::string& key, const std::string& why) {
+        if (set.has(key)) ignored.push_back(fmt::format("{} ({})", set.pathOf(key), why));
+    };
+    ignore(kw, "ITER_CONT_TYPE", "the contact loop stops when no status changes");
+    ignore(kw, "ELIM_ARETE", "Nitsche/penalty contact has no multiplier space to restrict");
+    if (kw.has("REAC_GEOM") && kw.text("REAC_GEOM") != "SANS")
+        ignored.push_back(kw.pathOf("REAC_GEOM") + "='" + kw.text("REAC_GEOM") +
+                          "' (small displacements: the facets are never updated, as with 'SANS')");
+    ignore(kw, "NB_ITER_GEOM", "no geometric loop");
+    ignore(kw, "ITER_GEOM_MAXI", "no geometric loop");
+    ignore(kw, "RESI_GEOM", "no geometric loop");
+    ignore(kw, "STOP_INTERP", "no interpenetration control loop");
+
+    const auto& cracks = xm->cracks();
+    std::set<int> seen;
+    for (const auto& z : kw.factor("ZONE")) {
+        contact::ContactZone zone;
+        zone.crack = z.object<xfem::Crack>("FISS_MAIT");
+        for (size_t i = 0; i < cracks.size(); ++i)
+            if (cracks[i] == zone.crack) zone.crackIndex = static_cast<int>(i);
+        if (zone.crackIndex < 0)
+            throw UserError(fmt::format("{}: interface {} is not one of the interfaces of model {}", z.pathOf("FISS_MAIT"),
+                                        zone.crack->name, model->name));
+        if (!seen.insert(zone.crackIndex).second)
+            throw UserError(fmt::format("{}: interface {} already has a contact zone", z.pathOf("FISS_MAIT"),
+                                        zone.crack->name));
+        const std::string algo = z.text("ALGO_CONT", "STANDARD");
+        if (algo == "PENALISATION") {
+            zone.algorithm = ContactAlgorithm::Penalty;
+            zone.penalty = z.real("COEF_PENA_CONT");
+            if (!(zone.penalty > 0.0))
+                throw UserError(fmt::format("{} = {}: the penalty coefficient must be positive", z.pathOf("COEF_PENA_CONT"),
+                                            zone.penalty));
+        } else if (algo != "STANDARD") {
+            throw NotImplemented(z.pathOf("ALGO_CONT") + "='" + algo + "' is not supported by miniaster");
+        }
+        zone.initiallyActive = z.text("CONTACT_INIT", "NON") == "OUI";
+        zone.bilateral = z.text("GLISSIERE", "NON") == "OUI";
+        ignore(z, "INTEGRATION", "contact is integrated with Gauss points on the facets");
+        ignore(z, "ORDRE_INT", "contact is integrated with Gauss points on the facets");
+        ignore(z, "COEF_CONT", "augmented Lagrangian coefficient; miniaster uses Nitsche");
+        ignore(z, "ALGO_LAGR", "multiplier space of code_aster; Nitsche has none");
+        ignore(z, "COEF_ECHELLE", "scaling of code_aster's contact equations");
+        ignore(z, "TOLE_PROJ_EXT", "no projection: facets come from the sub-cells");
+        def->zones.push_back(std::move(zone));
+    }
+    for (size_t i = 0; i < cracks.size(); ++i)
+        if (!seen.count(static_cast<int>(i)))
+            msg().infof("    interface {} has no contact zone: its lips are free (no contact condition)", cracks[i]->name);
+    for (const auto& z : def->zones)
+        msg().infof("    contact zone on {}: {}, CONTACT_INIT={}, GLISSIERE={}", z.crack->name,
+                    z.algorithm == ContactAlgorithm::Nitsche
+                        ? fmt::format("ALGO_CONT='STANDARD' (Nitsche, gamma = {} E / h, theta = {})",
+                                      def->nitsche.gammaZero, def->nitsche.theta)
+                        : fmt::format("ALGO_CONT='PENALISATION' (penalty, COEF_PENA_CONT = {:.6e})", z.penalty),
+                    z.initiallyActive ? "OUI" : "NON", z.bilateral ? "OUI" : "NON");
+    msg().infof("    ITER_CONT_MAXI = {}", def->maxContactIterations);
+    if (!ignored.empty())
+        msg().infof("    DEFI_CONTACT keywords accepted but ignored by miniaster (code_aster algorithm settings):\n      {}",
+                    fmt::join(ignored, "\n      "));
+    return def;
+}
+
+MA_REGISTER_COMMAND("DEFI_CONTACT", defiContact);
+
+}  // namespace
+}  // namespace ma

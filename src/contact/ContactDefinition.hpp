@@ -1,0 +1,54 @@
+#pragma once
+// The contact concept (char_contact) made by DEFI_CONTACT with FORMULATION='XFEM': one zone per
+// interface (FISS_MAIT) with its algorithm, and the parameters of the contact loop of
+// STAT_NON_LINE (docs/contact.md).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/Concept.hpp"
+#include "fe/Model.hpp"
+
+namespace ma::xfem {
+class Crack;
+class XfemModel;
+}  // namespace ma::xfem
+
+namespace ma::contact {
+
+enum class ContactAlgorithm {
+    Nitsche,  // ALGO_CONT='STANDARD': consistent (exact when the exact solution is discrete)
+    Penalty   // ALGO_CONT='PENALISATION': sigma_n = COEF_PENA_CONT * min(gap, 0)
+};
+
+struct ContactZone {
+    std::shared_ptr<const xfem::Crack> crack;  // FISS_MAIT
+    int crackIndex = -1;                        // index in the X-FEM model's crack list
+    ContactAlgorithm algorithm = ContactAlgorithm::Nitsche;
+    double penalty = 0.0;        // COEF_PENA_CONT
+    bool initiallyActive = false;  // CONTACT_INIT='OUI'
+    bool bilateral = false;        // GLISSIERE='OUI': a point that has been in contact stays active
+};
+
+// Nitsche parameters (docs/contact.md): gamma = gammaZero * E * |facets| / |adjacent blocks|,
+// theta = 1 (symmetric).
+struct NitscheParameters {
+    double gammaZero = 100.0;
+    double theta = 1.0;
+};
+
+class ContactDefinition : public Concept {
+public:
+    std::string typeName() const override { return "char_contact"; }
+
+    std::shared_ptr<const Model> model;  // the X-FEM model (MODI_MODELE_XFEM, CONTACT='STANDARD')
+    std::vector<ContactZone> zones;
+    int maxContactIterations = 30;  // ITER_CONT_MAXI
+    NitscheParameters nitsche;
+
+    const xfem::XfemModel& xfemModel() const;
+    // Zone of a crack of the X-FEM model, or -1.
+    int zoneOfCrack(int crackIndex) const;
+};
+
+}  // namespace ma::contact

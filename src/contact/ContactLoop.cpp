@@ -1,0 +1,76 @@
+#include "contact/ContactLoop.hpp"
+
+#include <fmt/format.h>
+
+#include "core/Error.hpp"
+#include "core/Messages.hpp"
+#include "xfem/Crack.hpp"
+#include "xfem/XfemModel.hpp"
+
+namespace ma::contact {
+
+std::shared_ptr<ContactTerms> attachContact(MechanicalProblem& problem, const MaterialField& material,
+                                            std::shared_ptr<const ContactDefinition> definition) {
+    if (definition->model.get() != &problem.model() && definition->model->enrichment != problem.model().enrichment)
+        throw UserError(fmt::format("CONTACT: {} was defined on model {}, STAT_NON_LINE runs on model {}",
+                                    definition->name, definition->model->name, problem.model().name));
+    const auto& xm = definition->xfemModel();
+    std::vector<char> withContact(xm.cracks().size(), 0);
+    for (const auto& z : definition->zones) withContact[z.crackIndex] = 1;
+    FacetStatistics stats;
+    auto facets = buildContactFacets(xm, withContact, &stats);
+    for (const auto& z : definition->zones) {
+        int count = 0;
+        double measure = 0.0;
+        for (const auto& f : facets)
+            if (f.crack == z.crackIndex) ++count, measure += f.measure;
+        if (count == 0)
+            throw UserError(fmt::format("DEFI_CONTACT zone on {}: the interface has no contact facet in the model "
+                                        "(it cuts no element of the model)",
+                                        z.crack->name));
+        msg().infof("    contact zone {}: {} facets, interface {} {:.6g} ({})", z.crack->name, count,
+                    xm.dim() == 2 ? "length" : "area", measure,
+                    z.algorithm == ContactAlgorithm::Nitsche ? "Nitsche" : fmt::format("penalty {:.3e}", z.penalty));
+    }
+    msg().infof("    contact facets: {} ({} touching a junction, {} between two parent cells)", stats.facets,
+                stats.atJunction, stats.acrossParentFaces);
+    auto terms = std::make_shared<ContactTerms>(problem, material, std::move(definition), std::move(facets));
+    terms->initialiseStatus();
+    problem.setAdditionalTerms(terms);
+    return terms;
+}
+
+ContactIncrementReport solveIncrementWithContact(MechanicalProblem& problem, ContactTerms& terms, double inst,
+                                                 const ConvergenceOptions& options) {
+    ContactIncrementReport out;
+    const int maxIter = terms.definition().maxContactIterations;
+    for (int it = 1; it <= maxIter; ++it) {
+        const auto before = terms.inspect(problem.u);
+        msg().infof("    INST {:g} contact iteration {}: {} active contact points of {}", inst, it, before.active,
+                    before.points);
+        const auto report = problem.solveIncrement(inst, options);
+        out.newtonIterations += report.iterations;
+        out.lastNewton = report;
+        const StatusReport st = terms.updateStatus(problem.u);
+        out.contactIterations = it;
+        out.last = st;
+        msg().infof("    INST {:g} contact iteration {}: {} status change(s), {} active, largest penetration {:.6e}, "
+                    "contact residual {:.6e}, largest contact pressure {:.6e}",
+                    inst, it, st.changed, st.active, st.maxPenetration, st.contactResidual, st.maxPressure);
+        if (st.changed == 0) {
+            bool penalty = false;
+            for (const auto& z : terms.definition().zones) penalty = penalty || z.algorithm == ContactAlgorithm::Penalty;
+            if (penalty)
+                msg().infof("    penalised contact (PENALISATION): largest interpenetration {:.6e} at convergence "
+                            "(error of the method ~ pressure / COEF_PENA_CONT)",
+                            st.maxPenetration);
+            return out;
+        }
+        problem.invalidateMatrix();
+    }
+    throw NumericalError(fmt::format("contact did not converge at INST {} in {} contact iterations (ITER_CONT_MAXI): "
+                                     "{} status change(s) at the last one, {} active points, contact residual {:.3e}",
+                                     inst, maxIter, out.last.changed, out.last.active, out.last.contactResidual));
+}
+
+}  // namespace ma::contact

@@ -1,0 +1,250 @@
+#include "contact/ContactTerms.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/Error.hpp"
+#include "fe/ElementKinematics.hpp"
+#include "fe/Material.hpp"
+#include "fe/Quadrature.hpp"
+#include "fe/ShapeFunctions.hpp"
+#include "xfem/XfemModel.hpp"
+
+namespace ma::contact {
+
+namespace {
+
+using Vec = std::array<double, 3>;
+
+// Facet rule: degree 5 on segments, degree 4 on triangles (products of the shape functions of
+// bilinear/trilinear parents along the facet).
+const QuadratureRule& facetRule(int dim) {
+    return dim == 2 ? quadratureRule(CellType::SEG2, "FPG3") : quadratureRule(CellType::TRIA3, "FPG6");
+}
+
+// Weights of a point of the reference facet on its vertices (SEG2 on [-1,1], TRIA3 unit triangle).
+std::array<double, 3> facetBarycentric(int dim, const Vec& xi) {
+    if (dim == 2) return {0.5 * (1.0 - xi[0]), 0.5 * (1.0 + xi[0]), 0.0};
+    return {1.0 - xi[0] - xi[1], xi[0], xi[1]};
+}
+
+}  // namespace
+
+ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField& material,
+                           std::shared_ptr<const ContactDefinition> definition,
+                           std::vector<ContactFacet> facets)
+    : definition_(std::move(definition)), facets_(std::move(facets)) {
+    const Model& model = problem.model();
+    const Mesh& mesh = *model.mesh;
+    const auto& xm = definition_->xfemModel();
+    const DofNumbering& numbering = problem.numbering();
+    const int dim = model.dim;
+    const QuadratureRule& rule = facetRule(dim);
+    const double refMeasure = dim == 2 ? 2.0 : 0.5;
+
+    ElementIntegration ei;
+    PointGeometry geo;
+    for (size_t f = 0; f < facets_.size(); ++f) {
+        const ContactFacet& facet = facets_[f];
+        const int zone = definition_->zoneOfCrack(facet.crack);
+        if (zone < 0) continue;
+        double youngMax = 0.0;
+        for (const FacetSide* side : {&facet.minus, &facet.plus})
+            youngMax = std::max(youngMax, material.at(side->cell).E);
+        const double gamma = definition_->nitsche.gammaZero * youngMax * facet.pairMeasure /
+                             (facet.minus.blockMeasure + facet.plus.blockMeasure);
+        const double wMinus = facet.minus.blockMeasure / (facet.minus.blockMeasure + facet.plus.blockMeasure);
+        for (int q = 0; q < rule.size(); ++q) {
+            ContactPoint cp;
+            cp.facet = static_cast<int>(f);
+            cp.zone = zone;
+            cp.gamma = gamma;
+            cp.weight = rule.weights[q] / refMeasure * facet.measure;
+            const auto bary = facetBarycentric(dim, rule.points[q]);
+            for (int v = 0; v < dim; ++v)
+                for (int j = 0; j < 3; ++j) cp.xyz[j] += bary[v] * facet.vertices[v][j];
+            for (int s = 0; s < 2; ++s) {
+                const FacetSide& side = s == 0 ? facet.minus : facet.plus;
+                const double sign = s == 0 ? -1.0 : 1.0;
+                const double weight = s == 0 ? wMinus : 1.0 - wMinus;
+                const auto* cut = xm.cut(side.cell);
+                Vec ref{};
+                for (int v = 0; v < dim; ++v)
+                    for (int j = 0; j < 3; ++j) ref[j] += bary[v] * side.ref[v][j];
+                const auto nodes = mesh.cellNodes(side.cell);
+                const int n = static_cast<int>(nodes.size());
+                ei = ElementIntegration{};
+                ei.cell = side.cell;
+                ei.nodeCount = n;
+                ei.refPoints = {ref};
+                ei.refWeights = {1.0};
+                ei.pointSubcell = {side.subcell};
+                ei.slots.assign(n, 1);
+                computePointGeometry(mesh, side.cell, dim, false, ei, geo);
+                const Material& mat = material.at(side.cell);
+                const IsotropicLaw law = IsotropicLaw::from(mat, model.modelisation, mat.name);
+                const Vec& nv = facet.normal;
+                for (int a = 0; a < n; ++a) {
+                    const double Na = geo.N[a];
+                    const double* g = &geo.gradN[size_t(a) * 3];
+                    const double dn = g[0] * nv[0] + g[1] * nv[1] + g[2] * nv[2];
+                    const int slots = 1 + xm.activeSlots(nodes[a]);
+                    for (int k = 0; k < slots; ++k) {
+                        const double psi = k == 0 ? 1.0 : xm.psi(nodes[a], k, *cut, side.subcell);
+                        if (psi == 0.0) continue;
+                        for (int c = 0; c < dim; ++c) {
+                            const int d = numbering.dof(nodes[a], k, c);
+                            if (d < 0)
+                                throw std::logic_error(fmt::format("contact: node {} has no slot {}", mesh.nodeNames[nodes[a]], k));
+                            auto it = std::find(cp.dofs.begin(), cp.dofs.end(), d);
+                            size_t i = static_cast<size_t>(it - cp.dofs.begin());
+                            if (it == cp.dofs.end()) {
+                                cp.dofs.push_back(d);
+                                cp.gap.push_back(0.0);
+                                cp.stress.push_back(0.0);
+                            }
+                            cp.gap[i] += sign * psi * Na * nv[c];
+                            cp.stress[i] += weight * psi * (law.lambdaEff * g[c] + 2.0 * law.mu * nv[c] * dn);
+                        }
+                    }
+                }
+            }
+            points_.push_back(std::move(cp));
+        }
+    }
+    active_.assign(points_.size(), 0);
+    everActive_.assign(points_.size(), 0);
+}
+
+double ContactTerms::gap(int p, const std::vector<double>& u) const {
+    const auto& cp = points_[p];
+    double g = 0.0;
+    for (size_t i = 0; i < cp.dofs.size(); ++i) g += cp.gap[i] * u[cp.dofs[i]];
+    return g;
+}
+
+double ContactTerms::normalStress(int p, const std::vector<double>& u) const {
+    const auto& cp = points_[p];
+    double s = 0.0;
+    for (size_t i = 0; i < cp.dofs.size(); ++i) s += cp.stress[i] * u[cp.dofs[i]];
+    return s;
+}
+
+double ContactTerms::pressure(int p, const std::vector<double>& u) const {
+    if (!active_[p]) return 0.0;
+    if (nitsche(p)) return normalStress(p, u) + points_[p].gamma * gap(p, u);
+    return definition_->zones[points_[p].zone].penalty * gap(p, u);
+}
+
+void ContactTerms::couplings(std::vector<std::pair<int, int>>& pairs) const {
+    // Points of one facet share their unknowns: the pairs of the first point of each facet
+    // (plus any extra unknown of the others).
+    int lastFacet = -1;
+    std::vector<int> dofs;
+    auto flush = [&] {
+        for (int i : dofs)
+            for (int j : dofs)
+                if (i < j) pairs.emplace_back(i, j);
+        dofs.clear();
+    };
+    for (const auto& cp : points_) {
+        if (cp.facet != lastFacet) flush(), lastFacet = cp.facet;
+        for (int d : cp.dofs)
+            if (std::find(dofs.begin(), dofs.end(), d) == dofs.end()) dofs.push_back(d);
+    }
+    flush();
+}
+
+void ContactTerms::tangent(const std::vector<double>& u, const std::function<void(int, int, double)>& add) const {
+    (void)u;
+    const double theta = definition_->nitsche.theta;
+    for (size_t p = 0; p < points_.size(); ++p) {
+        const auto& cp = points_[p];
+        const size_t m = cp.dofs.size();
+        if (nitsche(int(p))) {
+            const double w = cp.weight, gm = cp.gamma;
+            for (size_t i = 0; i < m; ++i)
+                for (size_t j = 0; j < m; ++j) {
+                    double v = -theta / gm * cp.stress[i] * cp.stress[j];
+                    if (active_[p])
+                        v += (theta * cp.stress[i] + gm * cp.gap[i]) * (cp.stress[j] + gm * cp.gap[j]) / gm;
+                    if (v != 0.0) add(cp.dofs[i], cp.dofs[j], w * v);
+                }
+        } else if (active_[p]) {
+            const double k = cp.weight * definition_->zones[cp.zone].penalty;
+            for (size_t i = 0; i < m; ++i)
+                for (size_t j = 0; j < m; ++j)
+                    if (cp.gap[i] * cp.gap[j] != 0.0) add(cp.dofs[i], cp.dofs[j], k * cp.gap[i] * cp.gap[j]);
+        }
+    }
+}
+
+void ContactTerms::residual(const std::vector<double>& u, std::vector<double>& R) const {
+    const double theta = definition_->nitsche.theta;
+    for (size_t p = 0; p < points_.size(); ++p) {
+        const auto& cp = points_[p];
+        const double lambda = pressure(int(p), u);
+        if (nitsche(int(p))) {
+            const double sn = normalStress(int(p), u);
+            for (size_t i = 0; i < cp.dofs.size(); ++i)
+                R[cp.dofs[i]] += cp.weight * (-theta / cp.gamma * sn * cp.stress[i] +
+                                              lambda / cp.gamma * (theta * cp.stress[i] + cp.gamma * cp.gap[i]));
+        } else if (active_[p]) {
+            for (size_t i = 0; i < cp.dofs.size(); ++i) R[cp.dofs[i]] += cp.weight * lambda * cp.gap[i];
+        }
+    }
+}
+
+void ContactTerms::initialiseStatus() {
+    for (size_t p = 0; p < points_.size(); ++p) {
+        active_[p] = definition_->zones[points_[p].zone].initiallyActive ? 1 : 0;
+        everActive_[p] = active_[p];
+    }
+}
+
+bool ContactTerms::wantsActive(int p, const std::vector<double>& u) const {
+    const auto& zone = definition_->zones[points_[p].zone];
+    if (zone.bilateral && everActive_[p]) return true;
+    if (nitsche(p)) return normalStress(p, u) + points_[p].gamma * gap(p, u) < 0.0;
+    return gap(p, u) < 0.0;
+}
+
+StatusReport ContactTerms::inspect(const std::vector<double>& u) const {
+    StatusReport r;
+    r.points = static_cast<int>(points_.size());
+    for (size_t p = 0; p < points_.size(); ++p) {
+        const double g = gap(int(p), u);
+        r.active += active_[p];
+        r.maxPenetration = std::max(r.maxPenetration, -g);
+        if (active_[p]) r.maxGap = std::max(r.maxGap, g);
+        r.maxPressure = std::max(r.maxPressure, std::abs(pressure(int(p), u)));
+        // Complementarity violation: what the status would change.
+        const bool want = wantsActive(int(p), u);
+        if (want != bool(active_[p])) {
+            const double P = nitsche(int(p)) ? normalStress(int(p), u) + points_[p].gamma * g
+                                             : definition_->zones[points_[p].zone].penalty * g;
+            r.contactResidual = std::max(r.contactResidual, std::abs(P));
+        }
+    }
+    r.maxPenetration = std::max(r.maxPenetration, 0.0);
+    return r;
+}
+
+StatusReport ContactTerms::updateStatus(const std::vector<double>& u) {
+    StatusReport r = inspect(u);
+    std::vector<char> next(points_.size());
+    for (size_t p = 0; p < points_.size(); ++p) next[p] = wantsActive(int(p), u) ? 1 : 0;
+    r.changed = 0;
+    r.active = 0;
+    for (size_t p = 0; p < points_.size(); ++p) {
+        r.changed += next[p] != active_[p];
+        active_[p] = next[p];
+        everActive_[p] = everActive_[p] || next[p];
+        r.active += next[p];
+    }
+    return r;
+}
+
+}  // namespace ma::contact

@@ -1,0 +1,83 @@
+#pragma once
+// The contact terms added to the mechanical problem (fe::AdditionalTerms), frictionless and
+// unilateral, on the facets of ContactFacets (docs/contact.md).
+//
+// Notation at a facet point: n from the - side to the + side, gap g(u) = (u+ - u-).n (> 0 open,
+// < 0 interpenetration), sigma_n(u) = w- n.sigma-(u).n + w+ n.sigma+(u).n (weights = block
+// measures of the two sides), P(u) = sigma_n(u) + gamma g(u). Contact pressure (code_aster's
+// LAGS_C sign, <= 0 in compression):
+//   Nitsche (ALGO_CONT='STANDARD'):  lambda = min(P(u), 0)
+//   penalty ('PENALISATION'):         lambda = kappa min(g(u), 0)
+// Weak form (theta = 1, symmetric Nitsche):
+//   a(u,v) - (theta/gamma) int sigma_n(u) sigma_n(v) + (1/gamma) int lambda(u) (theta sigma_n(v) + gamma g(v)) = L(v)
+// which the exact solution satisfies (lambda = sigma_n, sigma_n g = 0): the method is consistent.
+// The min is resolved by an active set frozen during each Newton solve (active: lambda = P,
+// inactive: lambda = 0) and updated by the contact loop (ContactLoop.hpp).
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "contact/ContactDefinition.hpp"
+#include "contact/ContactFacets.hpp"
+#include "fe/MechanicalProblem.hpp"
+
+namespace ma::contact {
+
+struct ContactPoint {
+    int facet = -1;
+    int zone = -1;
+    double weight = 0.0;  // physical quadrature weight
+    std::array<double, 3> xyz{};
+    std::vector<int> dofs;            // unknowns the point depends on
+    std::vector<double> gap;          // g(u) = sum gap[i] u[dofs[i]]
+    std::vector<double> stress;       // sigma_n(u) = sum stress[i] u[dofs[i]] (weighted average)
+    double gamma = 0.0;               // Nitsche parameter (Pa/m)
+};
+
+struct StatusReport {
+    int changed = 0;
+    int active = 0;
+    int points = 0;
+    double maxPenetration = 0.0;   // max(-g, 0)
+    double maxGap = 0.0;           // max(g, 0) over active points of bilateral zones
+    double contactResidual = 0.0;  // complementarity violation: |P| at points whose status is wrong
+    double maxPressure = 0.0;      // max |lambda|
+};
+
+class ContactTerms : public AdditionalTerms {
+public:
+    ContactTerms(const MechanicalProblem& problem, const MaterialField& material,
+                 std::shared_ptr<const ContactDefinition> definition,
+                 std::vector<ContactFacet> facets);
+
+    void couplings(std::vector<std::pair<int, int>>& pairs) const override;
+    void tangent(const std::vector<double>& u, const std::function<void(int, int, double)>& add) const override;
+    void residual(const std::vector<double>& u, std::vector<double>& R) const override;
+
+    // Initial statuses: CONTACT_INIT='OUI' zones all active, others inactive.
+    void initialiseStatus();
+    // New statuses from the state u (semi-smooth Newton / active set step).
+    StatusReport updateStatus(const std::vector<double>& u);
+    // Current statistics without changing anything.
+    StatusReport inspect(const std::vector<double>& u) const;
+
+    const std::vector<ContactPoint>& points() const { return points_; }
+    const std::vector<ContactFacet>& facets() const { return facets_; }
+    const std::vector<char>& active() const { return active_; }
+    const ContactDefinition& definition() const { return *definition_; }
+    double gap(int p, const std::vector<double>& u) const;
+    double normalStress(int p, const std::vector<double>& u) const;
+    // Contact pressure lambda at point p with the current statuses (<= 0 in compression).
+    double pressure(int p, const std::vector<double>& u) const;
+
+private:
+    bool nitsche(int p) const { return definition_->zones[points_[p].zone].algorithm == ContactAlgorithm::Nitsche; }
+    bool wantsActive(int p, const std::vector<double>& u) const;
+
+    std::shared_ptr<const ContactDefinition> definition_;
+    std::vector<ContactFacet> facets_;
+    std::vector<ContactPoint> points_;
+    std::vector<char> active_, everActive_;
+};
+
+}  // namespace ma::contact
