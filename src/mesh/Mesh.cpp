@@ -1,5 +1,7 @@
 #include "mesh/Mesh.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 
 #include "core/Error.hpp"
@@ -27,14 +29,14 @@ int Mesh::addCell(CellType type, std::span<const int> nodes, std::string name) {
     cellTypes.push_back(type);
     connectivity.insert(connectivity.end(), nodes.begin(), nodes.end());
     cellOffsets.push_back(static_cast<int>(connectivity.size()));
-    cellNames.push_back(name.empty() ? "M" + std::to_string(index + 1) : std::move(name));
+    cellNames.push_back(name.empty() ? fmt::format("M{}", index + 1) : std::move(name));
     return index;
 }
 
 int Mesh::addNode(const std::array<double, 3>& xyz, std::string name) {
     int index = nodeCount();
     coords.push_back(xyz);
-    nodeNames.push_back(name.empty() ? "N" + std::to_string(index + 1) : std::move(name));
+    nodeNames.push_back(name.empty() ? fmt::format("N{}", index + 1) : std::move(name));
     return index;
 }
 
