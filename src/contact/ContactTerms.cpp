@@ -111,6 +111,10 @@ ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField
                     }
                 }
             }
+            if (definition_->zones[zone].algorithm == ContactAlgorithm::Penalty) {
+                cp.multiplier = numbering.size() + extraUnknowns_++;
+                cp.scale = youngMax;
+            }
             points_.push_back(std::move(cp));
         }
     }
@@ -135,7 +139,7 @@ double ContactTerms::normalStress(int p, const std::vector<double>& u) const {
 double ContactTerms::pressure(int p, const std::vector<double>& u) const {
     if (!active_[p]) return 0.0;
     if (nitsche(p)) return normalStress(p, u) + points_[p].gamma * gap(p, u);
-    return definition_->zones[points_[p].zone].penalty * gap(p, u);
+    return points_[p].scale * u[points_[p].multiplier];
 }
 
 void ContactTerms::couplings(std::vector<std::pair<int, int>>& pairs) const {
@@ -153,6 +157,10 @@ void ContactTerms::couplings(std::vector<std::pair<int, int>>& pairs) const {
         if (cp.facet != lastFacet) flush(), lastFacet = cp.facet;
         for (int d : cp.dofs)
             if (std::find(dofs.begin(), dofs.end(), d) == dofs.end()) dofs.push_back(d);
+        if (cp.multiplier >= 0) {
+            pairs.emplace_back(cp.multiplier, cp.multiplier);
+            for (int d : cp.dofs) pairs.emplace_back(d, cp.multiplier);
+        }
     }
     flush();
 }
@@ -172,11 +180,15 @@ void ContactTerms::tangent(const std::vector<double>& u, const std::function<voi
                         v += (theta * cp.stress[i] + gm * cp.gap[i]) * (cp.stress[j] + gm * cp.gap[j]) / gm;
                     if (v != 0.0) add(cp.dofs[i], cp.dofs[j], w * v);
                 }
-        } else if (active_[p]) {
-            const double k = cp.weight * definition_->zones[cp.zone].penalty;
-            for (size_t i = 0; i < m; ++i)
-                for (size_t j = 0; j < m; ++j)
-                    if (cp.gap[i] * cp.gap[j] != 0.0) add(cp.dofs[i], cp.dofs[j], k * cp.gap[i] * cp.gap[j]);
+        } else {
+            const double kappa = definition_->zones[cp.zone].penalty;
+            add(cp.multiplier, cp.multiplier, -cp.weight * cp.scale * cp.scale / kappa);
+            if (active_[p])
+                for (size_t i = 0; i < m; ++i)
+                    if (cp.gap[i] != 0.0) {
+                        add(cp.dofs[i], cp.multiplier, cp.weight * cp.scale * cp.gap[i]);
+                        add(cp.multiplier, cp.dofs[i], cp.weight * cp.scale * cp.gap[i]);
+                    }
         }
     }
 }
@@ -191,8 +203,12 @@ void ContactTerms::residual(const std::vector<double>& u, std::vector<double>& R
             for (size_t i = 0; i < cp.dofs.size(); ++i)
                 R[cp.dofs[i]] += cp.weight * (-theta / cp.gamma * sn * cp.stress[i] +
                                               lambda / cp.gamma * (theta * cp.stress[i] + cp.gamma * cp.gap[i]));
-        } else if (active_[p]) {
-            for (size_t i = 0; i < cp.dofs.size(); ++i) R[cp.dofs[i]] += cp.weight * lambda * cp.gap[i];
+        } else {
+            const double kappa = definition_->zones[cp.zone].penalty;
+            const double own = cp.scale * u[cp.multiplier];  // the unknown, whatever the status
+            R[cp.multiplier] += cp.weight * cp.scale * ((active_[p] ? gap(int(p), u) : 0.0) - own / kappa);
+            if (active_[p])
+                for (size_t i = 0; i < cp.dofs.size(); ++i) R[cp.dofs[i]] += cp.weight * lambda * cp.gap[i];
         }
     }
 }

@@ -8,6 +8,7 @@
 // LAGS_C sign, <= 0 in compression):
 //   Nitsche (ALGO_CONT='STANDARD'):  lambda = min(P(u), 0)
 //   penalty ('PENALISATION'):         lambda = kappa min(g(u), 0)
+// Penalty points carry lambda as an unknown (equation g - lambda/kappa = 0, see ContactPoint).
 // Weak form (theta = 1, symmetric Nitsche):
 //   a(u,v) - (theta/gamma) int sigma_n(u) sigma_n(v) + (1/gamma) int lambda(u) (theta sigma_n(v) + gamma g(v)) = L(v)
 // which the exact solution satisfies (lambda = sigma_n, sigma_n g = 0): the method is consistent.
@@ -32,6 +33,11 @@ struct ContactPoint {
     std::vector<double> gap;          // g(u) = sum gap[i] u[dofs[i]]
     std::vector<double> stress;       // sigma_n(u) = sum stress[i] u[dofs[i]] (weighted average)
     double gamma = 0.0;               // Nitsche parameter (Pa/m)
+    // Penalty: the pressure is an unknown of the point, lambda = scale * u[multiplier], with the
+    // equation g - lambda/kappa = 0 (mixed form: the displacement rows carry lambda, not
+    // kappa*g, so that their residual is not amplified by kappa; code_aster's form).
+    int multiplier = -1;
+    double scale = 1.0;
 };
 
 struct StatusReport {
@@ -53,6 +59,7 @@ public:
     void couplings(std::vector<std::pair<int, int>>& pairs) const override;
     void tangent(const std::vector<double>& u, const std::function<void(int, int, double)>& add) const override;
     void residual(const std::vector<double>& u, std::vector<double>& R) const override;
+    int extraUnknowns() const override { return extraUnknowns_; }
 
     // Initial statuses: CONTACT_INIT='OUI' zones all active, others inactive.
     void initialiseStatus();
@@ -78,6 +85,7 @@ private:
     std::vector<ContactFacet> facets_;
     std::vector<ContactPoint> points_;
     std::vector<char> active_, everActive_;
+    int extraUnknowns_ = 0;
 };
 
 }  // namespace ma::contact

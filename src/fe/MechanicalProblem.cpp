@@ -143,6 +143,7 @@ MechanicalProblem::~MechanicalProblem() = default;
 
 void MechanicalProblem::setAdditionalTerms(std::shared_ptr<const AdditionalTerms> terms) {
     additional_ = std::move(terms);
+    u.resize(numbering_->size() + (additional_ ? additional_->extraUnknowns() : 0), 0.0);
     constraints_.reset();  // the pattern changes: rebuilt at the next increment
 }
 
@@ -154,8 +155,9 @@ double MechanicalProblem::loadFactor(const LoadCase& lc, double inst) const {
 void MechanicalProblem::buildConstraints(double inst, Constraints& out) const {
     const Mesh& mesh = *model_->mesh;
     const int ndof = numbering_->size();
-    out.fixed.assign(ndof, 0);
-    out.fixedValue.assign(ndof, 0.0);
+    const int total = ndof + (additional_ ? additional_->extraUnknowns() : 0);
+    out.fixed.assign(total, 0);
+    out.fixedValue.assign(total, 0.0);
     out.multi.clear();
     std::vector<LinearRelation> relations;
     for (const auto& lc : loads_) {
@@ -215,9 +217,9 @@ void MechanicalProblem::buildConstraints(double inst, Constraints& out) const {
                 ++out.unattached;
             }
         }
-    out.eq.assign(ndof, -1);
+    out.eq.assign(total, -1);
     out.freeCount = 0;
-    for (int d = 0; d < ndof; ++d)
+    for (int d = 0; d < total; ++d)
         if (!out.fixed[d]) out.eq[d] = out.freeCount++;
     for (size_t m = 0; m < multiTerm.size(); ++m) {
         Constraints::Relation r;
@@ -263,7 +265,7 @@ void MechanicalProblem::buildPattern() {
     if (additional_) {
         std::vector<std::pair<int, int>> pairs;
         additional_->couplings(pairs);
-        if (!pairs.empty()) extraColumns.resize(numbering_->size());
+        if (!pairs.empty()) extraColumns.resize(c.eq.size());
         for (const auto& [i, j] : pairs) {
             if (c.eq[i] < 0 || c.eq[j] < 0) continue;
             extraColumns[i].push_back(c.eq[j]);
@@ -321,6 +323,18 @@ void MechanicalProblem::buildPattern() {
                     if (extra) std::copy(dofMultipliers[d].begin(), dofMultipliers[d].end(), out);
                 }
             }
+        }
+        // Rows of the additional terms' own unknowns: their declared couplings only.
+        for (int d = numbering_->size(); d < int(c.eq.size()); ++d) {
+            const int row = c.eq[d];
+            if (row < 0) continue;
+            rowColumns.clear();
+            if (!extraColumns.empty()) rowColumns = extraColumns[d];
+            rowColumns.push_back(row);
+            std::sort(rowColumns.begin(), rowColumns.end());
+            rowColumns.erase(std::unique(rowColumns.begin(), rowColumns.end()), rowColumns.end());
+            if (pass == 0) matrix_.rowStart[row + 1] = static_cast<long long>(rowColumns.size());
+            else std::copy(rowColumns.begin(), rowColumns.end(), matrix_.cols.begin() + matrix_.rowStart[row]);
         }
         for (size_t m = 0; m < c.multi.size(); ++m) {
             const int row = c.freeCount + int(m);
@@ -608,6 +622,8 @@ IncrementReport MechanicalProblem::solveIncrement(double inst, const Convergence
         assembleMatrix();
     }
     const int ndof = numbering_->size();
+    const int total = static_cast<int>(c.eq.size());  // dofs + the additional terms' unknowns
+    u.resize(total, 0.0);
     for (int d = 0; d < ndof; ++d)
         if (c.fixed[d]) u[d] = c.fixedValue[d];
     std::vector<double> fext, fint, rhs(matrix_.rows);
@@ -615,7 +631,7 @@ IncrementReport MechanicalProblem::solveIncrement(double inst, const Convergence
     IncrementReport report;
     auto residual = [&](std::vector<double>& R) {
         internalForces(u, fint);
-        R.resize(ndof);
+        R.assign(total, 0.0);
         for (int d = 0; d < ndof; ++d) R[d] = fint[d] - fext[d];
         for (size_t m = 0; m < c.multi.size(); ++m)
             for (const auto& [d, coef] : c.multi[m].terms) R[d] += alpha_ * coef * lambda_[m];
@@ -625,7 +641,7 @@ IncrementReport MechanicalProblem::solveIncrement(double inst, const Convergence
     bool zeroLoadNoted = false;
     for (int it = 0; it <= options.maxIterations; ++it) {
         residual(R);
-        for (int d = 0; d < ndof; ++d)
+        for (int d = 0; d < total; ++d)
             if (c.eq[d] >= 0) rhs[c.eq[d]] = -R[d];
         for (size_t m = 0; m < c.multi.size(); ++m) {
             double g = -c.multi[m].value;
@@ -636,13 +652,13 @@ IncrementReport MechanicalProblem::solveIncrement(double inst, const Convergence
             msg().info("    every unknown is imposed by a Dirichlet condition: nothing to solve");
         } else {
             if (!factorised_) {
-                solver_->factorize(matrix_, c.multi.empty() ? MatrixKind::SymmetricPositiveDefinite
-                                                            : MatrixKind::SymmetricIndefinite);
+                solver_->factorize(matrix_, c.multi.empty() && total == ndof ? MatrixKind::SymmetricPositiveDefinite
+                                                                             : MatrixKind::SymmetricIndefinite);
                 factorised_ = true;
             }
             solver_->solve(rhs);
         }
-        for (int d = 0; d < ndof; ++d)
+        for (int d = 0; d < total; ++d)
             if (c.eq[d] >= 0) u[d] += rhs[c.eq[d]];
         for (size_t m = 0; m < c.multi.size(); ++m) lambda_[m] += rhs[c.freeCount + m];
         // Convergence (code_aster's nmresi): max |R| over the equations, relative to the largest
@@ -673,7 +689,7 @@ IncrementReport MechanicalProblem::solveIncrement(double inst, const Convergence
         // displacement (imposed rigid motions, zero load): the relative criterion then uses that
         // force scale (mean stiffness diagonal x largest displacement) instead of noise.
         double umax = 0.0;
-        for (double v : u) umax = std::max(umax, std::abs(v));
+        for (int d = 0; d < ndof; ++d) umax = std::max(umax, std::abs(u[d]));
         const double forceScale = alpha_ * umax;
         if (denominator <= 1e-12 * forceScale) {
             if (!zeroLoadNoted)

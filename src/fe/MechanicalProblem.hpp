@@ -50,6 +50,11 @@ public:
     virtual void tangent(const std::vector<double>& u, const std::function<void(int, int, double)>& add) const = 0;
     // Contribution to the residual R = F_int - F_ext + ... at state u.
     virtual void residual(const std::vector<double>& u, std::vector<double>& R) const = 0;
+    // Unknowns of the engine itself (e.g. contact multipliers at integration points), numbered
+    // after the dofs of numbering(): u and R then have numbering().size() + extraUnknowns()
+    // entries. Their rows are left out of the convergence check (as code_aster skips contact
+    // rows) and the matrix is treated as symmetric indefinite.
+    virtual int extraUnknowns() const { return 0; }
 };
 
 struct IncrementReport {
@@ -73,7 +78,8 @@ public:
     const DofNumbering& numbering() const { return *numbering_; }
     const Model& model() const { return *model_; }
 
-    // State: displacement in dof order (size numbering().size()), multipliers.
+    // State: displacement in dof order (size numbering().size()), then the additional terms'
+    // own unknowns (AdditionalTerms::extraUnknowns).
     std::vector<double> u;
 
     // Newton iterations at instant `inst` starting from the current state (ELAS: converges in
