@@ -13,9 +13,16 @@ foreach(_export ${_cases})
 endforeach()
 
 # Originals (read in place from ../shared/astest, never copied). Added as their issues land.
-set(MINIASTER_ORIGINALS ssnv511a ssnv511b ssnv511c ssnv511d CACHE INTERNAL "")
+set(MINIASTER_ORIGINALS ssnv511a ssnv511b ssnv511c ssnv511d ssnv511e ssnv511f ssnv511g ssnv511h CACHE INTERNAL "")
+# Originals whose NON_REGRESSION values are code_aster's own inexact results (docs/contact.md):
+# exit 2 accepted when every reference check is OK (tools/run_validation.sh).
+set(MINIASTER_ORIGINALS_INEXACT_VALE_CALC ssnv511e ssnv511f ssnv511g ssnv511h CACHE INTERNAL "")
 foreach(_name ${MINIASTER_ORIGINALS})
+  set(_opt "")
+  if(_name IN_LIST MINIASTER_ORIGINALS_INEXACT_VALE_CALC)
+    set(_opt --allow-nonregression-nook)
+  endif()
   add_test(NAME original.${_name}
            COMMAND ${_run} $<TARGET_FILE:miniaster-bin> ${CMAKE_SOURCE_DIR}/../shared/astest/${_name}.export
-                   ${CMAKE_BINARY_DIR}/astest-out/${_name})
+                   ${CMAKE_BINARY_DIR}/astest-out/${_name} ${_opt})
 endforeach()
