@@ -217,6 +217,9 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
             plus.ref.push_back(cp->points[best].ref);
         }
         f.plus = plus;
+        for (int p : fm.points)
+            for (size_t k = 0; k < cm->cracks.size(); ++k)
+                if (cm->cracks[k] != key.first && cm->points[p].lsn[k] == 0.0) f.atJunction = true;
         if (!finishFacet(f, verts, sub(centroid(xp_, cp->subcells[fp.subcell]), centroid(xm_, cm->subcells[fm.subcell]))))
             continue;
         pairs[{fm.cell, fp.cell, cm->subcells[fm.subcell].heaviside, key.first, cp->subcells[fp.subcell].heaviside, 1}]

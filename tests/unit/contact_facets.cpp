@@ -1,0 +1,103 @@
+// Contact facets of the ssnv511 interfaces (src/contact/ContactFacets): the facets of each
+// interface cover exactly its length/area inside the domain, each separates two sub-cells on
+// opposite sides of its interface, and the horizontal interface is split at the junction.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <algorithm>
+#include <map>
+
+#include "contact/ContactFacets.hpp"
+#include "xfem_test_meshes.hpp"
+
+namespace {
+
+using namespace ma;
+using namespace ma::contact;
+
+struct Case {
+    CellType type;
+    int n;
+    double x0, y0;  // junction
+};
+
+void checkFacets(const Case& k) {
+    SCOPED_TRACE(fmt::format("{} n={} junction ({}, {})", cellTypeName(k.type), k.n, k.x0, k.y0));
+    const bool threeD = k.type == CellType::HEXA8 || k.type == CellType::TETRA4;
+    auto mesh = threeD ? xfemtest::slab(k.n, k.type) : xfemtest::square(k.n, k.type);
+    auto mo = xfemtest::model(mesh);
+    const auto j = xfemtest::ssnv511Cracks(mesh, k.x0, k.y0);
+    xfem::XfemModel xm(mo, {j.fiss1, j.fiss2, j.fiss3}, xfem::XfemContact::Standard);
+    FacetStatistics st;
+    const auto facets = buildContactFacets(xm, {1, 1, 1}, &st);
+    // Interface measures inside [-5,5]^2 (x [0,1]): FISS1 10, FISS2 5 - y0, FISS3 5 + y0.
+    std::map<int, double> measure;
+    int atJunction = 0;
+    for (const auto& f : facets) {
+        measure[f.crack] += f.measure;
+        atJunction += f.atJunction;
+        // Two different sub-cells, on the - and + sides of the facet's interface.
+        EXPECT_FALSE(f.minus.cell == f.plus.cell && f.minus.subcell == f.plus.subcell);
+        for (const auto* side : {&f.minus, &f.plus}) {
+            const auto* cut = xm.cut(side->cell);
+            ASSERT_NE(cut, nullptr);
+            const auto it = std::find(cut->cracks.begin(), cut->cracks.end(), f.crack);
+            ASSERT_NE(it, cut->cracks.end());
+            EXPECT_EQ(cut->subcells[side->subcell].heaviside[it - cut->cracks.begin()], side == &f.minus ? -1 : 1);
+            EXPECT_GT(side->blockMeasure, 0.0);
+        }
+        // Normal from - to +: +e_y for FISS1, +e_x for the branches (level sets Y and X).
+        const std::array<double, 3> expected = f.crack == 0 ? std::array<double, 3>{0, 1, 0} : std::array<double, 3>{1, 0, 0};
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(f.normal[c], expected[c], 1e-12);
+        // On the interface, never across the junction line of the other interface.
+        for (const auto& v : f.vertices) EXPECT_NEAR(f.crack == 0 ? v[1] - k.y0 : v[0] - k.x0, 0.0, 1e-12);
+        bool left = false, right = false;
+        for (const auto& v : f.vertices) {
+            const double s = f.crack == 0 ? v[0] - k.x0 : v[1] - k.y0;
+            left = left || s < -1e-12;
+            right = right || s > 1e-12;
+        }
+        EXPECT_FALSE(left && right) << "facet crosses the junction";
+        if (f.crack == 1) EXPECT_FALSE(left);   // FISS2 only above FISS1
+        if (f.crack == 2) EXPECT_FALSE(right);  // FISS3 only below
+        EXPECT_GT(f.pairMeasure, 0.0);
+    }
+    EXPECT_NEAR(measure[0], 10.0, 1e-12);
+    EXPECT_NEAR(measure[1], 5.0 - k.y0, 1e-12);
+    EXPECT_NEAR(measure[2], 5.0 + k.y0, 1e-12);
+    EXPECT_GT(atJunction, 0);
+    EXPECT_EQ(st.facets, int(facets.size()));
+}
+
+TEST(ContactFacets, CoverTheInterfacesAndSplitAtTheJunction) {
+    for (const Case& k : {Case{CellType::QUAD4, 5, 0, 0}, Case{CellType::TRIA3, 5, 0, 0}, Case{CellType::QUAD4, 7, 0.3, -0.2},
+                          Case{CellType::TRIA3, 6, 0.25, 0.35}, Case{CellType::HEXA8, 5, 0, 0}, Case{CellType::TETRA4, 5, 0, 0},
+                          Case{CellType::HEXA8, 4, 0.3, -0.4}})
+        checkFacets(k);
+}
+
+TEST(ContactFacets, InterfacesAlongMeshEdgesAreMatchedAcrossParentCells) {
+    // n even: x = 0 and y = 0 are node rows, the junction is a node.
+    for (const Case& k : {Case{CellType::QUAD4, 6, 0, 0}, Case{CellType::TRIA3, 6, 0, 0}, Case{CellType::HEXA8, 4, 0, 0}}) {
+        checkFacets(k);
+        const bool threeD = k.type == CellType::HEXA8;
+        auto mesh = threeD ? xfemtest::slab(k.n, k.type) : xfemtest::square(k.n, k.type);
+        auto mo = xfemtest::model(mesh);
+        const auto j = xfemtest::ssnv511Cracks(mesh);
+        xfem::XfemModel xm(mo, {j.fiss1, j.fiss2, j.fiss3}, xfem::XfemContact::Standard);
+        FacetStatistics st;
+        buildContactFacets(xm, {1, 1, 1}, &st);
+        EXPECT_GT(st.acrossParentFaces, 0);
+    }
+}
+
+TEST(ContactFacets, OnlyTheRequestedInterfaces) {
+    auto mesh = xfemtest::square(5, CellType::QUAD4);
+    auto mo = xfemtest::model(mesh);
+    const auto j = xfemtest::ssnv511Cracks(mesh);
+    xfem::XfemModel xm(mo, {j.fiss1, j.fiss2, j.fiss3}, xfem::XfemContact::Standard);
+    for (const auto& f : buildContactFacets(xm, {0, 1, 0})) EXPECT_EQ(f.crack, 1);
+}
+
+}  // namespace
