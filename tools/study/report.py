@@ -1,0 +1,155 @@
+"""Tables (CSV, Markdown) and plots (PNG) of the study records."""
+import csv
+import math
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def write_csv(path, records, columns):
+    tmp = path + ".tmp"
+    with open(tmp, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(columns)
+        for r in records:
+            w.writerow([_csv_value(r.get(c, "")) for c in columns])
+    os.replace(tmp, path)
+
+
+def _csv_value(v):
+    if isinstance(v, float):
+        return repr(v)
+    return v
+
+
+def fmt(v, kind=None):
+    if v is None or v == "":
+        return ""
+    if isinstance(v, str):
+        return v
+    if isinstance(v, int) and kind is None:
+        return f"{v:,}".replace(",", " ")
+    if isinstance(v, float) and (math.isnan(v) or math.isinf(v)):
+        return str(v)
+    if kind == "t":
+        return f"{v:.3f}" if v < 10 else f"{v:.1f}"
+    if kind == "e":
+        return f"{v:.2e}"
+    if kind == "f":
+        return f"{v:.2f}"
+    if isinstance(v, float):
+        return f"{v:.3g}"
+    return str(v)
+
+
+def markdown_table(records, columns):
+    """columns: list of (key, header, kind)."""
+    out = ["| " + " | ".join(h for _, h, _ in columns) + " |", "|" + "---|" * len(columns)]
+    for r in records:
+        out.append("| " + " | ".join(fmt(r.get(k, ""), kind) for k, _, kind in columns) + " |")
+    return "\n".join(out) + "\n"
+
+
+def fit_rate(x, y):
+    """Least-squares slope of log y against log x (None with fewer than 2 usable points)."""
+    pts = [(math.log(a), math.log(b)) for a, b in zip(x, y) if a and b and a > 0 and b > 0]
+    if len(pts) < 2:
+        return None
+    X = np.array([p[0] for p in pts])
+    Y = np.array([p[1] for p in pts])
+    return float(np.polyfit(X, Y, 1)[0])
+
+
+COLORS = {"quad4": "tab:blue", "tria3": "tab:orange", "hexa8": "tab:green", "tetra4": "tab:red"}
+
+
+def _save(fig, path):
+    fig.tight_layout()
+    tmp = path + ".tmp.png"
+    fig.savefig(tmp, dpi=110)
+    plt.close(fig)
+    os.replace(tmp, path)
+
+
+def plot_error_vs_dofs(path, series, fit_last=4):
+    """series: {element: [(dofs, h, l2, energy), ...]} -> two panels, fitted rates in h in the legend."""
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    for ax, idx, name, theory in ((axes[0], 3, "energy norm", 1), (axes[1], 2, "L2 norm", 2)):
+        for el, pts in series.items():
+            pts = sorted(p for p in pts if p[idx])
+            if not pts:
+                continue
+            d = [p[0] for p in pts]
+            e = [p[idx] for p in pts]
+            rate = fit_rate([p[1] for p in pts[-fit_last:]], e[-fit_last:])
+            label = f"{el}: rate in h {rate:.2f}" if rate is not None else el
+            ax.loglog(d, e, "o-", color=COLORS.get(el), label=label)
+        ax.set_xlabel("DOFs")
+        ax.set_ylabel(f"relative error, {name}")
+        ax.set_title(f"{name} (theory: h^{theory})")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=8)
+    _save(fig, path)
+
+
+def plot_trade(path, series):
+    """series: {label: [(wall, l2, energy), ...]}: error against wall time."""
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    for ax, idx, name in ((axes[0], 2, "energy norm"), (axes[1], 1, "L2 norm")):
+        for label, pts in series.items():
+            pts = sorted(p for p in pts if p[idx] and p[0])
+            if pts:
+                ax.loglog([p[0] for p in pts], [p[idx] for p in pts], "o-", label=label,
+                          color=COLORS.get(label.split()[0]))
+        ax.set_xlabel("wall time of the run (s)")
+        ax.set_ylabel(f"relative error, {name}")
+        ax.set_title(f"speed vs accuracy ({name})")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=8)
+    _save(fig, path)
+
+
+def plot_time_vs_dofs(path, series, fit_min_dofs=2e4):
+    """series: {label: [(dofs, seconds), ...]}: log-log, fitted exponent over dofs >= fit_min_dofs."""
+    fig, ax = plt.subplots(figsize=(7, 5))
+    for label, pts in series.items():
+        pts = sorted(p for p in pts if p[1] and p[1] > 0)
+        if not pts:
+            continue
+        big = [p for p in pts if p[0] >= fit_min_dofs]
+        rate = fit_rate([p[0] for p in big], [p[1] for p in big])
+        ax.loglog([p[0] for p in pts], [p[1] for p in pts], "o-",
+                  label=f"{label}: exponent {rate:.2f}" if rate is not None else label)
+    ax.set_xlabel("DOFs")
+    ax.set_ylabel("wall time (s)")
+    ax.set_title(f"time vs DOFs (exponent fitted on DOFs >= {fit_min_dofs:.0e})")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    _save(fig, path)
+
+
+def plot_sweep(path, title, xlabel, series, threshold=1e-9, logx=True):
+    """series: {label: [(x, error, alarmed), ...]}: error vs parameter, filled markers = alarm."""
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for label, pts in series.items():
+        pts = sorted(pts)
+        xs = [p[0] for p in pts]
+        ys = [max(p[1], 1e-18) if p[1] is not None else float("nan") for p in pts]
+        line, = ax.plot(xs, ys, "-", label=label)
+        for x, y, alarmed in zip(xs, ys, [p[2] for p in pts]):
+            ax.plot([x], [y], "o" if alarmed else "x", color=line.get_color(), markersize=7 if alarmed else 6,
+                    markerfacecolor="none" if alarmed else None)
+    ax.axhline(threshold, color="k", linestyle="--", linewidth=0.8)
+    ax.set_yscale("log")
+    if logx:
+        ax.set_xscale("log")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("error (max of L2 rel., strain rel.)")
+    ax.set_title(title + "  (o = alarm in .mess, x = none; dashed: 1e-9)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    _save(fig, path)

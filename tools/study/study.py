@@ -1,0 +1,522 @@
+#!/usr/bin/python3
+"""miniaster speed/accuracy study (issue 8). Run through the launcher:
+
+    ./miniaster study smooth      [--full]   convergence of the smooth manufactured scene
+    ./miniaster study stability   [--full]   extreme inputs on the ssnv511a rigid scene
+    ./miniaster study perf        [--full]   set-up/assembly vs factorisation on ssnv511a (N=1001 with --full)
+    ./miniaster study all         [--full]   the three above
+    ./miniaster study check-field            checks of the manufactured field (derivatives, tractions)
+    ./miniaster study astest                 regenerates astest/smooth_*.{comm,export,mmed}
+
+Options: --out DIR (tables and plots, default docs/study), --work DIR (runs, default a temporary
+folder), --build DIR (miniaster build, default build/), --elements quad4,tria3,..., --timeout S.
+Results: DIR/<study>.csv, DIR/<study>.md and DIR/<study>_*.png; the Markdown file names the
+command that made it. See docs/study.md.
+"""
+import argparse
+import datetime
+import math
+import os
+import platform
+import shutil
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, HERE)
+
+import report  # noqa: E402
+import runner  # noqa: E402
+import scenes  # noqa: E402
+import smooth_field  # noqa: E402
+
+ALL_ELEMENTS = ["quad4", "tria3", "hexa8", "tetra4"]
+
+
+class Context:
+    def __init__(self, args):
+        self.args = args
+        self.build = os.path.abspath(args.build)
+        self.binary = os.path.join(self.build, "miniaster")
+        self.out = os.path.abspath(args.out)
+        self.work = os.path.abspath(args.work) if args.work else tempfile.mkdtemp(prefix="miniaster-study-")
+        self.keep = bool(args.work)
+        self.elements = args.elements.split(",") if args.elements else ALL_ELEMENTS
+        os.makedirs(self.out, exist_ok=True)
+        os.makedirs(self.work, exist_ok=True)
+        shown, skip = [], False
+        for a in sys.argv[1:]:  # the command line without the private folders
+            if skip:
+                skip = False
+            elif a in ("--work", "--build"):
+                skip = True
+            elif not a.startswith(("--work=", "--build=")):
+                shown.append(a)
+        self.command = "./miniaster study " + " ".join(shown)
+
+    def run(self, tag, comm, mesh):
+        return runner.run_case(self.binary, comm, mesh, os.path.join(self.work, tag), "case", self.args.timeout)
+
+    def mesh(self, element, n, **kw):
+        key = f"{element}_n{n}_" + "_".join(f"{k}{v}" for k, v in sorted(kw.items()))
+        path = os.path.join(self.work, "meshes", key.replace(" ", "").replace(",", "_") + ".med")
+        if not os.path.exists(path):
+            os.makedirs(os.path.dirname(path), exist_ok=True)
+            runner.make_mesh(self.build, element, n, path, **kw)
+        return path
+
+    def header(self, title):
+        load = os.getloadavg()
+        return (f"# {title}\n\nMade by `{self.command}` on {datetime.date.today().isoformat()} "
+                f"(git {git_head()}, {platform.node()}, {os.cpu_count()} cores, load average at the end "
+                f"{load[0]:.1f}). Times are wall-clock seconds of a shared machine: compare orders of magnitude, "
+                f"not percents.\n\n")
+
+    def finish(self):
+        if not self.keep:
+            shutil.rmtree(self.work, ignore_errors=True)
+
+
+def git_head():
+    try:
+        return subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True, text=True,
+                              check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
+def write_text(path, text):
+    tmp = path + ".tmp"
+    with open(tmp, "w") as f:
+        f.write(text)
+    os.replace(tmp, path)
+
+
+def log(*a):
+    print(*a, flush=True)
+
+
+# ----------------------------------------------------------------------------------------------
+# smooth: convergence, solvers, trade curves
+
+SMOOTH_COLUMNS = ["element", "modelisation", "N", "h", "solver", "ordering", "dofs", "equations", "nonzeros",
+                  "t_mesh", "t_xfem", "t_setup", "t_numbering", "t_pattern", "t_assembly", "t_factorisation",
+                  "t_solve", "t_analysis_other", "t_analysis", "t_post", "t_commands", "wall", "peak_mb",
+                  "solver_peak_mb", "factor_entries", "newton", "residual", "l2_rel", "energy_rel", "l2_ref",
+                  "l2_ref_exact", "energy_ref", "energy_ref_exact", "min_fraction", "alarms", "diagnostic", "exit"]
+
+
+def smooth_grid(full):
+    n2 = [5, 11, 21, 41, 81, 161] + ([321, 641, 1001] if full else [])
+    n3 = [5, 11, 21, 41] + ([81, 161, 321] if full else [])
+    solver_points = [("quad4", 641), ("hexa8", 161)] if full else [("quad4", 161), ("hexa8", 41)]
+    solvers = ["MUMPS:AMD", "MUMPS:AMF", "MUMPS:PORD", "MUMPS:SCOTCH", "MUMPS:QAMD", "MULT_FRONT", "LDLT"]
+    return n2, n3, solver_points, solvers
+
+
+def smooth_case(ctx, element, n, solver="MUMPS"):
+    modelisation, dim = scenes.ELEMENTS[element]
+    h = 10.0 / n
+    thickness = h if dim == 3 else 1.0
+    mesh = ctx.mesh(element, n, zbounds=(0.0, h)) if dim == 3 else ctx.mesh(element, n)
+    comm = scenes.smooth_comm(element, solver=solver) + "FIN()\n"
+    rec = ctx.run(f"smooth_{element}_{n}_{solver.replace(':', '_')}", comm, mesh)
+    l2, energy, _, _ = smooth_field.exact_norms(modelisation, thickness=thickness)
+    rec.update(element=element, modelisation=modelisation, N=n, h=h, solver=solver, l2_ref_exact=l2,
+               energy_ref_exact=energy)
+    return rec
+
+
+def study_smooth(ctx):
+    n2, n3, solver_points, solvers = smooth_grid(ctx.args.full)
+    records = []
+    for element in ctx.elements:
+        ns = n2 if scenes.ELEMENTS[element][1] == 2 else n3
+        for n in ns:
+            rec = smooth_case(ctx, element, n)
+            records.append(rec)
+            log(f"smooth {element} N={n}: {rec.get('dofs')} dofs, L2 {rec.get('l2_rel', float('nan')):.3e}, "
+                f"energy {rec.get('energy_rel', float('nan')):.3e}, {rec['wall']:.1f} s, {rec.get('diagnostic')}")
+    for element, n in solver_points:
+        if element not in ctx.elements:
+            continue
+        for solver in solvers:
+            rec = smooth_case(ctx, element, n, solver)
+            records.append(rec)
+            log(f"smooth {element} N={n} {solver}: factorisation {rec.get('t_factorisation')} s, "
+                f"energy {rec.get('energy_rel', float('nan')):.3e}, {rec.get('diagnostic')}")
+    report.write_csv(os.path.join(ctx.out, "smooth.csv"), records, SMOOTH_COLUMNS)
+    base = [r for r in records if r["solver"] == "MUMPS"]
+
+    # rates on the finest points (h), per element
+    rates = []
+    for element in ctx.elements:
+        pts = sorted((r for r in base if r["element"] == element and r.get("l2_rel")), key=lambda r: -r["h"])
+        tail = pts[-4:]
+        tr = sorted((r for r in base if r["element"] == element and r.get("t_commands") and r.get("dofs")),
+                    key=lambda r: r["dofs"])
+        big = [r for r in tr if r["dofs"] >= 2e4]
+        if len(big) < 3:
+            big = tr[-3:]
+        rates.append({
+            "element": element, "modelisation": scenes.ELEMENTS[element][0],
+            "points": f"N = {tail[0]['N']}..{tail[-1]['N']}" if tail else "",
+            "energy_rate": report.fit_rate([r["h"] for r in tail], [r["energy_rel"] for r in tail]),
+            "l2_rate": report.fit_rate([r["h"] for r in tail], [r["l2_rel"] for r in tail]),
+            "time_exponent": report.fit_rate([r["dofs"] for r in big], [r["t_commands"] for r in big]),
+            "fact_exponent": report.fit_rate([r["dofs"] for r in big], [r.get("t_factorisation") for r in big]),
+            "energy_finest": tail[-1]["energy_rel"] if tail else None,
+            "l2_finest": tail[-1]["l2_rel"] if tail else None,
+        })
+
+    report.plot_error_vs_dofs(os.path.join(ctx.out, "smooth_error_vs_dofs.png"),
+                              {e: [(r["dofs"], r["h"], r.get("l2_rel"), r.get("energy_rel")) for r in base
+                                   if r["element"] == e and r.get("dofs")] for e in ctx.elements})
+    report.plot_trade(os.path.join(ctx.out, "smooth_error_vs_time.png"),
+                      {e: [(r["t_commands"], r.get("l2_rel"), r.get("energy_rel")) for r in base
+                           if r["element"] == e and r.get("t_commands")] for e in ctx.elements})
+    report.plot_time_vs_dofs(os.path.join(ctx.out, "smooth_time_vs_dofs.png"),
+                             {**{f"{e} total": [(r["dofs"], r.get("t_commands")) for r in base
+                                                if r["element"] == e and r.get("dofs")] for e in ctx.elements},
+                              **{f"{e} factorisation": [(r["dofs"], r.get("t_factorisation")) for r in base
+                                                        if r["element"] == e and r.get("dofs")]
+                                 for e in ctx.elements[:1]}})
+
+    md = ctx.header("Smooth manufactured scene: convergence, cost, solvers")
+    md += ("Scene: astest/smooth_*.comm (tools/study/scenes.py), four blocks with their own degree-5 field, open "
+           "traction-free interfaces, DDL_IMPO of the exact field on the outer boundary, FORCE_INTERNE = -div sigma. "
+           "3D: one layer of thickness h (cubic cells), u_z = 0. Errors are POST_ERREUR's relative errors: "
+           "L2 = DIFFERENCE/REFERENCE of DEPL_RELA, energy = sqrt(DIFFERENCE/REFERENCE) of ENER_RELA. "
+           "`ref. quad.` = relative difference between POST_ERREUR's REFERENCE (integrated by miniaster) and the "
+           "exact norm (tools/study/smooth_field.py).\n\n")
+    md += "## Convergence rates (least squares in h on the finest points)\n\n"
+    md += report.markdown_table(rates, [("element", "element", None), ("modelisation", "model", None),
+                                        ("points", "fit on", None), ("energy_rate", "energy rate (theory 1)", "f"),
+                                        ("l2_rate", "L2 rate (theory 2)", "f"), ("energy_finest", "energy err. finest", "e"),
+                                        ("l2_finest", "L2 err. finest", "e"),
+                                        ("time_exponent", "total time ~ DOFs^", "f"),
+                                        ("fact_exponent", "factorisation ~ DOFs^", "f")])
+    md += "\n![error vs DOFs](smooth_error_vs_dofs.png)\n\n![error vs time](smooth_error_vs_time.png)\n\n"
+    md += "![time vs DOFs](smooth_time_vs_dofs.png)\n\n"
+    for r in records:
+        if r.get("l2_ref") and r.get("l2_ref_exact"):
+            r["l2_ref_q"] = abs(r["l2_ref"] - r["l2_ref_exact"]) / r["l2_ref_exact"]
+        if r.get("energy_ref") and r.get("energy_ref_exact"):
+            r["energy_ref_q"] = abs(r["energy_ref"] - r["energy_ref_exact"]) / r["energy_ref_exact"]
+    cols = [("element", "element", None), ("N", "N", None), ("dofs", "DOFs", None), ("l2_rel", "L2 err.", "e"),
+            ("energy_rel", "energy err.", "e"), ("t_mesh", "mesh", "t"), ("t_xfem", "X-FEM set-up", "t"),
+            ("t_setup", "loads etc.", "t"), ("t_numbering", "numbering", "t"), ("t_pattern", "pattern", "t"),
+            ("t_assembly", "assembly", "t"), ("t_factorisation", "factor.", "t"), ("t_solve", "solve", "t"),
+            ("t_analysis_other", "forces+stresses", "t"), ("t_post", "post", "t"), ("t_commands", "total", "t"),
+            ("peak_mb", "peak MB", "t"), ("newton", "Newton it.", None), ("energy_ref_q", "ref. quad.", "e"),
+            ("alarms", "alarms", None)]
+    md += "## Mesh refinement (MUMPS, RENUM='AUTO')\n\nTimes in seconds.\n\n"
+    md += report.markdown_table(base, cols)
+    others = [r for r in records if r["solver"] != "MUMPS"]
+    if others:
+        md += "\n## Linear solvers\n\n"
+        md += report.markdown_table(others, [("element", "element", None), ("N", "N", None), ("dofs", "DOFs", None),
+                                             ("solver", "SOLVEUR", None), ("ordering", "ordering used", None),
+                                             ("factor_entries", "factor entries", None),
+                                             ("t_factorisation", "factor. (s)", "t"), ("t_solve", "solve (s)", "t"),
+                                             ("solver_peak_mb", "solver MB", None), ("peak_mb", "peak MB", "t"),
+                                             ("residual", "rel. residual", "e"), ("energy_rel", "energy err.", "e")])
+    md += ("\nSub-cell quadrature is not a user choice in miniaster (docs/xfem.md: fixed families per element "
+           "type, as code_aster's catalogues), so it is not a dimension of this grid.\n")
+    write_text(os.path.join(ctx.out, "smooth.md"), md)
+    return records
+
+
+# ----------------------------------------------------------------------------------------------
+# stability: extreme inputs on the rigid scene
+
+STAB_COLUMNS = ["family", "label", "element", "N", "offset", "E", "NU", "size", "solver", "dofs", "l2_rel",
+                "strain_rel", "error", "verdict", "cond1", "cond2", "diag_ratio", "residual", "min_fraction",
+                "dropped", "snapped", "alarms", "diagnostic", "exit", "failure"]
+
+
+def stability_points(full):
+    pts = []
+    eps = [10.0 ** -k for k in range(1, 13)]
+    for element in (["quad4", "tria3", "hexa8", "tetra4"] if full else ["quad4", "tria3", "hexa8"]):
+        n = 10 if scenes.ELEMENTS[element][1] == 2 else 6
+        for e in (eps if element in ("quad4", "tria3") or full else [1e-1, 1e-4, 1e-8, 1e-12]):
+            pts.append(dict(family="offset", label=f"eps={e:.0e}", element=element, N=n, offset=e))
+        pts.append(dict(family="through nodes", label="interfaces on grid lines", element=element, N=n, offset=0.0))
+        pts.append(dict(family="cell centres", label="odd N", element=element, N=n + 1, offset=0.0))
+    for E in [1e-3, 1.0, 1e3, 1e6, 1e9, 1e12]:
+        pts.append(dict(family="E", label=f"E={E:.0e}", element="quad4", N=11, E=E))
+    pts.append(dict(family="units", label="m, N, Pa (E=2e11 Pa)", element="quad4", N=11, E=2e11, size=1.0))
+    pts.append(dict(family="units", label="mm, N, MPa (E=2e5 MPa)", element="quad4", N=11, E=2e5, size=1e3))
+    for nu in [0.0, 0.2, 0.3, 0.45, 0.49, 0.499, 0.4999]:
+        pts.append(dict(family="NU", label=f"NU={nu}", element="quad4", N=11, NU=nu))
+        if full:
+            pts.append(dict(family="NU", label=f"NU={nu}", element="hexa8", N=7, NU=nu))
+    for s in [1e-6, 1e-3, 1.0, 1e3, 1e6]:
+        pts.append(dict(family="size", label=f"size={s:.0e}", element="quad4", N=11, size=s))
+    if full:
+        for solver in ["MULT_FRONT", "LDLT"]:
+            for e in [1e-2, 1e-6, 1e-10]:
+                pts.append(dict(family="offset " + solver, label=f"eps={e:.0e}", element="quad4", N=10, offset=e,
+                                solver=solver))
+    return pts
+
+
+def stability_case(ctx, p, tag):
+    element = p["element"]
+    dim = scenes.ELEMENTS[element][1]
+    size = p.get("size", 1.0)
+    E, NU = p.get("E", 100.0e6), p.get("NU", 0.3)
+    solver = p.get("solver", "MUMPS")
+    a = 5.0 * size
+    kw = dict(bounds=(-a, a, -a, a))
+    if dim == 3:
+        kw["zbounds"] = (0.0, size)
+    if p.get("offset"):
+        kw["offset"] = (p["offset"], p["offset"])
+    mesh = ctx.mesh(element, p["N"], **kw)
+    rec = ctx.run(tag, scenes.rigid_comm(element, E=E, NU=NU, size=size, solver=solver, info=2), mesh)
+    rec.update({k: v for k, v in p.items()}, E=E, NU=NU, size=size, solver=solver, offset=p.get("offset", 0.0))
+    # strain error: rms strain of the computed field relative to the rigid motion's u/L = 0.2
+    # (energy W = integral of w(sigma_h) ~ E eps^2 / 2)
+    volume = (2 * a) ** 2 * (size if dim == 3 else 1.0)
+    if "energy_diff" in rec:
+        rec["strain_rel"] = math.sqrt(max(rec["energy_diff"], 0.0) * 2.0 / (E * volume)) / 0.2
+    errs = [rec.get("l2_rel"), rec.get("strain_rel")]
+    if rec.get("exit") == 1:
+        rec["verdict"] = "refused (error)"
+    elif None in errs:
+        rec["verdict"] = "no result"
+    else:
+        rec["error"] = max(errs)
+        lost = not (rec["error"] <= 1e-9)
+        if not lost:
+            rec["verdict"] = "kept"
+        elif rec.get("alarms"):
+            rec["verdict"] = "lost, alarm"
+        else:
+            rec["verdict"] = "LOST SILENTLY"
+    return rec
+
+
+def study_stability(ctx):
+    records = []
+    for i, p in enumerate(stability_points(ctx.args.full)):
+        if p["element"] not in ctx.elements:
+            continue
+        rec = stability_case(ctx, p, f"stab_{i:03d}")
+        records.append(rec)
+        log(f"stability {p['family']} {p['label']} {p['element']}: error {rec.get('error', float('nan')):.2e}, "
+            f"cond1 {rec.get('cond1', float('nan')):.2e}, alarms [{rec.get('alarms', '')}] -> {rec['verdict']}")
+    report.write_csv(os.path.join(ctx.out, "stability.csv"), records, STAB_COLUMNS)
+    cols = [("family", "family", None), ("label", "point", None), ("element", "element", None), ("N", "N", None),
+            ("dofs", "DOFs", None), ("l2_rel", "L2 rel.", "e"), ("strain_rel", "strain rel.", "e"),
+            ("cond1", "MUMPS cond1", "e"), ("cond2", "cond2", "e"), ("residual", "rel. residual", "e"),
+            ("min_fraction", "smallest fraction kept", "e"), ("dropped", "dropped", None),
+            ("snapped", "LSN snapped", None), ("alarms", "alarms", None), ("verdict", "verdict", None)]
+    md = ctx.header("Stability sweep on the ssnv511a rigid scene")
+    md += ("Scene: tools/study/scenes.py `rigid_comm` (ssnv511a loading: DX = -0.25, -0.5, 0.75, 1 per block on "
+           "the sides x = +-a, DY = 0), MECA_STATIQUE INFO=2 (MUMPS condition estimates RINFOG(10/11) when MUMPS "
+           "is the solver). The exact answer is piecewise rigid for every point. Error = max(L2 relative error "
+           "of POST_ERREUR DEPL_RELA, rms strain of the computed field / (u/L)) where the strain comes from "
+           "ENER_RELA against sigma = 0. Verdict: `kept` when the error is <= 1e-9, `lost, alarm` when it is "
+           "larger and the .mess carries an alarm, **LOST SILENTLY** otherwise (a defect). Offsets: the interior "
+           "grid lines are moved by eps cell sizes (tools/ssnv511_mesh --offset eps eps), so that the interfaces "
+           "X=0 and Y=0 run eps*h from a row of nodes.\n\n")
+    silent = [r for r in records if r["verdict"] == "LOST SILENTLY"]
+    md += f"**{len(silent)} silent loss(es) of precision out of {len(records)} points.**\n\n"
+    md += report.markdown_table(records, cols)
+    for fam, fname, xlabel, key, logx in (("offset", "stability_offset.png", "eps (interface offset / h)", "offset", True),
+                                          ("E", "stability_E.png", "E", "E", True),
+                                          ("NU", "stability_nu.png", "NU", "NU", False),
+                                          ("size", "stability_size.png", "domain size factor", "size", True)):
+        series = {}
+        for r in records:
+            if r["family"].split()[0] == fam and r.get("error") is not None:
+                series.setdefault(r["element"] + ("" if r["family"] == fam else " " + r["family"].split()[1]),
+                                  []).append((r[key], r["error"], bool(r.get("alarms"))))
+        if series:
+            report.plot_sweep(os.path.join(ctx.out, fname), f"rigid scene: {fam}", xlabel, series, logx=logx)
+            md += f"\n![{fam}]({fname})\n"
+    write_text(os.path.join(ctx.out, "stability.md"), md)
+    return records
+
+
+# ----------------------------------------------------------------------------------------------
+# perf: ssnv511a-type scene refined
+
+PERF_COLUMNS = ["element", "N", "solver", "dofs", "equations", "nonzeros", "t_mesh", "t_xfem", "t_setup",
+                "t_numbering", "t_pattern", "t_assembly", "setup_assembly", "us_per_dof", "t_factorisation", "t_solve",
+                "fact_solve", "t_analysis_other", "t_post", "t_commands", "ratio_total", "ratio_compute", "wall",
+                "peak_mb", "solver_peak_mb", "factor_entries", "l2_rel", "residual", "diagnostic"]
+
+
+def study_perf(ctx):
+    ns = [101, 301, 1001] if ctx.args.full else [101, 301]
+    records = []
+    for n in ns:
+        mesh = ctx.mesh("quad4", n)
+        rec = ctx.run(f"perf_{n}", scenes.rigid_comm("quad4", info=1), mesh)
+        rec.update(element="quad4", N=n, solver="MUMPS")
+        # set-up + assembly: everything before the factorisation that scales with the mesh
+        rec["setup_assembly"] = sum(rec.get(k, 0.0) for k in ("t_mesh", "t_xfem", "t_setup", "t_numbering",
+                                                               "t_pattern", "t_assembly"))
+        if rec.get("dofs"):
+            rec["us_per_dof"] = 1e6 * rec["setup_assembly"] / rec["dofs"]
+        rec["fact_solve"] = rec.get("t_factorisation", 0.0) + rec.get("t_solve", 0.0)
+        if rec["fact_solve"] > 0:
+            rec["ratio_total"] = rec.get("t_commands", 0.0) / rec["fact_solve"]
+            rec["ratio_compute"] = (rec.get("t_commands", 0.0) - rec.get("t_post", 0.0)) / rec["fact_solve"]
+        records.append(rec)
+        log(f"perf N={n}: {rec.get('dofs')} dofs, set-up+assembly {rec['setup_assembly']:.2f} s "
+            f"({rec.get('us_per_dof', float('nan')):.2f} us/dof), factorisation+solve {rec['fact_solve']:.2f} s, "
+            f"total {rec.get('t_commands', float('nan')):.2f} s")
+    report.write_csv(os.path.join(ctx.out, "perf.csv"), records, PERF_COLUMNS)
+    md = ctx.header("Refined ssnv511a scene: set-up and assembly against the factorisation")
+    md += ("Scene: tools/study/scenes.py `rigid_comm('quad4')` = ssnv511a's model and loads (three interfaces with "
+           "junctions, DDL_IMPO functions, MECA_STATIQUE, MUMPS RENUM='AUTO') on tools/ssnv511_mesh QUAD4 N x N, "
+           "plus POST_ERREUR DEPL_RELA/ENER_RELA as post-processing. set-up + assembly = LIRE_MAILLAGE + "
+           "DEFI_FISS_XFEM x3 + MODI_MODELE_XFEM + the other set-up commands + numbering + matrix pattern + "
+           "stiffness assembly. Targets (issue 8): set-up + assembly <= 1 us per DOF, total <= 1.3 x "
+           "(factorisation + solve); `total/(f+s)` counts every command, `without post` leaves out "
+           "POST_ERREUR/CREA_CHAMP/IMPR_TABLE.\n\n")
+    md += report.markdown_table(records, [
+        ("N", "N", None), ("dofs", "DOFs", None), ("equations", "equations", None), ("t_mesh", "mesh", "t"),
+        ("t_xfem", "X-FEM set-up", "t"), ("t_setup", "other set-up", "t"), ("t_numbering", "numbering", "t"),
+        ("t_pattern", "pattern", "t"), ("t_assembly", "assembly", "t"), ("setup_assembly", "set-up+assembly", "t"),
+        ("us_per_dof", "us/DOF", "f"), ("t_factorisation", "factorisation", "t"), ("t_solve", "solve", "t"),
+        ("t_analysis_other", "other analysis", "t"), ("t_post", "post", "t"), ("t_commands", "total", "t"),
+        ("ratio_total", "total/(f+s)", "f"), ("ratio_compute", "without post", "f"), ("peak_mb", "peak MB", "t"),
+        ("l2_rel", "L2 rel. err.", "e")])
+    write_text(os.path.join(ctx.out, "perf.md"), md)
+    return records
+
+
+# ----------------------------------------------------------------------------------------------
+# astest: the small smooth cases with their checks
+
+ASTEST_N = {"quad4": 11, "tria3": 11, "hexa8": 11, "tetra4": 11}
+
+
+def study_astest(ctx):
+    import csv
+    table = os.path.join(ctx.out, "smooth.csv")
+    if not os.path.exists(table):
+        sys.exit(f"study astest: {table} is missing (run `./miniaster study smooth` first: the error bounds of "
+                 "the cases come from the convergence fit)")
+    with open(table) as f:
+        rows = [r for r in csv.DictReader(f) if r["solver"] == "MUMPS" and r["l2_rel"]]
+    for element in ctx.elements:
+        modelisation, dim = scenes.ELEMENTS[element]
+        n = ASTEST_N[element]
+        h = 10.0 / n
+        pts = sorted(((float(r["h"]), float(r["l2_rel"]), float(r["energy_rel"])) for r in rows
+                      if r["element"] == element), reverse=True)
+        tail = pts[-4:]
+        bounds = {}
+        for idx, name in ((1, "l2"), (2, "energy")):
+            p = report.fit_rate([t[0] for t in tail], [t[idx] for t in tail])
+            # C from the fitted line through the finest point, then extrapolated to the case's h
+            c = tail[-1][idx] / tail[-1][0] ** p
+            bounds[name] = (p, c, 1.25 * c * h ** p)
+        case = f"smooth_{element}"
+        mesh = os.path.join(ROOT, "astest", case + ".mmed")
+        kw = dict(zbounds=(0.0, h)) if dim == 3 else {}
+        runner.make_mesh(ctx.build, element, n, mesh, **kw)
+        thickness = h if dim == 3 else 1.0
+        l2_exact, energy_exact, _, _ = smooth_field.exact_norms(modelisation, thickness=thickness)
+        base = scenes.smooth_comm(element, title=f"Smooth manufactured scene, project case {case} (N = {n})")
+        probe = ctx.run(case + "_probe", base + "FIN()\n", mesh)
+        if probe.get("exit") != 0 or "l2_rel" not in probe:
+            sys.exit(f"study astest: the probe run of {case} failed: {probe.get('failure')}")
+        tests = astest_checks(n, h, bounds, probe, l2_exact, energy_exact)
+        write_text(os.path.join(ROOT, "astest", case + ".comm"), base + tests + "\nFIN()\n")
+        write_text(os.path.join(ROOT, "astest", case + ".export"),
+                   f"P time_limit 60\nP memory_limit 512\nP ncpus 1\nP testlist verification sequential\n\n"
+                   f"F comm {case}.comm D 1\nF mmed {case}.mmed D 20\nF mess {case}.mess R 6\nF resu {case}.resu R 8\n")
+        final = runner.run_case(ctx.binary, base + tests + "\nFIN()\n", mesh, os.path.join(ctx.work, case), case,
+                                ctx.args.timeout)
+        log(f"astest {case}: exit {final['exit']}, L2 {probe['l2_rel']:.4e} (bound {bounds['l2'][2]:.3e}), "
+            f"energy {probe['energy_rel']:.4e} (bound {bounds['energy'][2]:.3e}), {final['diagnostic']}")
+
+
+def astest_checks(n, h, bounds, probe, l2_exact, energy_exact):
+    """TEST_TABLE block of an astest smooth case."""
+    # POST_ERREUR integrates the reference with the model's rules (not exact for this degree-10
+    # integrand): allow 3x the quadrature error seen, at least 1e-6
+    tol_l2 = max(1e-6, 3 * abs(probe["l2_ref"] - l2_exact) / l2_exact)
+    tol_en = max(1e-6, 3 * abs(probe["energy_ref"] - energy_exact) / energy_exact)
+    pl2, cl2, bl2 = bounds["l2"]
+    pen, cen, ben = bounds["energy"]
+    en_diff_bound = ben ** 2 * energy_exact  # energy error bound as an energy (DIFFERENCE column)
+    t = []
+    t.append("")
+    t.append("# ---- checks (generated by `./miniaster study astest` from docs/study/smooth.csv) ----")
+    t.append("# REFERENCE columns: exact norms of the manufactured field (analytic integrals, smooth_field.exact_norms),")
+    t.append("# up to the quadrature error of POST_ERREUR's own integration of the degree-10 integrand.")
+    t.append(f"# Error bounds: 1.25 x C h^p with (C, p) fitted on the convergence study at the finest meshes")
+    t.append(f"# (L2: p = {pl2:.3f}, C = {cl2:.4e}; energy: p = {pen:.3f}, C = {cen:.4e}), h = 10/{n}.")
+    t.append(f"L2_EXACT = {l2_exact!r}")
+    t.append(f"ENERGY_EXACT = {energy_exact!r}")
+    t.append("TEST_TABLE(TABLE=TAB_L2, NOM_PARA='REFERENCE', FILTRE=_F(NOM_PARA='GROUP_MA', VALE_K='TOTAL'),")
+    t.append(f"           VALE_CALC={probe['l2_ref']!r}, REFERENCE='ANALYTIQUE', VALE_REFE=L2_EXACT,")
+    t.append(f"           CRITERE='RELATIF', PRECISION={tol_l2:.1e})")
+    t.append("TEST_TABLE(TABLE=TAB_NRJ, NOM_PARA='REFERENCE', FILTRE=_F(NOM_PARA='GROUP_MA', VALE_K='TOTAL'),")
+    t.append(f"           VALE_CALC={probe['energy_ref']!r}, REFERENCE='ANALYTIQUE', VALE_REFE=ENERGY_EXACT,")
+    t.append(f"           CRITERE='RELATIF', PRECISION={tol_en:.1e})")
+    t.append("# the exact solution has no error: |computed error - 0| <= bound")
+    t.append("TEST_TABLE(TABLE=TAB_L2, NOM_PARA='ERREUR RELATIVE', FILTRE=_F(NOM_PARA='GROUP_MA', VALE_K='TOTAL'),")
+    t.append(f"           VALE_CALC={probe['l2_rel']!r}, REFERENCE='ANALYTIQUE', VALE_REFE=0.0,")
+    t.append(f"           CRITERE='ABSOLU', PRECISION={bl2:.3e})")
+    t.append("TEST_TABLE(TABLE=TAB_NRJ, NOM_PARA='DIFFERENCE', FILTRE=_F(NOM_PARA='GROUP_MA', VALE_K='TOTAL'),")
+    t.append(f"           VALE_CALC={probe['energy_diff']!r}, REFERENCE='ANALYTIQUE', VALE_REFE=0.0,")
+    t.append(f"           CRITERE='ABSOLU', PRECISION={en_diff_bound:.4e})")
+    return "\n".join(t) + "\n"
+
+
+def check_field(_ctx=None):
+    failures = []
+    for modelisation in ("D_PLAN", "C_PLAN", "3D"):
+        for E, NU in ((100.0e6, 0.3), (2.0e11, 0.0), (1.0, 0.49)):
+            failures += smooth_field.check(modelisation, E, NU)
+    for modelisation in ("D_PLAN", "C_PLAN"):
+        l2, energy, _, _ = smooth_field.exact_norms(modelisation)
+        print(f"exact norms ({modelisation}, E=1e8, NU=0.3): ||u||_L2 = {l2!r}, energy = {energy!r}")
+    return 1 if failures else 0
+
+
+def main():
+    ap = argparse.ArgumentParser(prog="miniaster study", description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("name", choices=["smooth", "stability", "perf", "all", "check-field", "astest"])
+    ap.add_argument("--full", action="store_true", help="the big grid (2D up to N=1001, perf at N=1001)")
+    ap.add_argument("--out", default=os.path.join(ROOT, "docs", "study"))
+    ap.add_argument("--work", default=None, help="keep the runs in this folder (default: temporary, removed)")
+    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
+    ap.add_argument("--elements", default=None, help="comma-separated subset of quad4,tria3,hexa8,tetra4")
+    ap.add_argument("--timeout", type=float, default=1800.0, help="seconds per run")
+    args = ap.parse_args()
+    if args.name == "check-field":
+        return check_field()
+    ctx = Context(args)
+    if not os.path.exists(ctx.binary):
+        sys.exit(f"study: {ctx.binary} not found (build first)")
+    try:
+        if args.name in ("smooth", "all"):
+            study_smooth(ctx)
+        if args.name in ("stability", "all"):
+            study_stability(ctx)
+        if args.name in ("perf", "all"):
+            study_perf(ctx)
+        if args.name == "astest":
+            study_astest(ctx)
+    finally:
+        ctx.finish()
+    print(f"study {args.name}: tables and plots in {ctx.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
