@@ -19,18 +19,19 @@ double seconds(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-class EigenSolver : public LinearSolver {
+class EigenSolver : public ScaledDirectSolver {
 public:
-    explicit EigenSolver(const SolverOptions& options) : options_(options) {}
+    explicit EigenSolver(const SolverOptions& options) : ScaledDirectSolver(options) {}
     std::string name() const override { return "Eigen"; }
 
-    void factorize(const CsrMatrix& A, MatrixKind kind) override {
-        A_ = &A;
+protected:
+    void factorizeScaled(const CsrMatrix& A, std::span<const double> s, MatrixKind kind) override {
         const auto t0 = std::chrono::steady_clock::now();
         std::vector<Eigen::Triplet<double>> triplets;
         triplets.reserve(A.nonZeros());
         for (int i = 0; i < A.rows; ++i)
-            for (long long k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) triplets.emplace_back(i, A.cols[k], A.values[k]);
+            for (long long k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k)
+                triplets.emplace_back(i, A.cols[k], s[i] * A.values[k] * s[A.cols[k]]);
         Eigen::SparseMatrix<double> M(A.rows, A.rows);
         M.setFromTriplets(triplets.begin(), triplets.end());
         M.makeCompressed();
@@ -55,21 +56,13 @@ public:
                     spd_ ? "AMD" : "COLAMD", seconds(t0));
     }
 
-    double solve(std::span<double> rhs) override {
-        const auto t0 = std::chrono::steady_clock::now();
+    void solveScaled(std::span<double> rhs) override {
         Eigen::Map<Eigen::VectorXd> b(rhs.data(), static_cast<Eigen::Index>(rhs.size()));
-        const std::vector<double> original(rhs.begin(), rhs.end());
         Eigen::VectorXd x = spd_ ? Eigen::VectorXd(ldlt_.solve(b)) : Eigen::VectorXd(lu_.solve(b));
         b = x;
-        const double residual = relativeResidual(*A_, rhs, original);
-        msg().infof("    Eigen solve {:.3f} s, relative residual ||Ku-f||/||f|| = {:.3e}", seconds(t0), residual);
-        checkSolution(rhs, residual, options_);
-        return residual;
     }
 
 private:
-    SolverOptions options_;
-    const CsrMatrix* A_ = nullptr;
     bool spd_ = true;
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt_;
     Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu_;

@@ -1,8 +1,11 @@
 #pragma once
 // Direct solvers behind one interface: MUMPS (sequential, the default, SOLVEUR METHODE='MUMPS')
-// and Eigen's sparse factorisations (METHODE='MULT_FRONT' / 'LDLT'). Each logs the system size,
-// non-zeros, ordering, factorisation and solve times and the residual ||Ax - b|| / ||b||; a
-// singular matrix raises NumericalError with the likely cause.
+// and Eigen's sparse factorisations (METHODE='MULT_FRONT' / 'LDLT'). Both factorise the
+// symmetrically diagonal-scaled matrix D^-1/2 A D^-1/2 and refine the solution iteratively
+// (transparent to callers: A, b and x are the unscaled ones). Each logs the system size,
+// non-zeros, ordering, scaling, factorisation and solve times, the residual ||Ax - b|| / ||b||
+// and the componentwise backward error; a singular matrix raises NumericalError with the likely
+// cause.
 #include <memory>
 #include <span>
 #include <string>
@@ -23,6 +26,8 @@ struct SolverOptions {
     int pcentPivot = 20;           // MUMPS workspace relaxation (%)
     std::string typeResol = "AUTO";  // MUMPS TYPE_RESOL: SYMDEF forces SYM=1 on SPD systems
     bool conditionEstimate = false;  // MUMPS ICNTL(11)=1: condition numbers (costs a few solves)
+    bool diagonalScaling = true;     // factorise D^-1/2 A D^-1/2 (code_aster: PRETRAITEMENTS)
+    int maxRefinementSteps = 3;      // iterative refinement while it helps; 0 = none (POSTTRAITEMENTS)
     int info = 1;
     // Appended to the "singular system" message: what the caller knows about likely causes.
     std::string singularHint =

@@ -1,7 +1,8 @@
 #pragma once
-// Internal to src/solver: the concrete solvers and shared checks.
+// Internal to src/solver: the concrete solvers and what they share (scaling, refinement, checks).
 #include <memory>
 #include <span>
+#include <vector>
 
 #include "solver/LinearSolver.hpp"
 
@@ -13,5 +14,45 @@ std::unique_ptr<LinearSolver> makeEigenSolver(const SolverOptions& options);
 // NaN/Inf in the solution -> NumericalError; a large residual -> alarm (the caller decides what
 // the residual means for convergence).
 void checkSolution(std::span<const double> x, double residual, const SolverOptions& options);
+
+// Symmetric diagonal (Jacobi) scaling s with S A S of unit diagonal: s_i = |a_ii|^-1/2. Rows with
+// a zero diagonal (Lagrange multipliers) get s_i = 1 / max_j |a_ij| s_j over the scaled columns,
+// so that their entries are of order one too (1 when the row is empty: the pivot stays null).
+std::vector<double> symmetricDiagonalScaling(const CsrMatrix& A);
+
+// Residual r = b - A x accumulated in extended precision (long double) and the two backward
+// errors: normwise ||r|| / ||b|| and componentwise max_i |r_i| / (|A| |x| + |b|)_i.
+struct ResidualInfo {
+    double normwise = 0.0;
+    double componentwise = 0.0;
+};
+ResidualInfo residualOf(const CsrMatrix& A, std::span<const double> x, std::span<const double> b,
+                        std::vector<double>& r);
+
+// What MUMPS and Eigen share: the factorisation is done on S A S (S from
+// symmetricDiagonalScaling), solutions are mapped back, the residual is measured on the unscaled
+// system and, while the componentwise backward error is above a few ulps and keeps decreasing,
+// iterative refinement steps (residual in extended precision, correction with the same factors)
+// are made. Why: an enrichment whose support is cut in a small fraction f has a stiffness row of
+// order f; a backward-stable solve determines it only to eps/f relative, which shows directly in
+// the lip displacement. Refinement brings every row's equation to round-off of its own size.
+class ScaledDirectSolver : public LinearSolver {
+public:
+    explicit ScaledDirectSolver(const SolverOptions& options) : options_(options) {}
+    void factorize(const CsrMatrix& A, MatrixKind kind) final;
+    double solve(std::span<double> rhs) final;
+
+protected:
+    // Factorise S A S (entries a_ij s_i s_j), S given by `scale` (all ones when scaling is off).
+    virtual void factorizeScaled(const CsrMatrix& A, std::span<const double> scale, MatrixKind kind) = 0;
+    // Solve (S A S) y = rhs in place with the factors.
+    virtual void solveScaled(std::span<double> rhs) = 0;
+
+    SolverOptions options_;
+
+private:
+    const CsrMatrix* A_ = nullptr;
+    std::vector<double> scale_;
+};
 
 }  // namespace ma
