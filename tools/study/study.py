@@ -435,8 +435,8 @@ def study_astest(ctx):
         tests = astest_checks(n, h, bounds, probe, l2_exact, energy_exact)
         write_text(os.path.join(ROOT, "astest", case + ".comm"), base + tests + "\nFIN()\n")
         write_text(os.path.join(ROOT, "astest", case + ".export"),
-                   f"P time_limit 60\nP memory_limit 512\nP ncpus 1\nP testlist verification sequential\n\n"
-                   f"F comm {case}.comm D 1\nF mmed {case}.mmed D 20\nF mess {case}.mess R 6\nF resu {case}.resu R 8\n")
+                   f"P time_limit 60\nP memory_limit 256\nP ncpus 1\nP testlist verification sequential\n\n"
+                   f"F comm {case}.comm D 1\nF mmed {case}.mmed D 20\n")
         final = runner.run_case(ctx.binary, base + tests + "\nFIN()\n", mesh, os.path.join(ctx.work, case), case,
                                 ctx.args.timeout)
         log(f"astest {case}: exit {final['exit']}, L2 {probe['l2_rel']:.4e} (bound {bounds['l2'][2]:.3e}), "
