@@ -72,6 +72,12 @@ def parse_mess(text):
     m = re.search(r"diagonal scaling D\^-1/2 K D\^-1/2: \|K_ii\| from " + NUM + " to " + NUM, text)
     if m:
         r["diag_ratio"] = _f(m.group(1)) / _f(m.group(2)) if _f(m.group(2)) > 0 else float("nan")
+    contact = re.findall(r"increment \d+ \(INST [^)]*\): (\d+) contact iteration", text)
+    if contact:
+        r["contact_iterations"] = sum(int(c) for c in contact)
+    m = re.findall(r"largest interpenetration " + NUM, text)
+    if m:
+        r["penetration"] = max(_f(x) for x in m)
     newton = re.findall(r"converged after (\d+) iteration", text)
     if newton:
         r["newton"] = sum(int(n) for n in newton)

@@ -162,3 +162,80 @@ def rigid_comm(element, E=100.0e6, NU=0.3, size=1.0, solver="MUMPS", info=2, pos
         add("IMPR_TABLE(TABLE=TAB_NRJ, FORMAT_R='E24.16')")
     add("FIN()")
     return "\n".join(lines) + "\n"
+
+
+def compression_comm(element, algo="STANDARD", coef=None, E=100.0e6, NU=0.3, solver="MUMPS"):
+    """ssnv511e/f-type scene with contact (2D): pressures 1e6 / 2e6 on LH and LD by halves, rollers on
+    LG and LB (DX = H1X = 0, DY = H1Y = 0), DEFI_CONTACT FORMULATION='XFEM' on the three interfaces
+    with ALGO_CONT = algo (COEF_PENA_CONT = coef for 'PENALISATION'). Exact answer: uniform stresses
+    per block (sxx = -p(y), syy = -p(x)), closed interfaces; POST_ERREUR against it. With the penalty
+    every interface is crossed by pressure / coef, which shifts the blocks rigidly: the L2 error is
+    analytic (see `penalty_expected_l2`) and the stresses stay exact."""
+    modelisation, dim = ELEMENTS[element]
+    if dim != 2:
+        raise NotImplementedError("the compression scene of the study is 2D (ssnv511e/f)")
+    zone = f"ALGO_CONT='{algo}'" + (f", COEF_PENA_CONT={coef!r}" if algo == "PENALISATION" else "")
+    plane_stress = modelisation == "C_PLAN"
+    return f"""# ssnv511e/f-type compression with X-FEM contact, {element.upper()} ({modelisation}), {algo} (tools/study)
+DEBUT(CODE=_F(NIV_PUB_WEB='INTERNET'))
+E = {E!r}
+NU = {NU!r}
+MAILLAG = LIRE_MAILLAGE(FORMAT='MED')
+MODELEIN = AFFE_MODELE(MAILLAGE=MAILLAG, AFFE=_F(GROUP_MA=('SURF', 'LH', 'LD'), PHENOMENE='MECANIQUE',
+                                                 MODELISATION='{modelisation}'))
+LN1 = FORMULE(VALE='Y', NOM_PARA=['X', 'Y'])
+LN2 = FORMULE(VALE='X', NOM_PARA=['X', 'Y'])
+FISS1 = DEFI_FISS_XFEM(MAILLAGE=MAILLAG, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN1))
+FISS2 = DEFI_FISS_XFEM(MAILLAGE=MAILLAG, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2),
+                       JONCTION=_F(FISSURE=FISS1, POINT=(0, 5)))
+FISS3 = DEFI_FISS_XFEM(MAILLAGE=MAILLAG, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2),
+                       JONCTION=_F(FISSURE=FISS1, POINT=(0, -5)))
+MODELEK = MODI_MODELE_XFEM(MODELE_IN=MODELEIN, FISSURE=(FISS1, FISS2, FISS3), CONTACT='STANDARD')
+CTXFEM = DEFI_CONTACT(MODELE=MODELEK, FORMULATION='XFEM', ITER_CONT_MAXI=10,
+                      ZONE=[_F(INTEGRATION='NOEUD', CONTACT_INIT='OUI', GLISSIERE='NON', FISS_MAIT=F, {zone})
+                            for F in (FISS1, FISS2, FISS3)])
+ACIER = DEFI_MATERIAU(ELAS=_F(E=E, NU=NU))
+CHAMPMAT = AFFE_MATERIAU(MAILLAGE=MAILLAG, MODELE=MODELEK, AFFE=_F(TOUT='OUI', MATER=ACIER))
+def pression(s):
+    return 1.0E6 if s < 0 else 2.0E6
+PRES_H = FORMULE(VALE='pression(X)', pression=pression, NOM_PARA='X')
+PRES_D = FORMULE(VALE='pression(Y)', pression=pression, NOM_PARA='Y')
+CH1 = AFFE_CHAR_MECA_F(MODELE=MODELEK, PRES_REP=(_F(GROUP_MA='LH', PRES=PRES_H), _F(GROUP_MA='LD', PRES=PRES_D)))
+CH2 = AFFE_CHAR_MECA(MODELE=MODELEK, DDL_IMPO=(_F(GROUP_MA='LB', DY=0.0, H1Y=0.0), _F(GROUP_MA='LG', DX=0.0, H1X=0.0)))
+L_INST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, NOMBRE=1))
+RESU = STAT_NON_LINE(MODELE=MODELEK, CHAM_MATER=CHAMPMAT, CONTACT=CTXFEM, EXCIT=(_F(CHARGE=CH1), _F(CHARGE=CH2)),
+                     COMPORTEMENT=_F(RELATION='ELAS', GROUP_MA='SURF'), INCREMENT=_F(LIST_INST=L_INST),
+                     CONVERGENCE=_F(ITER_GLOB_MAXI=20, RESI_GLOB_MAXI=1.0E-6), SOLVEUR=_F({solveur_text(solver)}))
+# exact field: uniform stresses per block, blocks in contact
+def strain(x, y):
+    sxx, syy = -pression(y), -pression(x)
+    if {plane_stress!r}:
+        return ((sxx - NU * syy) / E, (syy - NU * sxx) / E)
+    return (((1 - NU * NU) * sxx - NU * (1 + NU) * syy) / E, ((1 - NU * NU) * syy - NU * (1 + NU) * sxx) / E)
+def ux(x, y):
+    return strain(-1.0, y)[0] * (min(x, 0.0) + 5.0) + strain(1.0, y)[0] * max(x, 0.0)
+def uy(x, y):
+    return strain(x, -1.0)[1] * (min(y, 0.0) + 5.0) + strain(x, 1.0)[1] * max(y, 0.0)
+UX = FORMULE(VALE='ux(X, Y)', ux=ux, NOM_PARA=['X', 'Y'])
+UY = FORMULE(VALE='uy(X, Y)', uy=uy, NOM_PARA=['X', 'Y'])
+SXX = FORMULE(VALE='-pression(Y)', pression=pression, NOM_PARA=['X', 'Y'])
+SYY = FORMULE(VALE='-pression(X)', pression=pression, NOM_PARA=['X', 'Y'])
+SZZ = FORMULE(VALE='{0.0 if plane_stress else 1.0} * -NU * (pression(X) + pression(Y))', pression=pression, NU=NU,
+              NOM_PARA=['X', 'Y'])
+UCAL = CREA_CHAMP(OPERATION='EXTR', TYPE_CHAM='NOEU_DEPL_R', RESULTAT=RESU, NOM_CHAM='DEPL', NUME_ORDRE=1)
+SCAL = CREA_CHAMP(OPERATION='EXTR', TYPE_CHAM='ELGA_SIEF_R', RESULTAT=RESU, NOM_CHAM='SIEF_ELGA', NUME_ORDRE=1)
+TAB_L2 = POST_ERREUR(OPTION='DEPL_RELA', CHAM_GD=UCAL, MODELE=MODELEK, GROUP_MA='SURF', DX=UX, DY=UY)
+TAB_NRJ = POST_ERREUR(OPTION='ENER_RELA', CHAM_GD=SCAL, MODELE=MODELEK, DEFORMATION='PETIT', CHAM_MATER=CHAMPMAT,
+                      GROUP_MA='SURF', SIXX=SXX, SIYY=SYY, SIZZ=SZZ)
+IMPR_TABLE(TABLE=TAB_L2, FORMAT_R='E24.16')
+IMPR_TABLE(TABLE=TAB_NRJ, FORMAT_R='E24.16')
+FIN()
+"""
+
+
+def penalty_expected_l2(coef, l2_ref):
+    """L2 error of the penalised compression scene: each interface is crossed by pressure/coef,
+    block 1 (x<0<y) moves by (0, -1e6/k), block 4 (y<0<x) by (-1e6/k, 0), block 3 by (-2e6/k, -2e6/k)
+    (each block has area 25)."""
+    d = [1e6 / coef, 2e6 / coef, 1e6 / coef, 2e6 / coef]
+    return (25.0 * sum(x * x for x in d)) ** 0.5 / l2_ref

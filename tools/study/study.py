@@ -3,6 +3,7 @@
 
     ./miniaster study smooth      [--full]   convergence of the smooth manufactured scene
     ./miniaster study stability   [--full]   extreme inputs on the ssnv511a rigid scene
+    ./miniaster study penalty     [--full]   exact contact vs penalty (COEF_PENA_CONT 1e4..1e20), ssnv511e/f
     ./miniaster study perf        [--full]   set-up/assembly vs factorisation on ssnv511a (N=1001 with --full)
     ./miniaster study all         [--full]   the three above
     ./miniaster study check-field            checks of the manufactured field (derivatives, tractions)
@@ -346,6 +347,60 @@ def study_stability(ctx):
 
 
 # ----------------------------------------------------------------------------------------------
+# penalty: exact contact (STANDARD) against the penalty (PENALISATION, COEF_PENA_CONT) on ssnv511e/f
+
+PENALTY_COLUMNS = ["element", "N", "algo", "coef", "dofs", "l2_rel", "expected_l2", "energy_rel", "penetration",
+                   "contact_iterations", "newton", "cond1", "residual", "t_factorisation", "t_commands", "alarms",
+                   "diagnostic", "exit", "failure"]
+
+
+def study_penalty(ctx):
+    coefs = [10.0 ** k for k in range(4, 21, 2)] if ctx.args.full else [1e4, 1e6, 1e8, 1e10, 1e12, 1e14, 1e16, 1e18, 1e20]
+    ns = [11, 41] if ctx.args.full else [11]
+    records = []
+    for element in [e for e in ctx.elements if scenes.ELEMENTS[e][1] == 2]:
+        for n in ns:
+            mesh = ctx.mesh(element, n)
+            for algo, coef in [("STANDARD", None)] + [("PENALISATION", c) for c in coefs]:
+                rec = ctx.run(f"pen_{element}_{n}_{algo}_{coef}", scenes.compression_comm(element, algo, coef), mesh)
+                rec.update(element=element, N=n, algo=algo, coef=coef if coef else "")
+                if coef and rec.get("l2_ref"):
+                    rec["expected_l2"] = scenes.penalty_expected_l2(coef, rec["l2_ref"])
+                records.append(rec)
+                log(f"penalty {element} N={n} {algo} {coef or ''}: L2 {rec.get('l2_rel', float('nan')):.3e} "
+                    f"(expected {rec.get('expected_l2', 0.0):.3e}), energy {rec.get('energy_rel', float('nan')):.2e}, "
+                    f"contact it. {rec.get('contact_iterations')}, [{rec.get('alarms', '')}] {rec.get('diagnostic')}")
+    report.write_csv(os.path.join(ctx.out, "penalty.csv"), records, PENALTY_COLUMNS)
+    md = ctx.header("Exact contact against the penalty (ssnv511e/f compression)")
+    md += ("Scene: tools/study/scenes.py `compression_comm` (ssnv511e loading: pressures 1e6/2e6 on LH and LD, "
+           "rollers on LG and LB, DEFI_CONTACT FORMULATION='XFEM' on the three interfaces, CONTACT_INIT='OUI'), "
+           "STAT_NON_LINE. The exact answer has uniform stresses per block and closed interfaces. With "
+           "PENALISATION every interface is crossed by pressure/COEF_PENA_CONT: `expected L2` is that analytic "
+           "rigid shift (the error of the method); the energy error should stay at round-off.\n\n")
+    md += report.markdown_table(records, [
+        ("element", "element", None), ("N", "N", None), ("algo", "ALGO_CONT", None), ("coef", "COEF_PENA_CONT", "e"),
+        ("dofs", "DOFs", None), ("l2_rel", "L2 err.", "e"), ("expected_l2", "expected L2 (p/k)", "e"),
+        ("energy_rel", "energy err.", "e"), ("penetration", "interpenetration", "e"),
+        ("contact_iterations", "contact it.", None), ("newton", "Newton it.", None), ("cond1", "MUMPS cond1", "e"),
+        ("t_commands", "total (s)", "t"), ("alarms", "alarms", None), ("diagnostic", "diagnostic", None)])
+    series = {}
+    for r in records:
+        if r["algo"] == "PENALISATION" and r.get("l2_rel") is not None:
+            series.setdefault(f"{r['element']} N={r['N']} L2", []).append((r["coef"], r["l2_rel"], bool(r.get("alarms"))))
+            series.setdefault(f"{r['element']} N={r['N']} energy", []).append(
+                (r["coef"], r.get("energy_rel") or 0.0, bool(r.get("alarms"))))
+    exp = [(r["coef"], r["expected_l2"], False) for r in records if r.get("expected_l2") and r["element"] == records[0]["element"]
+           and r["N"] == records[0]["N"]]
+    if exp:
+        series["expected L2 = shift p/k"] = exp
+    report.plot_sweep(os.path.join(ctx.out, "penalty_error_vs_coef.png"), "penalty error vs COEF_PENA_CONT",
+                      "COEF_PENA_CONT", series, threshold=1e-9)
+    md += "\n![penalty](penalty_error_vs_coef.png)\n"
+    write_text(os.path.join(ctx.out, "penalty.md"), md)
+    return records
+
+
+# ----------------------------------------------------------------------------------------------
 # perf: ssnv511a-type scene refined
 
 PERF_COLUMNS = ["element", "N", "solver", "dofs", "equations", "nonzeros", "t_mesh", "t_xfem", "t_setup",
@@ -491,7 +546,7 @@ def check_field(_ctx=None):
 def main():
     ap = argparse.ArgumentParser(prog="miniaster study", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("name", choices=["smooth", "stability", "perf", "all", "check-field", "astest"])
+    ap.add_argument("name", choices=["smooth", "stability", "penalty", "perf", "all", "check-field", "astest"])
     ap.add_argument("--full", action="store_true", help="the big grid (2D up to N=1001, perf at N=1001)")
     ap.add_argument("--out", default=os.path.join(ROOT, "docs", "study"))
     ap.add_argument("--work", default=None, help="keep the runs in this folder (default: temporary, removed)")
@@ -509,6 +564,8 @@ def main():
             study_smooth(ctx)
         if args.name in ("stability", "all"):
             study_stability(ctx)
+        if args.name in ("penalty", "all"):
+            study_penalty(ctx)
         if args.name in ("perf", "all"):
             study_perf(ctx)
         if args.name == "astest":
