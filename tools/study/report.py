@@ -132,7 +132,8 @@ def plot_time_vs_dofs(path, series, fit_min_dofs=2e4):
     _save(fig, path)
 
 
-def plot_sweep(path, title, xlabel, series, threshold=1e-9, logx=True):
+def plot_sweep(path, title, xlabel, series, threshold=1e-9, logx=True,
+               ylabel="error (max of L2 rel., strain rel.)"):
     """series: {label: [(x, error, alarmed), ...]}: error vs parameter, filled markers = alarm."""
     fig, ax = plt.subplots(figsize=(7, 4.5))
     for label, pts in series.items():
@@ -148,8 +149,8 @@ def plot_sweep(path, title, xlabel, series, threshold=1e-9, logx=True):
     if logx:
         ax.set_xscale("log")
     ax.set_xlabel(xlabel)
-    ax.set_ylabel("error (max of L2 rel., strain rel.)")
-    ax.set_title(title + "  (o = alarm in .mess, x = none; dashed: 1e-9)")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title + "\n(o = alarm in the .mess, x = none; dashed line: 1e-9)", fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     _save(fig, path)

@@ -394,7 +394,7 @@ def study_penalty(ctx):
     if exp:
         series["expected L2 = shift p/k"] = exp
     report.plot_sweep(os.path.join(ctx.out, "penalty_error_vs_coef.png"), "penalty error vs COEF_PENA_CONT",
-                      "COEF_PENA_CONT", series, threshold=1e-9)
+                      "COEF_PENA_CONT", series, threshold=1e-9, ylabel="relative error (L2, energy norm)")
     md += "\n![penalty](penalty_error_vs_coef.png)\n"
     write_text(os.path.join(ctx.out, "penalty.md"), md)
     return records
