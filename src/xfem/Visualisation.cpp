@@ -8,6 +8,7 @@
 #include <map>
 
 #include "core/Error.hpp"
+#include "fe/MechanicalProblem.hpp"
 #include "fe/Quadrature.hpp"
 #include "fe/ShapeFunctions.hpp"
 #include "xfem/CellGeometry.hpp"
@@ -48,6 +49,77 @@ bool clashes(const std::string& digits, const VisualisationNames& names) {
         }
     }
     return false;
+}
+
+// Contact pressure at an interface node of the visualisation: the normal stress n.sigma.n of the
+// node's own side (sub-cell) at the point, n = the interface normal (level-set gradient), kept
+// <= 0 (an open interface carries no pressure). With the consistent contact of src/contact the
+// normal stress is continuous across the interface and equals the contact pressure (Nitsche:
+// min(P, 0) with a zero gap; penalty: kappa * gap, weakly). NaN when the node is on no interface
+// with contact.
+template <class Value>
+double contactPressure(const XfemModel& xm, const MaterialField& material, Modelisation modelisation,
+                       const VisualisationNode& vn, const Value& value) {
+    const Mesh& mesh = xm.mesh();
+    const CellCut& cut = *xm.cut(vn.parentCell);
+    if (cut.skin) return std::nan("");
+    const auto& point = cut.points[vn.point];
+    const auto& sub = cut.subcells[vn.subcell];
+    int crack = -1;
+    for (size_t j = 0; j < cut.cracks.size() && crack < 0; ++j)
+        if (point.lsn[j] == 0.0 && sub.heaviside[j] != 0) crack = static_cast<int>(j);
+    if (crack < 0) return std::nan("");
+    const auto nodes = mesh.cellNodes(vn.parentCell);
+    const int n = static_cast<int>(nodes.size());
+    const int dim = xm.dim();
+    std::array<double, 8> N{};
+    std::array<double, 24> dN{};
+    shapeValues(cut.type, point.ref, N);
+    shapeDerivatives(cut.type, point.ref, dN);
+    // Jacobian and physical gradients.
+    double J[3][3] = {};
+    for (int a = 0; a < n; ++a)
+        for (int i = 0; i < dim; ++i)
+            for (int k = 0; k < dim; ++k) J[i][k] += mesh.coords[nodes[a]][i] * dN[3 * a + k];
+    double inv[3][3] = {};
+    if (dim == 2) {
+        const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+        inv[0][0] = J[1][1] / det, inv[0][1] = -J[0][1] / det, inv[1][0] = -J[1][0] / det, inv[1][1] = J[0][0] / det;
+    } else {
+        const double det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) - J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+                           J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+        for (int i = 0; i < 3; ++i)
+            for (int k = 0; k < 3; ++k) {
+                const int i1 = (k + 1) % 3, i2 = (k + 2) % 3, k1 = (i + 1) % 3, k2 = (i + 2) % 3;
+                inv[i][k] = (J[i1][k1] * J[i2][k2] - J[i1][k2] * J[i2][k1]) / det;  // (J^-1)_{ik}
+            }
+    }
+    // du_c/dx_j of the node's side and the interface normal (level-set gradient).
+    double G[3][3] = {};
+    std::array<double, 3> normal{};
+    const Crack& c = *cut.lsnCracks[crack];
+    for (int a = 0; a < n; ++a) {
+        double g[3] = {};
+        for (int j = 0; j < dim; ++j)
+            for (int k = 0; k < dim; ++k) g[j] += inv[k][j] * dN[3 * a + k];
+        for (int j = 0; j < dim; ++j) normal[j] += c.lsn[nodes[a]] * g[j];
+        for (int k = 0; k <= xm.activeSlots(nodes[a]); ++k) {
+            const double psi = k == 0 ? 1.0 : xm.psi(nodes[a], k, cut, vn.subcell);
+            if (psi == 0.0) continue;
+            for (int comp = 0; comp < dim; ++comp)
+                for (int j = 0; j < dim; ++j) G[comp][j] += psi * value(nodes[a], k, comp) * g[j];
+        }
+    }
+    const double len = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+    if (len == 0.0) return std::nan("");
+    for (auto& v : normal) v /= len;
+    const Material& mat = material.at(vn.parentCell);
+    const IsotropicLaw law = IsotropicLaw::from(mat, modelisation, mat.name);
+    double tr = 0.0, nGn = 0.0;
+    for (int j = 0; j < dim; ++j) tr += G[j][j];
+    for (int i = 0; i < dim; ++i)
+        for (int j = 0; j < dim; ++j) nGn += normal[i] * G[i][j] * normal[j];
+    return std::min(law.lambdaEff * tr + 2.0 * law.mu * nGn, 0.0);
 }
 
 }  // namespace
@@ -190,6 +262,10 @@ std::shared_ptr<Result> visualisationResult(const Result& input, const std::shar
 
     std::vector<std::string> comps = dim == 3 ? std::vector<std::string>{"DX", "DY", "DZ"}
                                               : std::vector<std::string>{"DX", "DY"};
+    // Contact models: the contact pressure LAGS_C (<= 0 in compression, code_aster's sign) at the
+    // interface nodes, after the displacement components (docs/contact.md).
+    const bool withContact = xm->contact() == XfemContact::Standard && input.material;
+    if (withContact) comps.push_back("LAGS_C");
     std::array<double, 8> N{};
     for (const auto& step : input.steps) {
         ResultStep s;
@@ -229,6 +305,10 @@ std::shared_ptr<Result> visualisationResult(const Result& input, const std::shar
                     }
                 }
                 for (int j = 0; j < dim; ++j) field->set(v, j, u[j]);
+                if (withContact && vn.onCrack && vn.original < 0) {
+                    const double lagsC = contactPressure(*xm, *input.material, model.modelisation, vn, value);
+                    if (!std::isnan(lagsC)) field->set(v, dim, lagsC);
+                }
             }
             s.nodalFields.emplace_back("DEPL", field);
         }
