@@ -48,7 +48,16 @@ ContactIncrementReport solveIncrementWithContact(MechanicalProblem& problem, Con
         const auto before = terms.inspect(problem.u);
         msg().infof("    INST {:g} contact iteration {}: {} active contact points of {}", inst, it, before.active,
                     before.points);
-        const auto report = problem.solveIncrement(inst, options);
+        IncrementReport report;
+        try {
+            report = problem.solveIncrement(inst, options);
+        } catch (const NumericalError& e) {
+            if (before.active > 0) throw;
+            throw NumericalError(fmt::format("{}\nNo contact point is active (CONTACT_INIT='NON'): blocks held only by the "
+                                             "contact float; start with CONTACT_INIT='OUI' or hold every block by "
+                                             "boundary conditions",
+                                             e.what()));
+        }
         out.newtonIterations += report.iterations;
         out.lastNewton = report;
         const StatusReport st = terms.updateStatus(problem.u);
