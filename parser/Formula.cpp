@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <pybind11/eval.h>
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -32,20 +34,64 @@ import math as _math
 
 _MATH = {k: getattr(_math, k) for k in dir(_math) if not k.startswith("_")}
 
-def evaluate_many(code, context, comm_globals, values, npar):
+# Whole-batch evaluation with numpy arrays for the parameters. Only the math names that numpy
+# implements with the same meaning are swapped; anything else (user functions with `if`,
+# math.floor, min/max...) raises on arrays and the batch falls back to the point loop, which is
+# also rerun whenever the vector result is not finite, so that errors carry Python's own message.
+try:
+    import numpy as _np
+    _NUMPY_MATH = {k: getattr(_np, v) for k, v in {
+        "sin": "sin", "cos": "cos", "tan": "tan", "asin": "arcsin", "acos": "arccos",
+        "atan": "arctan", "atan2": "arctan2", "sinh": "sinh", "cosh": "cosh", "tanh": "tanh",
+        "exp": "exp", "log10": "log10", "sqrt": "sqrt", "fabs": "fabs", "hypot": "hypot",
+        "pow": "power"}.items()}
+except ImportError:
+    _np = None
+
+_VECTOR_MIN = 16
+
+def _scope(context, comm_globals, math_names):
     # Name lookup, innermost first: parameters, context objects, math, the command file's globals
     # (read at each batch, so that pre-2018 files see the functions they define).
     g = dict(comm_globals)
-    g.update(_MATH)
+    g.update(math_names)
     g.update(context)
     g["__builtins__"] = _builtins
-    f = eval(code, g)
-    n = len(values) // npar if npar else 1
+    return g
+
+def _evaluate_vector(code, context, comm_globals, array, npar, n):
+    math_names = dict(_MATH)
+    math_names.update(_NUMPY_MATH)
+    try:
+        f = eval(code, _scope(context, comm_globals, math_names))
+        with _np.errstate(all="ignore"):
+            r = _np.asarray(f(*[array[:, j] for j in range(npar)]), dtype=float)
+    except Exception:
+        return None
+    if r.shape == ():
+        r = _np.full(n, float(r))
+    if r.shape != (n,) or not _np.isfinite(r).all():
+        return None
+    return r
+
+def evaluate_many(code, context, comm_globals, array, npar):
+    # `array`: numpy (n, npar) array when numpy is there, else a flat list.
+    if _np is not None:
+        n = array.shape[0]
+        if n >= _VECTOR_MIN:
+            r = _evaluate_vector(code, context, comm_globals, array, npar, n)
+            if r is not None:
+                return r, -1, ""
+        rows = array.tolist()
+    else:
+        n = len(array) // npar if npar else 1
+        rows = [array[i * npar:(i + 1) * npar] for i in range(n)]
+    f = eval(code, _scope(context, comm_globals, _MATH))
     out = [0.0] * n
     i = 0
     try:
         for i in range(n):
-            out[i] = float(f(*values[i * npar:(i + 1) * npar]))
+            out[i] = float(f(*rows[i]))
     except Exception as e:
         return None, i, "%s: %s" % (type(e).__name__, e)
     return out, -1, ""
@@ -62,6 +108,9 @@ py::module_& supportModule() {
     }();
     return *module;
 }
+
+// numpy lets a whole batch go through Python as one array (see kFormulaSupport).
+bool numpyAvailable() { return !supportModule().attr("_np").is_none(); }
 
 bool isIdentifier(const std::string& s) { return py::str(s).attr("isidentifier")().cast<bool>(); }
 }  // namespace
@@ -126,12 +175,26 @@ std::vector<double> Formula::evaluateMany(std::span<const double> args, size_t n
                                     fmt::join(parameters_, ", "), npoints ? args.size() / npoints : args.size()));
     if (npoints == 0) return {};
     py::gil_scoped_acquire gil;
-    py::list values(args.size());
-    for (size_t i = 0; i < args.size(); ++i) values[i] = py::float_(args[i]);
-    py::tuple result = python_->evaluator(python_->code, python_->context, python_->commGlobals, values, np);
+    py::object batch;
+    if (numpyAvailable()) {
+        py::array_t<double> array({npoints, np});
+        std::copy(args.begin(), args.end(), array.mutable_data());
+        batch = std::move(array);
+    } else {
+        py::list values(args.size());
+        for (size_t i = 0; i < args.size(); ++i) values[i] = py::float_(args[i]);
+        batch = std::move(values);
+    }
+    py::tuple result = python_->evaluator(python_->code, python_->context, python_->commGlobals, batch, np);
     const long failed = result[1].cast<long>();
     if (failed >= 0) fail(args.subspan(size_t(failed) * np, np), result[2].cast<std::string>());
-    std::vector<double> out = result[0].cast<std::vector<double>>();
+    std::vector<double> out(npoints);
+    if (py::isinstance<py::array>(result[0])) {
+        auto values = result[0].cast<py::array_t<double, py::array::c_style | py::array::forcecast>>();
+        std::copy(values.data(), values.data() + npoints, out.begin());
+    } else {
+        out = result[0].cast<std::vector<double>>();
+    }
     for (size_t i = 0; i < out.size(); ++i)
         if (!std::isfinite(out[i]))
             fail(args.subspan(i * np, np), std::isnan(out[i]) ? "the result is nan" : fmt::format("the result is {}", out[i]));

@@ -12,6 +12,12 @@
 namespace py = pybind11;
 using ma::test::runComm;
 
+namespace {
+// One interpreter for the whole test program, never finalised: like the real run (numpy and the
+// formula support module cannot survive an interpreter restart).
+void ensurePython() { static auto* interpreter = new py::scoped_interpreter(); (void)interpreter; }
+}  // namespace
+
 TEST(ParserFormula, EvaluationFromTheCommandFile) {
     auto r = runComm(R"(
 DEBUT()
@@ -59,7 +65,7 @@ TEST(ParserFormula, WrongNumberOfArgumentsIsAPythonError) {
 
 // Batch evaluation in-process: one entry into Python for all points, values and failures.
 TEST(ParserFormula, EvaluateManyInOneBatch) {
-    py::scoped_interpreter python;
+    ensurePython();
     py::dict context;
     context["shift"] = py::float_(0.5);
     py::dict globals;
@@ -94,4 +100,40 @@ TEST(ParserFormula, EvaluateManyInOneBatch) {
     EXPECT_THROW(h.evaluateMany(one, 1), ma::UserError);  // math domain error
     EXPECT_THROW(ma::Formula("X +", {"X"}, py::dict(), py::dict(), "x.comm", 1), ma::UserError);
     EXPECT_THROW(ma::Formula("X", {"X Y"}, py::dict(), py::dict(), "x.comm", 1), ma::UserError);
+}
+
+// Large batches go through numpy as whole arrays; expressions numpy cannot take (user functions
+// with `if`, math names without a numpy twin) fall back to the point loop, and so does a batch
+// with a non-finite value, so that the error names the point and Python's own message.
+TEST(ParserFormula, VectorisedBatchesAgreeWithThePointLoop) {
+    ensurePython();
+    py::dict globals;
+    py::exec("def depx(x, y):\n    if y > 0 and x < 0: return -0.25\n    return 1.0\n", globals);
+    const size_t n = 1000;
+    std::vector<double> args(2 * n);
+    for (size_t i = 0; i < n; ++i) {
+        args[2 * i] = -5.0 + 10.0 * double(i) / n;
+        args[2 * i + 1] = 5.0 - 7.0 * double(i) / n;
+    }
+    for (const char* expression : {"X*Y - 3*X**2 + Y/7", "sin(X)*cos(Y) + exp(X/5) + sqrt(X*X + 1) + atan2(Y, X)",
+                                   "depx(X, Y) * 2", "floor(X) + log(X*X + 1)", "2.5"}) {
+        ma::Formula f(expression, {"X", "Y"}, py::dict(), globals, "/tmp/x.comm", 3);
+        auto batch = f.evaluateMany(args, n);
+        ASSERT_EQ(batch.size(), n) << expression;
+        for (size_t i = 0; i < n; ++i) {
+            const double single = f.evaluate(std::span<const double>(args).subspan(2 * i, 2));
+            EXPECT_NEAR(batch[i], single, 4e-16 * std::max(1.0, std::abs(single))) << expression << " at " << i;
+        }
+    }
+    ma::Formula g("1.0/(X - 2.0)", {"X"}, py::dict(), py::dict(), "/tmp/x.comm", 7);
+    g.name = "G";
+    std::vector<double> xs(100);
+    for (size_t i = 0; i < xs.size(); ++i) xs[i] = double(i) * 0.5;
+    try {
+        g.evaluateMany(xs, xs.size());
+        FAIL();
+    } catch (const ma::UserError& e) {
+        EXPECT_STREQ(e.what(), "formula G = '1.0/(X - 2.0)' (FORMULE defined in x.comm, line 7) failed for X=2: "
+                               "ZeroDivisionError: float division by zero");
+    }
 }
