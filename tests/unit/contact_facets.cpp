@@ -59,8 +59,12 @@ void checkFacets(const Case& k) {
             right = right || s > 1e-12;
         }
         EXPECT_FALSE(left && right) << "facet crosses the junction";
-        if (f.crack == 1) EXPECT_FALSE(left);   // FISS2 only above FISS1
-        if (f.crack == 2) EXPECT_FALSE(right);  // FISS3 only below
+        if (f.crack == 1) {
+            EXPECT_FALSE(left);  // FISS2 only above FISS1
+        }
+        if (f.crack == 2) {
+            EXPECT_FALSE(right);  // FISS3 only below
+        }
         EXPECT_GT(f.pairMeasure, 0.0);
     }
     EXPECT_NEAR(measure[0], 10.0, 1e-12);
