@@ -45,6 +45,24 @@ void localDofs(const Mesh& mesh, const DofNumbering& numbering, const ElementInt
             }
 }
 
+// Displacement gradient G[c][j] = du_c/dx_j at point p of an element (all slots, psi included).
+void displacementGradient(const ElementIntegration& ei, const PointGeometry& geo, const std::vector<int>& dofs,
+                          const std::vector<double>& u, size_t p, int dim, double G[3][3]) {
+    for (int c = 0; c < 3; ++c)
+        for (int j = 0; j < 3; ++j) G[c][j] = 0.0;
+    const int n = ei.nodeCount;
+    int i = 0;
+    for (int a = 0; a < n; ++a) {
+        const double* ga = &geo.gradN[(p * n + a) * 3];
+        for (int k = 0; k < ei.slots[a]; ++k) {
+            const double pa = ei.multiplier(int(p), a, k);
+            for (int c = 0; c < dim; ++c, ++i)
+                if (pa != 0.0)
+                    for (int j = 0; j < dim; ++j) G[c][j] += pa * u[dofs[i]] * ga[j];
+        }
+    }
+}
+
 }  // namespace
 
 IsotropicLaw IsotropicLaw::from(const Material& m, Modelisation modelisation, const std::string& where) {
@@ -373,9 +391,7 @@ void MechanicalProblem::assembleMatrix() {
     std::vector<std::pair<int, int>> sorted;  // (equation, local index)
     for (size_t e = 0; e < model_->elements.size(); ++e) {
         const auto& element = model_->elements[e];
-        const ElementIntegration* ei = &scratch;
-        if (!enrichedIntegrations_.empty() && enrichedIntegrations_[e].nodeCount > 0) ei = &enrichedIntegrations_[e];
-        else classicalIntegration(mesh, element.cell, false, scratch);
+        const ElementIntegration* ei = &integrationOf(e, scratch);
         computePointGeometry(mesh, element.cell, dim, false, *ei, geo);
         localDofs(mesh, *numbering_, *ei, dofs);
         const int nd = static_cast<int>(dofs.size());
@@ -482,6 +498,12 @@ void MechanicalProblem::assembleMatrix() {
                 c.multi.empty() ? "" : fmt::format(", multiplier scaling {:.3e}", alpha_));
 }
 
+const ElementIntegration& MechanicalProblem::integrationOf(size_t e, ElementIntegration& scratch) const {
+    if (!enrichedIntegrations_.empty() && enrichedIntegrations_[e].nodeCount > 0) return enrichedIntegrations_[e];
+    classicalIntegration(*model_->mesh, model_->elements[e].cell, false, scratch);
+    return scratch;
+}
+
 void MechanicalProblem::internalForces(const std::vector<double>& disp, std::vector<double>& f) const {
     const Mesh& mesh = *model_->mesh;
     const int dim = numbering_->dim();
@@ -492,9 +514,7 @@ void MechanicalProblem::internalForces(const std::vector<double>& disp, std::vec
     std::vector<double> fe;
     for (size_t e = 0; e < model_->elements.size(); ++e) {
         const auto& element = model_->elements[e];
-        const ElementIntegration* ei = &scratch;
-        if (!enrichedIntegrations_.empty() && enrichedIntegrations_[e].nodeCount > 0) ei = &enrichedIntegrations_[e];
-        else classicalIntegration(mesh, element.cell, false, scratch);
+        const ElementIntegration* ei = &integrationOf(e, scratch);
         computePointGeometry(mesh, element.cell, dim, false, *ei, geo);
         localDofs(mesh, *numbering_, *ei, dofs);
         const Material& mat = material_->at(element.cell);
@@ -502,24 +522,15 @@ void MechanicalProblem::internalForces(const std::vector<double>& disp, std::vec
         fe.assign(dofs.size(), 0.0);
         const int n = ei->nodeCount;
         for (size_t p = 0; p < ei->refPoints.size(); ++p) {
-            double G[3][3] = {};  // G[c][j] = du_c/dx_j
-            int i = 0;
-            for (int a = 0; a < n; ++a) {
-                const double* ga = &geo.gradN[(p * n + a) * 3];
-                for (int k = 0; k < ei->slots[a]; ++k) {
-                    const double pa = ei->multiplier(int(p), a, k);
-                    for (int c = 0; c < dim; ++c, ++i)
-                        if (pa != 0.0)
-                            for (int j = 0; j < dim; ++j) G[c][j] += pa * disp[dofs[i]] * ga[j];
-                }
-            }
+            double G[3][3];  // G[c][j] = du_c/dx_j
+            displacementGradient(*ei, geo, dofs, disp, p, dim, G);
             double tr = 0.0;
             for (int c = 0; c < dim; ++c) tr += G[c][c];
             double S[3][3];
             for (int c = 0; c < dim; ++c)
                 for (int j = 0; j < dim; ++j) S[c][j] = law.mu * (G[c][j] + G[j][c]) + (c == j ? law.lambdaEff * tr : 0.0);
             const double w = geo.weight[p];
-            i = 0;
+            int i = 0;
             for (int a = 0; a < n; ++a) {
                 const double* ga = &geo.gradN[(p * n + a) * 3];
                 for (int k = 0; k < ei->slots[a]; ++k) {
@@ -741,26 +752,15 @@ std::shared_ptr<GaussField> MechanicalProblem::stressField() const {
     std::vector<int> dofs;
     for (size_t e = 0; e < model_->elements.size(); ++e) {
         const auto& element = model_->elements[e];
-        const ElementIntegration* ei = &scratch;
-        if (!enrichedIntegrations_.empty() && enrichedIntegrations_[e].nodeCount > 0) ei = &enrichedIntegrations_[e];
-        else classicalIntegration(mesh, element.cell, false, scratch);
+        const ElementIntegration* ei = &integrationOf(e, scratch);
         computePointGeometry(mesh, element.cell, dim, false, *ei, geo);
         localDofs(mesh, *numbering_, *ei, dofs);
         const Material& mat = material_->at(element.cell);
         const IsotropicLaw law = IsotropicLaw::from(mat, element.modelisation, mat.name);
         field->cells.push_back(element.cell);
-        const int n = ei->nodeCount;
         for (size_t p = 0; p < ei->refPoints.size(); ++p) {
-            double G[3][3] = {};
-            int i = 0;
-            for (int a = 0; a < n; ++a) {
-                const double* ga = &geo.gradN[(p * n + a) * 3];
-                for (int k = 0; k < ei->slots[a]; ++k) {
-                    const double pa = ei->multiplier(int(p), a, k);
-                    for (int c = 0; c < dim; ++c, ++i)
-                        for (int j = 0; j < dim; ++j) G[c][j] += pa * u[dofs[i]] * ga[j];
-                }
-            }
+            double G[3][3];
+            displacementGradient(*ei, geo, dofs, u, p, dim, G);
             double tr = 0.0;
             for (int c = 0; c < dim; ++c) tr += G[c][c];
             auto sigma = [&](int a, int b) { return law.mu * (G[a][b] + G[b][a]) + (a == b ? law.lambdaEff * tr : 0.0); };

@@ -99,6 +99,8 @@ private:
     void buildPattern();
     void assembleMatrix();
     double loadFactor(const LoadCase& lc, double inst) const;
+    // The X-FEM description of element e when it is enriched, else its classical one (in scratch).
+    const ElementIntegration& integrationOf(size_t e, ElementIntegration& scratch) const;
 
     std::shared_ptr<const Model> model_;
     std::shared_ptr<const MaterialField> material_;
