@@ -67,6 +67,19 @@ def fit_rate(x, y):
 COLORS = {"quad4": "tab:blue", "tria3": "tab:orange", "hexa8": "tab:green", "tetra4": "tab:red"}
 
 
+def style(label):
+    """Line style of a series labelled '<element> [<variant> ...]': colour by element, line by variant
+    (open / no variant: solid, STANDARD: dashed, PENALISATION: dotted, one marker per coefficient)."""
+    words = label.split()
+    kw = {"color": COLORS.get(words[0]) if words else None, "linestyle": "-", "marker": "o"}
+    rest = " ".join(words[1:])
+    if "STANDARD" in rest:
+        kw.update(linestyle="--", marker="s", markerfacecolor="none")
+    elif "PENALISATION" in rest:
+        kw.update(linestyle=":", marker="^" if "e+10" in rest else "v")
+    return kw
+
+
 def _save(fig, path):
     fig.tight_layout()
     tmp = path + ".tmp.png"
@@ -77,7 +90,7 @@ def _save(fig, path):
 
 def plot_error_vs_dofs(path, series, fit_last=4):
     """series: {element: [(dofs, h, l2, energy), ...]} -> two panels, fitted rates in h in the legend."""
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    fig, axes = plt.subplots(1, 2, figsize=(12, 5.5))
     for ax, idx, name, theory in ((axes[0], 3, "energy norm", 1), (axes[1], 2, "L2 norm", 2)):
         for el, pts in series.items():
             pts = sorted(p for p in pts if p[idx])
@@ -87,7 +100,7 @@ def plot_error_vs_dofs(path, series, fit_last=4):
             e = [p[idx] for p in pts]
             rate = fit_rate([p[1] for p in pts[-fit_last:]], e[-fit_last:])
             label = f"{el}: rate in h {rate:.2f}" if rate is not None else el
-            ax.loglog(d, e, "o-", color=COLORS.get(el), label=label)
+            ax.loglog(d, e, label=label, **style(el))
         ax.set_xlabel("DOFs")
         ax.set_ylabel(f"relative error, {name}")
         ax.set_title(f"{name} (theory: h^{theory})")
@@ -98,13 +111,12 @@ def plot_error_vs_dofs(path, series, fit_last=4):
 
 def plot_trade(path, series):
     """series: {label: [(wall, l2, energy), ...]}: error against wall time."""
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    fig, axes = plt.subplots(1, 2, figsize=(12, 5.5))
     for ax, idx, name in ((axes[0], 2, "energy norm"), (axes[1], 1, "L2 norm")):
         for label, pts in series.items():
             pts = sorted(p for p in pts if p[idx] and p[0])
             if pts:
-                ax.loglog([p[0] for p in pts], [p[idx] for p in pts], "o-", label=label,
-                          color=COLORS.get(label.split()[0]))
+                ax.loglog([p[0] for p in pts], [p[idx] for p in pts], label=label, **style(label))
         ax.set_xlabel("wall time of the run (s)")
         ax.set_ylabel(f"relative error, {name}")
         ax.set_title(f"speed vs accuracy ({name})")
@@ -122,8 +134,9 @@ def plot_time_vs_dofs(path, series, fit_min_dofs=2e4):
             continue
         big = [p for p in pts if p[0] >= fit_min_dofs]
         rate = fit_rate([p[0] for p in big], [p[1] for p in big])
-        ax.loglog([p[0] for p in pts], [p[1] for p in pts], "o-",
-                  label=f"{label}: exponent {rate:.2f}" if rate is not None else label)
+        kw = style(label) if "factorisation" not in label else {"marker": "x", "color": "k"}
+        ax.loglog([p[0] for p in pts], [p[1] for p in pts],
+                  label=f"{label}: exponent {rate:.2f}" if rate is not None else label, **kw)
     ax.set_xlabel("DOFs")
     ax.set_ylabel("wall time (s)")
     ax.set_title(f"time vs DOFs (exponent fitted on DOFs >= {fit_min_dofs:.0e})")

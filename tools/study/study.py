@@ -19,6 +19,7 @@ import datetime
 import math
 import os
 import platform
+import re
 import shutil
 import subprocess
 import sys
@@ -100,13 +101,18 @@ def log(*a):
 
 
 # ----------------------------------------------------------------------------------------------
-# smooth: convergence, solvers, trade curves
+# smooth: convergence, solvers, trade curves, with and without contact at the junction
 
-SMOOTH_COLUMNS = ["element", "modelisation", "N", "h", "solver", "ordering", "dofs", "equations", "nonzeros",
-                  "t_mesh", "t_xfem", "t_setup", "t_numbering", "t_pattern", "t_assembly", "t_factorisation",
-                  "t_solve", "t_analysis_other", "t_analysis", "t_post", "t_commands", "wall", "peak_mb",
-                  "solver_peak_mb", "factor_entries", "newton", "residual", "l2_rel", "energy_rel", "l2_ref",
-                  "l2_ref_exact", "energy_ref", "energy_ref_exact", "min_fraction", "alarms", "diagnostic", "exit"]
+SMOOTH_COLUMNS = ["element", "modelisation", "contact", "N", "h", "solver", "ordering", "dofs", "equations",
+                  "nonzeros", "t_mesh", "t_xfem", "t_setup", "t_numbering", "t_pattern", "t_assembly",
+                  "t_factorisation", "t_solve", "t_analysis_other", "t_analysis", "t_post", "t_commands", "wall",
+                  "peak_mb", "solver_peak_mb", "factor_entries", "newton", "contact_iterations", "factorisations",
+                  "penetration", "residual", "l2_rel", "energy_rel", "l2_ref", "l2_ref_exact", "energy_ref",
+                  "energy_ref_exact", "min_fraction", "alarms", "diagnostic", "exit", "command", "git"]
+# COEF_PENA_CONT of the penalised rows (QUAD4): with E = 1e8 and normal tractions 2e5..5e5 Pa the
+# interpenetration p/kappa is 5e-5 and 5e-7 (the displacements are ~0.03)
+SMOOTH_PENALTIES = [1e10, 1e12]
+SMOOTH_PARTS = {"all": ("open", "contact"), "open": ("open",), "only": ("contact",)}
 
 
 def smooth_grid(full):
@@ -117,53 +123,91 @@ def smooth_grid(full):
     return n2, n3, solver_points, solvers
 
 
-def smooth_case(ctx, element, n, solver="MUMPS"):
+def smooth_contacts(element, parts):
+    """Contact settings of the grid: open interfaces, exact contact (STANDARD); QUAD4 also the penalty."""
+    out = [None] if "open" in parts else []
+    if "contact" in parts:
+        out.append("STANDARD")
+        if element == "quad4":
+            out += [("PENALISATION", k) for k in SMOOTH_PENALTIES]
+    return out
+
+
+def contact_rank(label):
+    """Table order of the contact labels: open, STANDARD, PENALISATION by coefficient."""
+    if label == "open":
+        return (0, 0.0)
+    if label == "STANDARD":
+        return (1, 0.0)
+    return (2, float(label.split()[-1]))
+
+
+def smooth_case(ctx, element, n, solver="MUMPS", contact=None):
     modelisation, dim = scenes.ELEMENTS[element]
     h = 10.0 / n
     thickness = h if dim == 3 else 1.0
     mesh = ctx.mesh(element, n, zbounds=(0.0, h)) if dim == 3 else ctx.mesh(element, n)
-    comm = scenes.smooth_comm(element, solver=solver) + "FIN()\n"
-    rec = ctx.run(f"smooth_{element}_{n}_{solver.replace(':', '_')}", comm, mesh)
-    l2, energy, _, _ = smooth_field.exact_norms(modelisation, thickness=thickness)
-    rec.update(element=element, modelisation=modelisation, N=n, h=h, solver=solver, l2_ref_exact=l2,
-               energy_ref_exact=energy)
+    comm = scenes.smooth_comm(element, solver=solver, contact=contact) + "FIN()\n"
+    label = scenes.contact_label(contact)
+    rec = ctx.run(f"smooth_{element}_{n}_{solver.replace(':', '_')}_{label.replace(' ', '_')}", comm, mesh)
+    l2, energy, _, _ = smooth_field.exact_norms(modelisation, thickness=thickness, contact=contact is not None)
+    rec.update(element=element, modelisation=modelisation, contact=label, N=n, h=h, solver=solver, l2_ref_exact=l2,
+               energy_ref_exact=energy, command=ctx.command, git=git_head())
     return rec
 
 
-def study_smooth(ctx):
-    n2, n3, solver_points, solvers = smooth_grid(ctx.args.full)
-    records = []
-    for element in ctx.elements:
-        ns = n2 if scenes.ELEMENTS[element][1] == 2 else n3
-        for n in ns:
-            rec = smooth_case(ctx, element, n)
-            records.append(rec)
-            report.write_csv(os.path.join(ctx.out, "smooth.csv"), records, SMOOTH_COLUMNS)  # progress
-            log(f"smooth {element} N={n}: {rec.get('dofs')} dofs, L2 {rec.get('l2_rel', float('nan')):.3e}, "
-                f"energy {rec.get('energy_rel', float('nan')):.3e}, {rec['wall']:.1f} s, {rec.get('diagnostic')}")
-    for element, n in solver_points:
-        if element not in ctx.elements:
-            continue
-        for solver in solvers:
-            rec = smooth_case(ctx, element, n, solver)
-            records.append(rec)
-            log(f"smooth {element} N={n} {solver}: factorisation {rec.get('t_factorisation')} s, "
-                f"energy {rec.get('energy_rel', float('nan')):.3e}, {rec.get('diagnostic')}")
-    report.write_csv(os.path.join(ctx.out, "smooth.csv"), records, SMOOTH_COLUMNS)
-    base = [r for r in records if r["solver"] == "MUMPS"]
+def read_records(path, default_command=""):
+    """Rows of a study CSV with numbers converted back (empty cells dropped); rows written before the
+    contact dimension existed are the open scene."""
+    import csv
+    out = []
+    with open(path) as f:
+        for row in csv.DictReader(f):
+            r = {}
+            for k, v in row.items():
+                if v is None or v == "":
+                    continue
+                try:
+                    r[k] = int(v)
+                except ValueError:
+                    try:
+                        r[k] = float(v)
+                    except ValueError:
+                        r[k] = v
+            r.setdefault("contact", "open")
+            r.setdefault("command", default_command)
+            out.append(r)
+    return out
 
-    # rates on the finest points (h), per element
+
+def previous_smooth_rows(ctx, parts):
+    """Rows of the existing smooth.csv that this run does not redo (partial runs: --contact, --elements)."""
+    path = os.path.join(ctx.out, "smooth.csv")
+    if not os.path.exists(path):
+        return []
+    made_by = ""
+    md = os.path.join(ctx.out, "smooth.md")
+    if os.path.exists(md):
+        with open(md) as f:
+            m = re.search(r"Made by `([^`]*)`", f.read())
+            made_by = m.group(1) if m else ""
+    redone = lambda r: r["element"] in ctx.elements and ("open" if r["contact"] == "open" else "contact") in parts
+    return [r for r in read_records(path, made_by) if not redone(r)]
+
+
+def smooth_rates(base, groups):
+    """Least-squares rates in h on the four finest meshes per (element, contact) group."""
     rates = []
-    for element in ctx.elements:
-        pts = sorted((r for r in base if r["element"] == element and r.get("l2_rel")), key=lambda r: -r["h"])
+    for element, contact in groups:
+        rows = [r for r in base if r["element"] == element and r["contact"] == contact]
+        pts = sorted((r for r in rows if r.get("l2_rel")), key=lambda r: -r["h"])
         tail = pts[-4:]
-        tr = sorted((r for r in base if r["element"] == element and r.get("t_commands") and r.get("dofs")),
-                    key=lambda r: r["dofs"])
+        tr = sorted((r for r in rows if r.get("t_commands") and r.get("dofs")), key=lambda r: r["dofs"])
         big = [r for r in tr if r["dofs"] >= 2e4]
         if len(big) < 3:
             big = tr[-3:]
         rates.append({
-            "element": element, "modelisation": scenes.ELEMENTS[element][0],
+            "element": element, "modelisation": scenes.ELEMENTS[element][0], "contact": contact,
             "points": f"N = {tail[0]['N']}..{tail[-1]['N']}" if tail else "",
             "energy_rate": report.fit_rate([r["h"] for r in tail], [r["energy_rel"] for r in tail]),
             "l2_rate": report.fit_rate([r["h"] for r in tail], [r["l2_rel"] for r in tail]),
@@ -171,33 +215,96 @@ def study_smooth(ctx):
             "fact_exponent": report.fit_rate([r["dofs"] for r in big], [r.get("t_factorisation") for r in big]),
             "energy_finest": tail[-1]["energy_rel"] if tail else None,
             "l2_finest": tail[-1]["l2_rel"] if tail else None,
+            "contact_iterations": max((r["contact_iterations"] for r in rows if "contact_iterations" in r), default=None),
+            "newton": max((r["newton"] for r in rows if "newton" in r), default=None),
         })
+    return rates
 
+
+def study_smooth(ctx):
+    n2, n3, solver_points, solvers = smooth_grid(ctx.args.full)
+    parts = SMOOTH_PARTS[ctx.args.contact]
+    partial = ctx.args.contact != "all" or ctx.args.elements
+    kept = previous_smooth_rows(ctx, parts) if partial else []
+    records = []
+    csv_path = os.path.join(ctx.out, "smooth.csv")
+    for element in ctx.elements:
+        ns = n2 if scenes.ELEMENTS[element][1] == 2 else n3
+        for contact in smooth_contacts(element, parts):
+            for n in ns:
+                rec = smooth_case(ctx, element, n, contact=contact)
+                records.append(rec)
+                report.write_csv(csv_path, kept + records, SMOOTH_COLUMNS)  # progress
+                log(f"smooth {element} {rec['contact']} N={n}: {rec.get('dofs')} dofs, "
+                    f"L2 {rec.get('l2_rel', float('nan')):.3e}, energy {rec.get('energy_rel', float('nan')):.3e}, "
+                    f"contact it. {rec.get('contact_iterations')}, Newton {rec.get('newton')}, {rec['wall']:.1f} s, "
+                    f"{rec.get('diagnostic')} {rec.get('failure', '')}")
+    if "open" in parts:
+        for element, n in solver_points:
+            if element not in ctx.elements:
+                continue
+            for solver in solvers:
+                rec = smooth_case(ctx, element, n, solver)
+                records.append(rec)
+                log(f"smooth {element} N={n} {solver}: factorisation {rec.get('t_factorisation')} s, "
+                    f"energy {rec.get('energy_rel', float('nan')):.3e}, {rec.get('diagnostic')}")
+    records = kept + records
+    order = {e: i for i, e in enumerate(ALL_ELEMENTS)}
+    records.sort(key=lambda r: (r["solver"] != "MUMPS", order.get(r["element"], 9), contact_rank(r["contact"]),
+                                r["N"]))
+    report.write_csv(csv_path, records, SMOOTH_COLUMNS)
+    base = [r for r in records if r["solver"] == "MUMPS"]
+    groups = []
+    for r in base:
+        if (r["element"], r["contact"]) not in groups:
+            groups.append((r["element"], r["contact"]))
+    rates = smooth_rates(base, groups)
+
+    def series(key):
+        return {f"{e} {c}": [key(r) for r in base if r["element"] == e and r["contact"] == c and r.get("dofs")]
+                for e, c in groups}
     report.plot_error_vs_dofs(os.path.join(ctx.out, "smooth_error_vs_dofs.png"),
-                              {e: [(r["dofs"], r["h"], r.get("l2_rel"), r.get("energy_rel")) for r in base
-                                   if r["element"] == e and r.get("dofs")] for e in ctx.elements})
+                              series(lambda r: (r["dofs"], r["h"], r.get("l2_rel"), r.get("energy_rel"))))
     report.plot_trade(os.path.join(ctx.out, "smooth_error_vs_time.png"),
-                      {e: [(r["t_commands"], r.get("l2_rel"), r.get("energy_rel")) for r in base
-                           if r["element"] == e and r.get("t_commands")] for e in ctx.elements})
+                      series(lambda r: (r.get("t_commands"), r.get("l2_rel"), r.get("energy_rel"))))
+    elements = [e for e in ALL_ELEMENTS if any(g[0] == e for g in groups)]
     report.plot_time_vs_dofs(os.path.join(ctx.out, "smooth_time_vs_dofs.png"),
-                             {**{f"{e} total": [(r["dofs"], r.get("t_commands")) for r in base
-                                                if r["element"] == e and r.get("dofs")] for e in ctx.elements},
+                             {**{f"{e} {c} total": [(r["dofs"], r.get("t_commands")) for r in base
+                                                    if r["element"] == e and r["contact"] == c and r.get("dofs")]
+                                 for e, c in groups if c in ("open", "STANDARD")},
                               **{f"{e} factorisation": [(r["dofs"], r.get("t_factorisation")) for r in base
-                                                        if r["element"] == e and r.get("dofs")]
-                                 for e in ctx.elements[:1]}})
+                                                        if r["element"] == e and r["contact"] == "open"
+                                                        and r.get("dofs")]
+                                 for e in elements[:1]}})
 
-    md = ctx.header("Smooth manufactured scene: convergence, cost, solvers")
-    md += ("Scene: astest/smooth_*.comm (tools/study/scenes.py), four blocks with their own degree-5 field, open "
-           "traction-free interfaces, DDL_IMPO of the exact field on the outer boundary, FORCE_INTERNE = -div sigma. "
-           "3D: one layer of thickness h (cubic cells), u_z = 0. Errors are POST_ERREUR's relative errors: "
-           "L2 = DIFFERENCE/REFERENCE of DEPL_RELA, energy = sqrt(DIFFERENCE/REFERENCE) of ENER_RELA. "
-           "`ref. quad.` = relative difference between POST_ERREUR's REFERENCE (integrated by miniaster) and the "
-           "exact norm (tools/study/smooth_field.py).\n\n")
-    md += "## Convergence rates (least squares in h on the finest points)\n\n"
+    md = ctx.header("Smooth manufactured scene: convergence with and without contact, cost, solvers")
+    commands = {}
+    for r in records:
+        commands.setdefault(r.get("command") or "unknown", set()).add(
+            f"{r['element']} {'open' if r['contact'] == 'open' else 'contact'}")
+    if len(commands) > 1 or partial:
+        md += "Rows by command (a partial run keeps the other rows of the previous smooth.csv):\n\n"
+        for c, what in commands.items():
+            md += f"* `{c}`: {', '.join(sorted(what, key=lambda w: (order.get(w.split()[0], 9), w)))}\n"
+        md += "\n"
+    md += ("Scene: astest/smooth_*.comm and smooth_contact_*.comm (tools/study/scenes.py), four blocks with their "
+           "own degree-5 field (tools/study/smooth_field.py), DDL_IMPO of the exact field on the outer boundary, "
+           "FORCE_INTERNE = -div sigma. `open`: open traction-free interfaces, no contact. `STANDARD` / "
+           "`PENALISATION k`: the closed variant of the field (blocks sliding along the interfaces, continuous "
+           "compressive normal traction that jumps at the junction) with DEFI_CONTACT FORMULATION='XFEM' on the "
+           "three interfaces (Nitsche, or the penalty with COEF_PENA_CONT = k). 3D: one layer of thickness h "
+           "(cubic cells), u_z = 0. Errors are POST_ERREUR's relative errors: L2 = DIFFERENCE/REFERENCE of "
+           "DEPL_RELA, energy = sqrt(DIFFERENCE/REFERENCE) of ENER_RELA. `ref. quad.` = relative difference "
+           "between POST_ERREUR's REFERENCE (integrated by miniaster) and the exact norm.\n\n")
+    md += "## Convergence rates (least squares in h on the four finest points)\n\n"
     md += report.markdown_table(rates, [("element", "element", None), ("modelisation", "model", None),
-                                        ("points", "fit on", None), ("energy_rate", "energy rate (theory 1)", "f"),
-                                        ("l2_rate", "L2 rate (theory 2)", "f"), ("energy_finest", "energy err. finest", "e"),
+                                        ("contact", "contact", None), ("points", "fit on", None),
+                                        ("energy_rate", "energy rate (theory 1)", "f"),
+                                        ("l2_rate", "L2 rate (theory 2)", "f"),
+                                        ("energy_finest", "energy err. finest", "e"),
                                         ("l2_finest", "L2 err. finest", "e"),
+                                        ("contact_iterations", "contact it. (max)", None),
+                                        ("newton", "Newton it. (max)", None),
                                         ("time_exponent", "total time ~ DOFs^", "f"),
                                         ("fact_exponent", "factorisation ~ DOFs^", "f")])
     md += "\n![error vs DOFs](smooth_error_vs_dofs.png)\n\n![error vs time](smooth_error_vs_time.png)\n\n"
@@ -207,18 +314,19 @@ def study_smooth(ctx):
             r["l2_ref_q"] = abs(r["l2_ref"] - r["l2_ref_exact"]) / r["l2_ref_exact"]
         if r.get("energy_ref") and r.get("energy_ref_exact"):
             r["energy_ref_q"] = abs(r["energy_ref"] - r["energy_ref_exact"]) / r["energy_ref_exact"]
-    cols = [("element", "element", None), ("N", "N", None), ("dofs", "DOFs", None), ("l2_rel", "L2 err.", "e"),
-            ("energy_rel", "energy err.", "e"), ("t_mesh", "mesh", "t"), ("t_xfem", "X-FEM set-up", "t"),
-            ("t_setup", "loads etc.", "t"), ("t_numbering", "numbering", "t"), ("t_pattern", "pattern", "t"),
-            ("t_assembly", "assembly", "t"), ("t_factorisation", "factor.", "t"), ("t_solve", "solve", "t"),
-            ("t_analysis_other", "forces+stresses", "t"), ("t_post", "post", "t"), ("t_commands", "total", "t"),
-            ("peak_mb", "peak MB", "t"), ("newton", "Newton it.", None), ("energy_ref_q", "ref. quad.", "e"),
-            ("alarms", "alarms", None)]
+    cols = [("element", "element", None), ("contact", "contact", None), ("N", "N", None), ("dofs", "DOFs", None),
+            ("l2_rel", "L2 err.", "e"), ("energy_rel", "energy err.", "e"), ("t_mesh", "mesh", "t"),
+            ("t_xfem", "X-FEM set-up", "t"), ("t_setup", "loads etc.", "t"), ("t_numbering", "numbering", "t"),
+            ("t_pattern", "pattern", "t"), ("t_assembly", "assembly", "t"), ("t_factorisation", "factor.", "t"),
+            ("t_solve", "solve", "t"), ("t_analysis_other", "forces+stresses", "t"), ("t_post", "post", "t"),
+            ("t_commands", "total", "t"), ("peak_mb", "peak MB", "t"), ("contact_iterations", "contact it.", None),
+            ("newton", "Newton it.", None), ("penetration", "interpenetration", "e"),
+            ("energy_ref_q", "ref. quad.", "e"), ("alarms", "alarms", None), ("diagnostic", "diagnostic", None)]
     md += "## Mesh refinement (MUMPS, RENUM='AUTO')\n\nTimes in seconds.\n\n"
     md += report.markdown_table(base, cols)
     others = [r for r in records if r["solver"] != "MUMPS"]
     if others:
-        md += "\n## Linear solvers\n\n"
+        md += "\n## Linear solvers (open scene)\n\n"
         md += report.markdown_table(others, [("element", "element", None), ("N", "N", None), ("dofs", "DOFs", None),
                                              ("solver", "SOLVEUR", None), ("ordering", "ordering used", None),
                                              ("factor_entries", "factor entries", None),
@@ -457,45 +565,58 @@ ASTEST_N = {"quad4": 11, "tria3": 11, "hexa8": 11, "tetra4": 11}
 
 
 def study_astest(ctx):
-    import csv
     table = os.path.join(ctx.out, "smooth.csv")
     if not os.path.exists(table):
         sys.exit(f"study astest: {table} is missing (run `./miniaster study smooth` first: the error bounds of "
                  "the cases come from the convergence fit)")
-    with open(table) as f:
-        rows = [r for r in csv.DictReader(f) if r["solver"] == "MUMPS" and r["l2_rel"]]
+    rows = [r for r in read_records(table) if r["solver"] == "MUMPS" and r.get("l2_rel")]
+    n2, n3, _, _ = smooth_grid(False)
     for element in ctx.elements:
         modelisation, dim = scenes.ELEMENTS[element]
-        n = ASTEST_N[element]
-        h = 10.0 / n
-        pts = sorted(((float(r["h"]), float(r["l2_rel"]), float(r["energy_rel"])) for r in rows
-                      if r["element"] == element), reverse=True)
-        tail = pts[-4:]
-        bounds = {}
-        for idx, name in ((1, "l2"), (2, "energy")):
-            p = report.fit_rate([t[0] for t in tail], [t[idx] for t in tail])
-            # C from the fitted line through the finest point, then extrapolated to the case's h
-            c = tail[-1][idx] / tail[-1][0] ** p
-            bounds[name] = (p, c, 1.25 * c * h ** p)
-        case = f"smooth_{element}"
-        mesh = os.path.join(ROOT, "astest", case + ".mmed")
-        kw = dict(zbounds=(0.0, h)) if dim == 3 else {}
-        runner.make_mesh(ctx.build, element, n, mesh, **kw)
-        thickness = h if dim == 3 else 1.0
-        l2_exact, energy_exact, _, _ = smooth_field.exact_norms(modelisation, thickness=thickness)
-        base = scenes.smooth_comm(element, title=f"Smooth manufactured scene, project case {case} (N = {n})")
-        probe = ctx.run(case + "_probe", base + "FIN()\n", mesh)
-        if probe.get("exit") != 0 or "l2_rel" not in probe:
-            sys.exit(f"study astest: the probe run of {case} failed: {probe.get('failure')}")
-        tests = astest_checks(n, h, bounds, probe, l2_exact, energy_exact)
-        write_text(os.path.join(ROOT, "astest", case + ".comm"), base + tests + "\nFIN()\n")
-        write_text(os.path.join(ROOT, "astest", case + ".export"),
-                   f"P time_limit 60\nP memory_limit 256\nP ncpus 1\nP testlist verification sequential\n\n"
-                   f"F comm {case}.comm D 1\nF mmed {case}.mmed D 20\n")
-        final = runner.run_case(ctx.binary, base + tests + "\nFIN()\n", mesh, os.path.join(ctx.work, case), case,
-                                ctx.args.timeout)
-        log(f"astest {case}: exit {final['exit']}, L2 {probe['l2_rel']:.4e} (bound {bounds['l2'][2]:.3e}), "
-            f"energy {probe['energy_rel']:.4e} (bound {bounds['energy'][2]:.3e}), {final['diagnostic']}")
+        for contact in [c for c in (None, "STANDARD") if ("open" if c is None else "contact")
+                        in SMOOTH_PARTS[ctx.args.contact]]:
+            astest_case(ctx, element, contact, rows, n2 if dim == 2 else n3)
+
+
+def astest_case(ctx, element, contact, rows, default_ns):
+    modelisation, dim = scenes.ELEMENTS[element]
+    n = ASTEST_N[element]
+    h = 10.0 / n
+    label = scenes.contact_label(contact)
+    # the fit uses the four finest meshes of the default grid, whatever grid the table holds
+    pts = sorted(((r["h"], r["l2_rel"], r["energy_rel"]) for r in rows
+                  if r["element"] == element and r["contact"] == label and r["N"] in default_ns), reverse=True)
+    tail = pts[-4:]
+    if len(tail) < 4:
+        sys.exit(f"study astest: smooth.csv has {len(tail)} {element} {label} rows of the default grid (4 needed)")
+    bounds = {}
+    for idx, name in ((1, "l2"), (2, "energy")):
+        p = report.fit_rate([t[0] for t in tail], [t[idx] for t in tail])
+        # C from the fitted line through the finest point, then extrapolated to the case's h
+        c = tail[-1][idx] / tail[-1][0] ** p
+        bounds[name] = (p, c, 1.25 * c * h ** p)
+    case = f"smooth_{element}" if contact is None else f"smooth_contact_{element}"
+    mesh = os.path.join(ROOT, "astest", case + ".mmed")
+    kw = dict(zbounds=(0.0, h)) if dim == 3 else {}
+    runner.make_mesh(ctx.build, element, n, mesh, **kw)
+    thickness = h if dim == 3 else 1.0
+    l2_exact, energy_exact, _, _ = smooth_field.exact_norms(modelisation, thickness=thickness,
+                                                            contact=contact is not None)
+    base = scenes.smooth_comm(element, title=f"Smooth manufactured scene, project case {case} (N = {n})",
+                              contact=contact)
+    probe = ctx.run(case + "_probe", base + "FIN()\n", mesh)
+    if probe.get("exit") != 0 or "l2_rel" not in probe:
+        sys.exit(f"study astest: the probe run of {case} failed: {probe.get('failure')}")
+    tests = astest_checks(n, h, bounds, probe, l2_exact, energy_exact)
+    write_text(os.path.join(ROOT, "astest", case + ".comm"), base + tests + "\nFIN()\n")
+    write_text(os.path.join(ROOT, "astest", case + ".export"),
+               f"P time_limit 60\nP memory_limit 256\nP ncpus 1\nP testlist verification sequential\n\n"
+               f"F comm {case}.comm D 1\nF mmed {case}.mmed D 20\n")
+    final = runner.run_case(ctx.binary, base + tests + "\nFIN()\n", mesh, os.path.join(ctx.work, case), case,
+                            ctx.args.timeout)
+    log(f"astest {case}: exit {final['exit']}, L2 {probe['l2_rel']:.4e} (bound {bounds['l2'][2]:.3e}), "
+        f"energy {probe['energy_rel']:.4e} (bound {bounds['energy'][2]:.3e}), contact it. "
+        f"{probe.get('contact_iterations')}, {final.get('t_commands')} s, {final['diagnostic']}")
 
 
 def astest_checks(n, h, bounds, probe, l2_exact, energy_exact):
@@ -512,7 +633,7 @@ def astest_checks(n, h, bounds, probe, l2_exact, energy_exact):
     t.append("# ---- checks (generated by `./miniaster study astest` from docs/study/smooth.csv) ----")
     t.append("# REFERENCE columns: exact norms of the manufactured field (analytic integrals, smooth_field.exact_norms),")
     t.append("# up to the quadrature error of POST_ERREUR's own integration of the degree-10 integrand.")
-    t.append(f"# Error bounds: 1.25 x C h^p with (C, p) fitted on the convergence study at the finest meshes")
+    t.append(f"# Error bounds: 1.25 x C h^p with (C, p) fitted on the four finest meshes of the default grid")
     t.append(f"# (L2: p = {pl2:.3f}, C = {cl2:.4e}; energy: p = {pen:.3f}, C = {cen:.4e}), h = 10/{n}.")
     t.append(f"L2_EXACT = {l2_exact!r}")
     t.append(f"ENERGY_EXACT = {energy_exact!r}")
@@ -534,12 +655,17 @@ def astest_checks(n, h, bounds, probe, l2_exact, energy_exact):
 
 def check_field(_ctx=None):
     failures = []
-    for modelisation in ("D_PLAN", "C_PLAN", "3D"):
-        for E, NU in ((100.0e6, 0.3), (2.0e11, 0.0), (1.0, 0.49)):
-            failures += smooth_field.check(modelisation, E, NU)
-    for modelisation in ("D_PLAN", "C_PLAN"):
-        l2, energy, _, _ = smooth_field.exact_norms(modelisation)
-        print(f"exact norms ({modelisation}, E=1e8, NU=0.3): ||u||_L2 = {l2!r}, energy = {energy!r}")
+    for contact in (False, True):
+        for modelisation in ("D_PLAN", "C_PLAN", "3D"):
+            for E, NU in ((100.0e6, 0.3), (2.0e11, 0.0), (1.0, 0.49)):
+                failures += smooth_field.check(modelisation, E, NU, contact=contact)
+    failures += smooth_field.check_mutations()
+    for contact in (False, True):
+        for modelisation in ("D_PLAN", "C_PLAN"):
+            l2, energy, _, _ = smooth_field.exact_norms(modelisation, contact=contact)
+            print(f"exact norms ({'contact' if contact else 'open'}, {modelisation}, E=1e8, NU=0.3): "
+                  f"||u||_L2 = {l2!r}, energy = {energy!r}")
+    print("check-field: " + ("FAILED" if failures else "OK"))
     return 1 if failures else 0
 
 
@@ -552,6 +678,9 @@ def main():
     ap.add_argument("--work", default=None, help="keep the runs in this folder (default: temporary, removed)")
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--elements", default=None, help="comma-separated subset of quad4,tria3,hexa8,tetra4")
+    ap.add_argument("--contact", default="all", choices=sorted(SMOOTH_PARTS),
+                    help="smooth/astest: all rows, only the open scene (open) or only the rows with contact "
+                         "(only); a partial run keeps the other rows of the existing smooth.csv")
     ap.add_argument("--timeout", type=float, default=1800.0, help="seconds per run")
     args = ap.parse_args()
     if args.name == "check-field":
