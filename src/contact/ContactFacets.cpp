@@ -69,6 +69,24 @@ std::vector<std::array<long long, 3>> coordinateKey(const std::vector<Vec>& pts,
     return key;
 }
 
+// Whether the points (reference coordinates of the parent) all lie on one face of the parent
+// reference element (QUAD4/HEXA8: [-1,1]^d; TRIA3/TETRA4: unit simplex).
+bool onParentFace(CellType type, const std::vector<Vec>& ref) {
+    constexpr double tol = 1e-12;
+    const int d = (type == CellType::TRIA3 || type == CellType::QUAD4) ? 2 : 3;
+    auto all = [&](auto pred) { return std::all_of(ref.begin(), ref.end(), pred); };
+    const bool simplex = type == CellType::TRIA3 || type == CellType::TETRA4;
+    for (int i = 0; i < d; ++i) {
+        if (simplex && all([&](const Vec& r) { return std::abs(r[i]) <= tol; })) return true;
+        if (!simplex && (all([&](const Vec& r) { return std::abs(r[i] - 1.0) <= tol; }) ||
+                         all([&](const Vec& r) { return std::abs(r[i] + 1.0) <= tol; })))
+            return true;
+    }
+    if (simplex)
+        return all([&](const Vec& r) { return std::abs(r[0] + r[1] + (d == 3 ? r[2] : 0.0) - 1.0) <= tol; });
+    return false;
+}
+
 }  // namespace
 
 std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const std::vector<char>& withContact,
@@ -86,6 +104,12 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
         for (size_t a = 1; a < nodes.size(); ++a) lref = std::max(lref, norm(sub(mesh.coords[nodes[a]], mesh.coords[nodes[0]])));
     }
     const double keyTol = 1e-9 * std::max(lref, 1e-300);
+    // A cut point is on interface j when its level set is zero up to what CellCut's point merging
+    // (1e-9 of an edge) leaves: at a junction the junction point, found on two edges, can be
+    // merged with a point 1e-10 h off the interface (seen with interfaces 1e-5 h from node rows),
+    // and an exact-zero test then drops every facet ending there.
+    const double onTol = 1e-8 * std::max(lref, 1e-300);
+    auto onCrack = [&](const xfem::CutPoint& point, size_t j) { return std::abs(point.lsn[j]) <= onTol; };
 
     // Faces on a parent face (no partner inside the cell), per crack and side, by coordinates.
     using Key = std::pair<int, std::vector<std::array<long long, 3>>>;
@@ -97,6 +121,7 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
         side.cell = cut.cell;
         side.subcell = s;
         side.blockMeasure = blocks.at(cut.subcells[s].heaviside);
+        for (const auto& [tuple, measure] : blocks) side.cellMeasure += measure;
         for (int p : pts) side.ref.push_back(cut.points[p].ref);
         (void)xyz;
         return side;
@@ -148,7 +173,7 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
                     for (int v : face) {
                         const int p = sc.vertices[v];
                         pts.push_back(p);
-                        on = on && cut->points[p].lsn[j] == 0.0;
+                        on = on && onCrack(cut->points[p], j);
                     }
                     if (!on) continue;
                     std::vector<int> sortedPts = pts;
@@ -179,7 +204,7 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
                     if (!finishFacet(f, verts, sub(centroid(xyz, cut->subcells[partner]), centroid(xyz, sc)))) continue;
                     for (int p : pts)
                         for (size_t k = 0; k < cut->cracks.size(); ++k)
-                            if (k != j && cut->points[p].lsn[k] == 0.0) f.atJunction = true;
+                            if (k != j && onCrack(cut->points[p], k)) f.atJunction = true;
                     pairs[{cell, cell, sc.heaviside, crack, cut->subcells[partner].heaviside, 0}].push_back(facets.size());
                     facets.push_back(std::move(f));
                 }
@@ -187,9 +212,32 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
         }
     }
     // Facets between two parent cells.
+    // A face on an interface with no partner: on the boundary of the model (legitimately free), or
+    // inside the model where the two sides' sub-cells do not share it (non-conforming sub-cells):
+    // there the weak form misses the interface term and the discrete problem is inconsistent.
+    // Only faces inside their parent cell are counted (a face on a parent face without partner is
+    // on the boundary of the model or of the enriched zone).
+    auto unmatched = [&](const FaceOnCrack& f) {
+        const auto* cut = xm.cut(f.cell);
+        std::vector<Vec> ref;
+        for (int p : f.points) ref.push_back(cut->points[p].ref);
+        if (onParentFace(cut->type, ref)) return;
+        const auto xyz = physicalPoints(mesh, *cut);
+        std::vector<Vec> verts;
+        for (int p : f.points) verts.push_back(xyz[p]);
+        ContactFacet probe;
+        if (!finishFacet(probe, verts, Vec{1.0, 0.0, 0.0})) return;
+        ++st.unmatched;
+        st.unmatchedMeasure += probe.measure;
+    };
+    for (const auto& [key, fp] : pendingPlus)
+        if (!pendingMinus.count(key)) unmatched(fp);
     for (const auto& [key, fm] : pendingMinus) {
         auto it = pendingPlus.find(key);
-        if (it == pendingPlus.end()) continue;  // on the boundary of the model, or no + side here
+        if (it == pendingPlus.end()) {
+            unmatched(fm);
+            continue;
+        }
         const FaceOnCrack& fp = it->second;
         const auto* cm = xm.cut(fm.cell);
         const auto* cp = xm.cut(fp.cell);
@@ -207,6 +255,7 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
         plus.cell = fp.cell;
         plus.subcell = fp.subcell;
         plus.blockMeasure = bp.at(cp->subcells[fp.subcell].heaviside);
+        for (const auto& [tuple, measure] : bp) plus.cellMeasure += measure;
         for (const auto& v : verts) {
             int best = fp.points[0];
             double bestD = 1e300;
@@ -219,7 +268,7 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
         f.plus = plus;
         for (int p : fm.points)
             for (size_t k = 0; k < cm->cracks.size(); ++k)
-                if (cm->cracks[k] != key.first && cm->points[p].lsn[k] == 0.0) f.atJunction = true;
+                if (cm->cracks[k] != key.first && onCrack(cm->points[p], k)) f.atJunction = true;
         if (!finishFacet(f, verts, sub(centroid(xp_, cp->subcells[fp.subcell]), centroid(xm_, cm->subcells[fm.subcell]))))
             continue;
         pairs[{fm.cell, fp.cell, cm->subcells[fm.subcell].heaviside, key.first, cp->subcells[fp.subcell].heaviside, 1}]

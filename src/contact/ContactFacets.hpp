@@ -23,6 +23,7 @@ struct FacetSide {
     // Measure of the block the sub-cell belongs to inside its parent (all sub-cells of the parent
     // with the same Heaviside tuple): the stress there is one polynomial (weights of the average).
     double blockMeasure = 0.0;
+    double cellMeasure = 0.0;  // measure of the parent cell (sum of its blocks)
     std::vector<std::array<double, 3>> ref;  // facet vertices in the parent's reference coordinates
 };
 
@@ -43,6 +44,10 @@ struct FacetStatistics {
     int acrossParentFaces = 0;  // interface along mesh faces: sides in two parent cells
     int atJunction = 0;
     double totalMeasure = 0.0;
+    // Faces on an interface inside a parent cell whose other side's sub-cells do not share them
+    // (non-conforming sub-cells, e.g. slivers at a junction): no facet there.
+    int unmatched = 0;
+    double unmatchedMeasure = 0.0;
 };
 
 // Facets of the cracks flagged in `withContact` (by crack index of the model).

@@ -105,3 +105,39 @@ TEST(ContactFacets, OnlyTheRequestedInterfaces) {
 }
 
 }  // namespace
+
+namespace {
+
+// Interfaces eps*h from the node rows, junction in a corner of its cell: slivers of width eps*h and a
+// block of eps^2 of the cell. CellCut merges the junction point found on two sub-cell edges with a
+// point ~1e-10 h off the interface (eps = 1e-5); the facets ending there must still be found
+// (before the fix FISS1 lost the piece of length 1 - eps next to the junction: 9.00001 instead of 10).
+TEST(ContactFacets, SliverCutsNextToTheJunctionKeepEveryFacet) {
+    for (CellType type : {CellType::QUAD4, CellType::TRIA3})
+        for (double eps : {1e-4, 1e-5, 3e-6}) {  // (1e-6 h: the level set is snapped to the nodes)
+            SCOPED_TRACE(fmt::format("{} eps={}", cellTypeName(type), eps));
+            auto mesh = xfemtest::square(10, type);  // node rows on the integers
+            auto mo = xfemtest::model(mesh);
+            const auto j = xfemtest::ssnv511Cracks(mesh, -eps, -eps);
+            xfem::XfemModel xm(mo, {j.fiss1, j.fiss2, j.fiss3}, xfem::XfemContact::Standard);
+            FacetStatistics st;
+            const auto facets = buildContactFacets(xm, {1, 1, 1}, &st);
+            std::map<int, double> measure;
+            double smallest = 1.0;
+            for (const auto& f : facets) {
+                measure[f.crack] += f.measure;
+                for (const auto& v : f.vertices) EXPECT_NEAR(f.crack == 0 ? v[1] + eps : v[0] + eps, 0.0, 1e-9);
+                for (const auto* side : {&f.minus, &f.plus}) {
+                    EXPECT_GT(side->cellMeasure, side->blockMeasure * (1 - 1e-12));
+                    smallest = std::min(smallest, side->blockMeasure / side->cellMeasure);
+                }
+            }
+            EXPECT_NEAR(measure[0], 10.0, 1e-9);
+            EXPECT_NEAR(measure[1], 5.0 + eps, 1e-9);
+            EXPECT_NEAR(measure[2], 5.0 - eps, 1e-9);
+            // the corner block of the junction cell: eps^2 of the cell (QUAD4), or less (TRIA3 halves)
+            EXPECT_LT(smallest, 2.0 * eps * eps);
+        }
+}
+
+}  // namespace
