@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/Error.hpp"
+#include "core/Messages.hpp"
 #include "fe/MechanicalProblem.hpp"
 #include "mesh/Mesh.hpp"
 #include "parser/KeywordTree.hpp"
@@ -99,6 +100,18 @@ inline SolverOptions solverOptions(const KeywordSet& kw, int info) {
                                                             : int(std::get<double>(v));
     }
     if (s.text("STOP_SINGULIER", "OUI") == "NON") o.nprec = -1;
+    // MUMPS pre/post-processing with code_aster's meaning (docs/fe.md, "Linear solvers"):
+    // PRETRAITEMENTS='SANS' -> no scaling of the matrix; POSTTRAITEMENTS='SANS' -> no iterative
+    // refinement, 'MINI' -> one step, 'AUTO' -> at most 4 (code_aster's ICNTL(10)=4), 'FORCE' -> at
+    // most 10; the solver stops earlier when a step no longer halves the backward error.
+    const std::string pre = s.text("PRETRAITEMENTS", "AUTO");
+    const std::string post = s.text("POSTTRAITEMENTS", "AUTO");
+    o.diagonalScaling = pre != "SANS";
+    o.maxRefinementSteps = post == "SANS" ? 0 : post == "MINI" ? 1 : post == "FORCE" ? 10 : 4;
+    msg().infof("    SOLVEUR: PRETRAITEMENTS='{}' -> {}; POSTTRAITEMENTS='{}' -> {}", pre,
+                o.diagonalScaling ? "diagonal scaling D^-1/2 K D^-1/2" : "no scaling", post,
+                o.maxRefinementSteps ? fmt::format("iterative refinement, at most {} step(s)", o.maxRefinementSteps)
+                                     : std::string("no iterative refinement"));
     return o;
 }
 
