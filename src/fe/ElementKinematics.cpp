@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/Error.hpp"
+#include "fe/ClassicalElement.hpp"
 #include "fe/Enrichment.hpp"
 #include "fe/Quadrature.hpp"
 #include "fe/ShapeFunctions.hpp"
@@ -97,11 +98,7 @@ void computePointGeometry(const Mesh& mesh, int cell, int spaceDim, bool boundar
             inv[2][1] = (J[0][1] * J[2][0] - J[0][0] * J[2][1]) / det;
             inv[2][2] = (J[0][0] * J[1][1] - J[0][1] * J[1][0]) / det;
         }
-        if (!(det > 0.0))
-            throw NumericalError(fmt::format(
-                "cell {} ({}) has a {} Jacobian ({:.3e}): the cell is degenerate or its nodes are not in "
-                "code_aster's order",
-                mesh.cellNames[cell], cellTypeName(type), det == 0.0 ? "zero" : "negative", det));
+        if (!(det > 0.0)) classical::badJacobian(mesh, cell, det);
         geo.weight[p] = integration.refWeights[p] * det;
         // grad N_a = J^-T dN_a
         for (int a = 0; a < n; ++a) {

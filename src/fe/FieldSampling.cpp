@@ -1,9 +1,12 @@
 #include "fe/FieldSampling.hpp"
 
 #include <algorithm>
+#include <type_traits>
 
 #include "core/Error.hpp"
+#include "fe/ClassicalElement.hpp"
 #include "fe/DofNumbering.hpp"
+#include "fe/Enrichment.hpp"
 #include "fe/ElementKinematics.hpp"
 
 namespace ma {
@@ -30,6 +33,30 @@ std::vector<DisplacementSample> sampleDisplacement(const Model& model, const Nod
     PointGeometry geo;
     for (const auto& element : model.elements) {
         if (!wanted.empty() && !wanted[element.cell]) continue;
+        const bool enriched = model.enrichment && model.enrichment->isEnriched(element.cell);
+        // Classical elements: fixed-size geometry, slot 0 only (psi = 1).
+        const bool fixedSize = !enriched && classical::dispatch(mesh.cellTypes[element.cell], dim, [&](const auto& ref) {
+            using Ref = std::decay_t<decltype(ref)>;
+            classical::Geometry<Ref> g;
+            classical::computeGeometry(ref, mesh, element.cell, g);
+            const int* nodes = mesh.connectivity.data() + mesh.cellOffsets[element.cell];
+            for (int p = 0; p < Ref::points; ++p) {
+                DisplacementSample s;
+                s.cell = element.cell;
+                s.xyz = g.xyz[p];
+                s.weight = g.weight[p];
+                for (int a = 0; a < Ref::nodes; ++a) {
+                    const double factor = ref.N[p][a];
+                    if (factor == 0.0) continue;
+                    for (int c = 0; c < Ref::dim; ++c) {
+                        const int comp = componentIndex(0, c);
+                        if (comp >= 0 && depl.has(nodes[a], comp)) s.u[c] += factor * depl.at(nodes[a], comp);
+                    }
+                }
+                out.push_back(s);
+            }
+        });
+        if (fixedSize) continue;
         elementIntegration(model, element.cell, false, ei);
         computePointGeometry(mesh, element.cell, dim, false, ei, geo);
         const auto nodes = mesh.cellNodes(element.cell);

@@ -7,10 +7,13 @@
 #include <cmath>
 #include <ctime>
 #include <limits>
+#include <type_traits>
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
+#include "fe/ClassicalElement.hpp"
 #include "fe/ElementKinematics.hpp"
+#include "fe/Quadrature.hpp"
 #include "fe/Enrichment.hpp"
 
 namespace ma {
@@ -59,6 +62,154 @@ void displacementGradient(const ElementIntegration& ei, const PointGeometry& geo
             for (int c = 0; c < dim; ++c, ++i)
                 if (pa != 0.0)
                     for (int j = 0; j < dim; ++j) G[c][j] += pa * u[dofs[i]] * ga[j];
+        }
+    }
+}
+
+// Hooke's law of each element, recomputed only when the material or the modelisation changes
+// from one element to the next (one material for the whole model is the usual case).
+class LawCache {
+public:
+    explicit LawCache(const MaterialField& field) : field_(field) {}
+    const IsotropicLaw& of(const ModelElement& element) {
+        const Material& mat = field_.at(element.cell);
+        if (&mat != last_ || element.modelisation != modelisation_) {
+            law_ = IsotropicLaw::from(mat, element.modelisation, mat.name);
+            last_ = &mat;
+            modelisation_ = element.modelisation;
+        }
+        return law_;
+    }
+
+private:
+    const MaterialField& field_;
+    const Material* last_ = nullptr;
+    Modelisation modelisation_ = Modelisation::D_PLAN;
+    IsotropicLaw law_;
+};
+
+// Global dofs of a classical element (slot 0 of each node: first(node) + component).
+template <class Ref>
+void classicalDofs(const Mesh& mesh, const DofNumbering& numbering, int cell, int* dofs) {
+    const int* nodes = mesh.connectivity.data() + mesh.cellOffsets[cell];
+    for (int a = 0; a < Ref::nodes; ++a)
+        for (int c = 0; c < Ref::dim; ++c) dofs[a * Ref::dim + c] = numbering.first(nodes[a]) + c;
+}
+
+// Displacement gradient G[c][j] = du_c/dx_j of a classical element at one point (ue: the element's
+// dofs node-major) and the stress S = lambda' tr(G) I + mu (G + G^T) in the model's dimensions;
+// the operations of displacementGradient and of the general loops with psi = 1.
+template <int NN, int D>
+void classicalGradient(const double (&grad)[NN][D], const double* ue, double G[3][3]) {
+    for (int c = 0; c < 3; ++c)
+        for (int j = 0; j < 3; ++j) G[c][j] = 0.0;
+    for (int a = 0; a < NN; ++a)
+        for (int c = 0; c < D; ++c)
+            for (int j = 0; j < D; ++j) G[c][j] += ue[a * D + c] * grad[a][j];
+}
+
+template <int NN, int D>
+void classicalStress(const double (&grad)[NN][D], const double* ue, const IsotropicLaw& law, double S[3][3]) {
+    double G[3][3];
+    classicalGradient<NN, D>(grad, ue, G);
+    double tr = 0.0;
+    for (int c = 0; c < D; ++c) tr += G[c][c];
+    for (int c = 0; c < D; ++c)
+        for (int j = 0; j < D; ++j) S[c][j] = law.mu * (G[c][j] + G[j][c]) + (c == j ? law.lambdaEff * tr : 0.0);
+}
+
+// Stiffness of a classical element (upper blocks, mirrored), row-major nd x nd. The same operations
+// as generalStiffness would do with psi = 1.
+template <class Ref>
+void classicalStiffness(const classical::Geometry<Ref>& g, const IsotropicLaw& law, double* Ke) {
+    constexpr int n = Ref::nodes, dim = Ref::dim, nd = Ref::dofs;
+    for (int i = 0; i < nd * nd; ++i) Ke[i] = 0.0;
+    for (int p = 0; p < Ref::points; ++p) {
+        const double w = g.weight[p];
+        for (int a = 0; a < n; ++a) {
+            const double* ga = g.grad[p][a];
+            for (int b = a; b < n; ++b) {
+                const double* gb = g.grad[p][b];
+                double dot = ga[0] * gb[0] + ga[1] * gb[1];
+                if constexpr (dim == 3) dot += ga[2] * gb[2];
+                const double wdot = w * law.mu * dot;
+                for (int ci = 0; ci < dim; ++ci)
+                    for (int di = 0; di < dim; ++di) {
+                        const double v = w * (law.lambdaEff * ga[ci] * gb[di] + law.mu * ga[di] * gb[ci]) +
+                                         (ci == di ? wdot : 0.0);
+                        Ke[(a * dim + ci) * nd + b * dim + di] += v;
+                    }
+            }
+        }
+    }
+    for (int a = 0; a < n; ++a)
+        for (int b = a + 1; b < n; ++b)
+            for (int ci = 0; ci < dim; ++ci)
+                for (int di = 0; di < dim; ++di) Ke[(b * dim + di) * nd + a * dim + ci] = Ke[(a * dim + ci) * nd + b * dim + di];
+}
+
+// Stiffness of any element described by an ElementIntegration (X-FEM sub-cells, psi), nd x nd.
+void generalStiffness(const ElementIntegration& ei, const PointGeometry& geo, const IsotropicLaw& law, int dim, int nd,
+                      std::vector<double>& Ke) {
+    const int n = ei.nodeCount;
+    std::vector<int> base(n + 1, 0);  // local index of (a, slot 0)
+    for (int a = 0; a < n; ++a) base[a + 1] = base[a] + ei.slots[a] * dim;
+    Ke.assign(size_t(nd) * nd, 0.0);
+    for (size_t p = 0; p < ei.refPoints.size(); ++p) {
+        const double w = geo.weight[p];
+        for (int a = 0; a < n; ++a) {
+            const double* ga = &geo.gradN[(p * n + a) * 3];
+            for (int k = 0; k < ei.slots[a]; ++k) {
+                const double pa = ei.multiplier(int(p), a, k);
+                if (pa == 0.0) continue;
+                const int ia = base[a] + k * dim;
+                for (int b = 0; b < n; ++b) {
+                    const double* gb = &geo.gradN[(p * n + b) * 3];
+                    const double dot = ga[0] * gb[0] + ga[1] * gb[1] + ga[2] * gb[2];
+                    for (int l = 0; l < ei.slots[b]; ++l) {
+                        const double pb = ei.multiplier(int(p), b, l);
+                        if (pb == 0.0) continue;
+                        const double s = w * pa * pb;
+                        const int ib = base[b] + l * dim;
+                        for (int ci = 0; ci < dim; ++ci)
+                            for (int di = 0; di < dim; ++di)
+                                Ke[size_t(ia + ci) * nd + ib + di] +=
+                                    s * (law.lambdaEff * ga[ci] * gb[di] + law.mu * ga[di] * gb[ci] +
+                                         (ci == di ? law.mu * dot : 0.0));
+                    }
+                }
+            }
+        }
+    }
+}
+
+// Adds an element matrix to the CSR matrix: the element's equations (eliminated dofs skipped)
+// sorted once, then each row merged with the sorted columns of the matrix row.
+void scatter(const std::vector<int>& eq, const int* dofs, int nd, const double* Ke, CsrMatrix& A) {
+    int rows[64], local[64];
+    std::vector<int> bigRows, bigLocal;
+    int* r = rows;
+    int* l = local;
+    if (nd > 64) {  // X-FEM elements with many slots
+        bigRows.resize(nd), bigLocal.resize(nd);
+        r = bigRows.data(), l = bigLocal.data();
+    }
+    int m = 0;
+    for (int j = 0; j < nd; ++j) {
+        const int row = eq[dofs[j]];
+        if (row < 0) continue;
+        int i = m++;  // insertion sort: a handful of entries
+        for (; i > 0 && (r[i - 1] > row || (r[i - 1] == row && l[i - 1] > j)); --i) r[i] = r[i - 1], l[i] = l[i - 1];
+        r[i] = row, l[i] = j;
+    }
+    const int* cols = A.cols.data();
+    double* values = A.values.data();
+    for (int i = 0; i < m; ++i) {
+        long long k = A.rowStart[r[i]];
+        const double* Kr = Ke + size_t(l[i]) * nd;
+        for (int j = 0; j < m; ++j) {
+            while (cols[k] < r[j]) ++k;
+            values[k] += Kr[l[j]];
         }
     }
 }
@@ -122,10 +273,10 @@ MechanicalProblem::MechanicalProblem(std::shared_ptr<const Model> model, std::sh
     std::vector<int> dofs;
     const bool enriched = model_->enrichment != nullptr;
     if (enriched) enrichedIntegrations_.resize(model_->elements.size());
+    LawCache laws(*material_);
     for (size_t e = 0; e < model_->elements.size(); ++e) {
         const auto& element = model_->elements[e];
-        const Material& mat = material_->at(element.cell);
-        (void)IsotropicLaw::from(mat, element.modelisation, mat.name);
+        (void)laws.of(element);
         if (enriched && model_->enrichment->isEnriched(element.cell)) {
             model_->enrichment->integration(element.cell, enrichedIntegrations_[e]);
             const auto& x = enrichedIntegrations_[e];
@@ -386,85 +537,27 @@ void MechanicalProblem::assembleMatrix() {
     ElementIntegration scratch;
     PointGeometry geo;
     std::vector<int> dofs;
-    std::vector<int> base;  // local index of (a, slot 0)
     std::vector<double> Ke;
-    std::vector<std::pair<int, int>> sorted;  // (equation, local index)
+    LawCache laws(*material_);
     for (size_t e = 0; e < model_->elements.size(); ++e) {
         const auto& element = model_->elements[e];
+        const IsotropicLaw& law = laws.of(element);
+        const bool fixedSize = !isEnrichedElement(e) && classical::dispatch(mesh.cellTypes[element.cell], dim, [&](const auto& ref) {
+            using Ref = std::decay_t<decltype(ref)>;
+            classical::Geometry<Ref> g;
+            classical::computeGeometry(ref, mesh, element.cell, g);
+            int edofs[Ref::dofs];
+            double eK[Ref::dofs * Ref::dofs];
+            classicalDofs<Ref>(mesh, *numbering_, element.cell, edofs);
+            classicalStiffness(g, law, eK);
+            scatter(c.eq, edofs, Ref::dofs, eK, matrix_);
+        });
+        if (fixedSize) continue;
         const ElementIntegration* ei = &integrationOf(e, scratch);
         computePointGeometry(mesh, element.cell, dim, false, *ei, geo);
         localDofs(mesh, *numbering_, *ei, dofs);
-        const int nd = static_cast<int>(dofs.size());
-        const Material& mat = material_->at(element.cell);
-        const IsotropicLaw law = IsotropicLaw::from(mat, element.modelisation, mat.name);
-        base.assign(ei->nodeCount + 1, 0);
-        for (int a = 0; a < ei->nodeCount; ++a) base[a + 1] = base[a] + ei->slots[a] * dim;
-        Ke.assign(size_t(nd) * nd, 0.0);
-        const int n = ei->nodeCount;
-        if (ei->psi.empty()) {
-            // Classical element (one slot per node): upper blocks only, mirrored.
-            for (size_t p = 0; p < ei->refPoints.size(); ++p) {
-                const double w = geo.weight[p];
-                const double* g = &geo.gradN[p * n * 3];
-                for (int a = 0; a < n; ++a) {
-                    const double* ga = g + 3 * a;
-                    for (int b = a; b < n; ++b) {
-                        const double* gb = g + 3 * b;
-                        const double wdot = w * law.mu * (ga[0] * gb[0] + ga[1] * gb[1] + ga[2] * gb[2]);
-                        for (int ci = 0; ci < dim; ++ci)
-                            for (int di = 0; di < dim; ++di) {
-                                const double v = w * (law.lambdaEff * ga[ci] * gb[di] + law.mu * ga[di] * gb[ci]) +
-                                                 (ci == di ? wdot : 0.0);
-                                Ke[size_t(a * dim + ci) * nd + b * dim + di] += v;
-                            }
-                    }
-                }
-            }
-            for (int a = 0; a < n; ++a)
-                for (int b = a + 1; b < n; ++b)
-                    for (int ci = 0; ci < dim; ++ci)
-                        for (int di = 0; di < dim; ++di)
-                            Ke[size_t(b * dim + di) * nd + a * dim + ci] = Ke[size_t(a * dim + ci) * nd + b * dim + di];
-        } else
-        for (size_t p = 0; p < ei->refPoints.size(); ++p) {
-            const double w = geo.weight[p];
-            for (int a = 0; a < n; ++a) {
-                const double* ga = &geo.gradN[(p * n + a) * 3];
-                for (int k = 0; k < ei->slots[a]; ++k) {
-                    const double pa = ei->multiplier(int(p), a, k);
-                    if (pa == 0.0) continue;
-                    const int ia = base[a] + k * dim;
-                    for (int b = 0; b < n; ++b) {
-                        const double* gb = &geo.gradN[(p * n + b) * 3];
-                        const double dot = ga[0] * gb[0] + ga[1] * gb[1] + ga[2] * gb[2];
-                        for (int l = 0; l < ei->slots[b]; ++l) {
-                            const double pb = ei->multiplier(int(p), b, l);
-                            if (pb == 0.0) continue;
-                            const double s = w * pa * pb;
-                            const int ib = base[b] + l * dim;
-                            for (int ci = 0; ci < dim; ++ci)
-                                for (int di = 0; di < dim; ++di)
-                                    Ke[size_t(ia + ci) * nd + ib + di] +=
-                                        s * (law.lambdaEff * ga[ci] * gb[di] + law.mu * ga[di] * gb[ci] +
-                                             (ci == di ? law.mu * dot : 0.0));
-                        }
-                    }
-                }
-            }
-        }
-        // Scatter: the element's equations sorted once, then merged with each (sorted) row.
-        sorted.clear();
-        for (int j = 0; j < nd; ++j)
-            if (c.eq[dofs[j]] >= 0) sorted.emplace_back(c.eq[dofs[j]], j);
-        std::sort(sorted.begin(), sorted.end());
-        for (const auto& [row, i] : sorted) {
-            long long k = matrix_.rowStart[row];
-            const int* cols = matrix_.cols.data();
-            for (const auto& [col, j] : sorted) {
-                while (cols[k] < col) ++k;
-                matrix_.values[k] += Ke[size_t(i) * nd + j];
-            }
-        }
+        generalStiffness(*ei, geo, law, dim, static_cast<int>(dofs.size()), Ke);
+        scatter(c.eq, dofs.data(), static_cast<int>(dofs.size()), Ke.data(), matrix_);
     }
     if (additional_)
         additional_->tangent(u, [&](int i, int j, double v) {
@@ -512,13 +605,35 @@ void MechanicalProblem::internalForces(const std::vector<double>& disp, std::vec
     PointGeometry geo;
     std::vector<int> dofs;
     std::vector<double> fe;
+    LawCache laws(*material_);
     for (size_t e = 0; e < model_->elements.size(); ++e) {
         const auto& element = model_->elements[e];
+        const IsotropicLaw& law = laws.of(element);
+        const bool fixedSize = !isEnrichedElement(e) && classical::dispatch(mesh.cellTypes[element.cell], dim, [&](const auto& ref) {
+            using Ref = std::decay_t<decltype(ref)>;
+            classical::Geometry<Ref> g;
+            classical::computeGeometry(ref, mesh, element.cell, g);
+            int edofs[Ref::dofs];
+            classicalDofs<Ref>(mesh, *numbering_, element.cell, edofs);
+            double ue[Ref::dofs], fl[Ref::dofs] = {};
+            for (int i = 0; i < Ref::dofs; ++i) ue[i] = disp[edofs[i]];
+            for (int p = 0; p < Ref::points; ++p) {
+                double S[3][3];
+                classicalStress(g.grad[p], ue, law, S);
+                const double w = g.weight[p];
+                for (int a = 0; a < Ref::nodes; ++a)
+                    for (int c = 0; c < Ref::dim; ++c) {
+                        double s = 0.0;
+                        for (int j = 0; j < Ref::dim; ++j) s += S[c][j] * g.grad[p][a][j];
+                        fl[a * Ref::dim + c] += w * s;
+                    }
+            }
+            for (int i = 0; i < Ref::dofs; ++i) f[edofs[i]] += fl[i];
+        });
+        if (fixedSize) continue;
         const ElementIntegration* ei = &integrationOf(e, scratch);
         computePointGeometry(mesh, element.cell, dim, false, *ei, geo);
         localDofs(mesh, *numbering_, *ei, dofs);
-        const Material& mat = material_->at(element.cell);
-        const IsotropicLaw law = IsotropicLaw::from(mat, element.modelisation, mat.name);
         fe.assign(dofs.size(), 0.0);
         const int n = ei->nodeCount;
         for (size_t p = 0; p < ei->refPoints.size(); ++p) {
@@ -747,33 +862,69 @@ std::shared_ptr<GaussField> MechanicalProblem::stressField() const {
     field->quantity = "SIEF_R";
     field->components = dim == 2 ? std::vector<std::string>{"SIXX", "SIYY", "SIZZ", "SIXY"}
                                  : std::vector<std::string>{"SIXX", "SIYY", "SIZZ", "SIXY", "SIXZ", "SIYZ"};
+    const size_t nc = field->components.size();
+    // Sizes first: the field's arrays are filled without reallocation.
+    size_t points = 0;
+    for (size_t e = 0; e < model_->elements.size(); ++e)
+        points += isEnrichedElement(e) ? enrichedIntegrations_[e].refPoints.size()
+                                       : stiffnessRule(mesh.cellTypes[model_->elements[e].cell]).points.size();
+    field->cells.reserve(model_->elements.size());
+    field->pointOffsets.reserve(model_->elements.size() + 1);
+    field->pointCoords.reserve(points);
+    field->pointWeights.reserve(points);
+    field->pointSubcell.reserve(points);
+    field->pointRefCoords.reserve(points);
+    field->values.reserve(points * nc);
+    auto store = [&](const IsotropicLaw& law, const double G[3][3]) {
+        double tr = 0.0;
+        for (int c = 0; c < dim; ++c) tr += G[c][c];
+        auto sigma = [&](int a, int b) { return law.mu * (G[a][b] + G[b][a]) + (a == b ? law.lambdaEff * tr : 0.0); };
+        if (dim == 2) {
+            const double szz = law.lambdaZ * (G[0][0] + G[1][1]);
+            field->values.insert(field->values.end(), {sigma(0, 0), sigma(1, 1), szz, sigma(0, 1)});
+        } else {
+            field->values.insert(field->values.end(),
+                                 {sigma(0, 0), sigma(1, 1), sigma(2, 2), sigma(0, 1), sigma(0, 2), sigma(1, 2)});
+        }
+    };
     ElementIntegration scratch;
     PointGeometry geo;
     std::vector<int> dofs;
+    LawCache laws(*material_);
     for (size_t e = 0; e < model_->elements.size(); ++e) {
         const auto& element = model_->elements[e];
-        const ElementIntegration* ei = &integrationOf(e, scratch);
-        computePointGeometry(mesh, element.cell, dim, false, *ei, geo);
-        localDofs(mesh, *numbering_, *ei, dofs);
-        const Material& mat = material_->at(element.cell);
-        const IsotropicLaw law = IsotropicLaw::from(mat, element.modelisation, mat.name);
+        const IsotropicLaw& law = laws.of(element);
         field->cells.push_back(element.cell);
-        for (size_t p = 0; p < ei->refPoints.size(); ++p) {
-            double G[3][3];
-            displacementGradient(*ei, geo, dofs, u, p, dim, G);
-            double tr = 0.0;
-            for (int c = 0; c < dim; ++c) tr += G[c][c];
-            auto sigma = [&](int a, int b) { return law.mu * (G[a][b] + G[b][a]) + (a == b ? law.lambdaEff * tr : 0.0); };
-            field->pointCoords.push_back(geo.xyz[p]);
-            field->pointWeights.push_back(geo.weight[p]);
-            field->pointSubcell.push_back(ei->pointSubcell.empty() ? 0 : ei->pointSubcell[p]);
-            field->pointRefCoords.push_back(ei->refPoints[p]);
-            if (dim == 2) {
-                const double szz = law.lambdaZ * (G[0][0] + G[1][1]);
-                field->values.insert(field->values.end(), {sigma(0, 0), sigma(1, 1), szz, sigma(0, 1)});
-            } else {
-                field->values.insert(field->values.end(),
-                                     {sigma(0, 0), sigma(1, 1), sigma(2, 2), sigma(0, 1), sigma(0, 2), sigma(1, 2)});
+        const bool fixedSize = !isEnrichedElement(e) && classical::dispatch(mesh.cellTypes[element.cell], dim, [&](const auto& ref) {
+            using Ref = std::decay_t<decltype(ref)>;
+            classical::Geometry<Ref> g;
+            classical::computeGeometry(ref, mesh, element.cell, g);
+            int edofs[Ref::dofs];
+            classicalDofs<Ref>(mesh, *numbering_, element.cell, edofs);
+            double ue[Ref::dofs];
+            for (int i = 0; i < Ref::dofs; ++i) ue[i] = u[edofs[i]];
+            for (int p = 0; p < Ref::points; ++p) {
+                double G[3][3];
+                classicalGradient(g.grad[p], ue, G);
+                field->pointCoords.push_back(g.xyz[p]);
+                field->pointWeights.push_back(g.weight[p]);
+                field->pointSubcell.push_back(0);
+                field->pointRefCoords.push_back(ref.point[p]);
+                store(law, G);
+            }
+        });
+        if (!fixedSize) {
+            const ElementIntegration* ei = &integrationOf(e, scratch);
+            computePointGeometry(mesh, element.cell, dim, false, *ei, geo);
+            localDofs(mesh, *numbering_, *ei, dofs);
+            for (size_t p = 0; p < ei->refPoints.size(); ++p) {
+                double G[3][3];
+                displacementGradient(*ei, geo, dofs, u, p, dim, G);
+                field->pointCoords.push_back(geo.xyz[p]);
+                field->pointWeights.push_back(geo.weight[p]);
+                field->pointSubcell.push_back(ei->pointSubcell.empty() ? 0 : ei->pointSubcell[p]);
+                field->pointRefCoords.push_back(ei->refPoints[p]);
+                store(law, G);
             }
         }
         field->pointOffsets.push_back(static_cast<int>(field->pointWeights.size()));

@@ -101,6 +101,9 @@ private:
     double loadFactor(const LoadCase& lc, double inst) const;
     // The X-FEM description of element e when it is enriched, else its classical one (in scratch).
     const ElementIntegration& integrationOf(size_t e, ElementIntegration& scratch) const;
+    bool isEnrichedElement(size_t e) const {
+        return !enrichedIntegrations_.empty() && enrichedIntegrations_[e].nodeCount > 0;
+    }
 
     std::shared_ptr<const Model> model_;
     std::shared_ptr<const MaterialField> material_;

@@ -1,0 +1,35 @@
+#include "fe/ClassicalElement.hpp"
+
+#include <fmt/format.h>
+
+#include "core/Error.hpp"
+
+namespace ma::classical {
+
+const Tria3& tria3() {
+    static const Tria3 ref(CellType::TRIA3);
+    return ref;
+}
+
+const Quad4& quad4() {
+    static const Quad4 ref(CellType::QUAD4);
+    return ref;
+}
+
+const Tetra4& tetra4() {
+    static const Tetra4 ref(CellType::TETRA4);
+    return ref;
+}
+
+const Hexa8& hexa8() {
+    static const Hexa8 ref(CellType::HEXA8);
+    return ref;
+}
+
+void badJacobian(const Mesh& mesh, int cell, double det) {
+    throw NumericalError(fmt::format(
+        "cell {} ({}) has a {} Jacobian ({:.3e}): the cell is degenerate or its nodes are not in code_aster's order",
+        mesh.cellNames[cell], cellTypeName(mesh.cellTypes[cell]), det == 0.0 ? "zero" : "negative", det));
+}
+
+}  // namespace ma::classical

@@ -1,0 +1,107 @@
+// The fixed-size classical element path (fe/ClassicalElement.hpp) gives the same bits as the
+// general path (classicalIntegration + computePointGeometry) on distorted cells of every type,
+// and reports an inverted cell with the same message.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "core/Error.hpp"
+#include "fe/ClassicalElement.hpp"
+#include "fe/ElementKinematics.hpp"
+
+using namespace ma;
+
+namespace {
+
+// A cell of `type` made from its reference nodes, scaled, sheared and perturbed node by node.
+Mesh distortedCell(CellType type, double seed) {
+    Mesh mesh;
+    mesh.dim = referenceDimension(type);
+    std::vector<int> nodes;
+    int i = 0;
+    for (const auto& xi : referenceNodes(type)) {
+        const double px = 0.07 * std::sin(seed + 1.3 * i), py = 0.05 * std::cos(seed + 2.1 * i),
+                     pz = 0.04 * std::sin(seed * 0.7 + 0.9 * i);
+        std::array<double, 3> x{1.7 * xi[0] + 0.3 * xi[1] + px + 10.0, 0.9 * xi[1] - 0.2 * xi[0] + py - 3.0,
+                                mesh.dim == 3 ? 1.1 * xi[2] + 0.1 * xi[0] + pz + 0.5 : 0.0};
+        nodes.push_back(mesh.addNode(x));
+        ++i;
+    }
+    mesh.addCell(type, nodes);
+    return mesh;
+}
+
+template <class Ref>
+void expectSameBits(const Ref& ref, CellType type) {
+    for (double seed : {0.0, 0.37, 1.9, 4.2}) {
+        const Mesh mesh = distortedCell(type, seed);
+        ElementIntegration ei;
+        classicalIntegration(mesh, 0, false, ei);
+        PointGeometry geo;
+        computePointGeometry(mesh, 0, Ref::dim, false, ei, geo);
+        classical::Geometry<Ref> g;
+        classical::computeGeometry(ref, mesh, 0, g);
+        ASSERT_EQ(int(ei.refPoints.size()), Ref::points) << cellTypeName(type);
+        for (int p = 0; p < Ref::points; ++p) {
+            EXPECT_EQ(g.weight[p], geo.weight[p]) << cellTypeName(type) << " point " << p;
+            EXPECT_GT(g.weight[p], 0.0);
+            for (int i = 0; i < 3; ++i) EXPECT_EQ(g.xyz[p][i], geo.xyz[p][i]);
+            EXPECT_EQ(ref.point[p], ei.refPoints[p]);
+            for (int a = 0; a < Ref::nodes; ++a) {
+                EXPECT_EQ(ref.N[p][a], geo.N[p * Ref::nodes + a]);
+                for (int j = 0; j < Ref::dim; ++j)
+                    EXPECT_EQ(g.grad[p][a][j], geo.gradN[(p * Ref::nodes + a) * 3 + j])
+                        << cellTypeName(type) << " point " << p << " node " << a << " direction " << j;
+            }
+        }
+    }
+}
+
+std::string errorOf(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const NumericalError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+}  // namespace
+
+TEST(FeClassical, FixedSizeGeometryHasTheGeneralPathsBits) {
+    expectSameBits(classical::tria3(), CellType::TRIA3);
+    expectSameBits(classical::quad4(), CellType::QUAD4);
+    expectSameBits(classical::tetra4(), CellType::TETRA4);
+    expectSameBits(classical::hexa8(), CellType::HEXA8);
+}
+
+TEST(FeClassical, DispatchCoversTheModelDimensionsOnly) {
+    int seen = 0;
+    auto count = [&](const auto& ref) { seen += ref.points; };
+    EXPECT_TRUE(classical::dispatch(CellType::QUAD4, 2, count));
+    EXPECT_TRUE(classical::dispatch(CellType::TRIA3, 2, count));
+    EXPECT_TRUE(classical::dispatch(CellType::HEXA8, 3, count));
+    EXPECT_TRUE(classical::dispatch(CellType::TETRA4, 3, count));
+    EXPECT_EQ(seen, 4 + 1 + 8 + 1);
+    EXPECT_FALSE(classical::dispatch(CellType::QUAD4, 3, count));   // a face in a 3D model
+    EXPECT_FALSE(classical::dispatch(CellType::SEG2, 2, count));    // a skin cell
+    EXPECT_FALSE(classical::dispatch(CellType::QUAD8, 2, count));   // no element for it
+    EXPECT_EQ(seen, 14);
+}
+
+TEST(FeClassical, InvertedCellIsReportedAsByTheGeneralPath) {
+    Mesh mesh;
+    mesh.dim = 2;
+    for (const auto& x : {std::array<double, 3>{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}}) mesh.addNode(x);
+    mesh.addCell(CellType::QUAD4, std::vector<int>{0, 1, 2, 3});  // clockwise: negative Jacobian
+    ElementIntegration ei;
+    classicalIntegration(mesh, 0, false, ei);
+    PointGeometry geo;
+    const std::string general = errorOf([&] { computePointGeometry(mesh, 0, 2, false, ei, geo); });
+    classical::Geometry<classical::Quad4> g;
+    const std::string fixed = errorOf([&] { classical::computeGeometry(classical::quad4(), mesh, 0, g); });
+    EXPECT_EQ(fixed, general);
+    EXPECT_EQ(fixed, "cell M1 (QUAD4) has a negative Jacobian (-2.500e-01): the cell is degenerate or its nodes are not "
+                     "in code_aster's order");
+}
