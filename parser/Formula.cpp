@@ -82,11 +82,20 @@ def evaluate_many(code, context, comm_globals, array, npar):
             r = _evaluate_vector(code, context, comm_globals, array, npar, n)
             if r is not None:
                 return r, -1, ""
+        f = eval(code, _scope(context, comm_globals, _MATH))
+        if npar > 0:
+            # Point by point without a Python-level loop (float() of each value as below); on any
+            # error the loop below runs again for the failing index and Python's own message.
+            try:
+                return _np.fromiter(map(float, map(f, *[array[:, j].tolist() for j in range(npar)])),
+                                    dtype=float, count=n), -1, ""
+            except Exception:
+                pass
         rows = array.tolist()
     else:
         n = len(array) // npar if npar else 1
         rows = [array[i * npar:(i + 1) * npar] for i in range(n)]
-    f = eval(code, _scope(context, comm_globals, _MATH))
+        f = eval(code, _scope(context, comm_globals, _MATH))
     out = [0.0] * n
     i = 0
     try:
