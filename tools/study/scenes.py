@@ -192,78 +192,119 @@ def rigid_comm(element, E=100.0e6, NU=0.3, size=1.0, solver="MUMPS", info=2, pos
     return "\n".join(lines) + "\n"
 
 
-def compression_comm(element, algo="STANDARD", coef=None, E=100.0e6, NU=0.3, solver="MUMPS"):
-    """ssnv511e/f-type scene with contact (2D): pressures 1e6 / 2e6 on LH and LD by halves, rollers on
-    LG and LB (DX = H1X = 0, DY = H1Y = 0), DEFI_CONTACT FORMULATION='XFEM' on the three interfaces
-    with ALGO_CONT = algo (COEF_PENA_CONT = coef for 'PENALISATION'). Exact answer: uniform stresses
-    per block (sxx = -p(y), syy = -p(x)), closed interfaces; POST_ERREUR against it. With the penalty
-    every interface is crossed by pressure / coef, which shifts the blocks rigidly: the L2 error is
-    analytic (see `penalty_expected_l2`) and the stresses stay exact."""
+def compression_comm(element, algo="STANDARD", coef=None, E=100.0e6, NU=0.3, solver="MUMPS", size=1.0,
+                     pressure=1.0e6, info=1, reference="exact", convergence="ITER_GLOB_MAXI=20, RESI_GLOB_MAXI=1.0E-6"):
+    """ssnv511e-h-type scene with contact: pressures p / 2p on the top and right sides by halves, rollers
+    on the left and bottom sides (DX = H1X = 0, DY = H1Y = 0), DEFI_CONTACT FORMULATION='XFEM' on the
+    three interfaces with ALGO_CONT = algo (COEF_PENA_CONT = coef for 'PENALISATION').
+
+    2D (QUAD4 D_PLAN, TRIA3 C_PLAN; ssnv511e/f): square [-5 size, 5 size]^2, groups LH, LD, LB, LG of
+    the mesh. 3D (HEXA8, TETRA4; ssnv511g/h on the one-layer slab of tools/ssnv511_mesh, z in
+    [0, size]): faces by FACE_NORMALE on the oriented skin ENV, DZ = H1Z = 0 on the bottom face, free
+    top face (sigma_zz = 0, u_z = -NU (sxx + syy) z / E).
+
+    Exact answer: uniform stresses per block (sxx = -p(y), syy = -p(x)), closed interfaces; POST_ERREUR
+    DEPL_RELA / ENER_RELA against it. With the penalty every interface is crossed by pressure / coef,
+    which shifts the blocks rigidly (block 1 = x<0<y by (0, -p/k), 4 = y<0<x by (-p/k, 0), 3 by
+    (-2p/k, -2p/k)): the L2 error against the exact field is analytic (`penalty_expected_l2`); with
+    reference='penalised' the reference includes these shifts, so the L2 error is what the penalty
+    loses beyond its own analytic error. The stresses stay exact either way.
+    Scaling: lengths by `size`, pressures by `pressure` (keep pressure/E fixed to keep the strains)."""
     modelisation, dim = ELEMENTS[element]
-    if dim != 2:
-        raise NotImplementedError("the compression scene of the study is 2D (ssnv511e/f)")
     zone = f"ALGO_CONT='{algo}'" + (f", COEF_PENA_CONT={coef!r}" if algo == "PENALISATION" else "")
-    plane_stress = modelisation == "C_PLAN"
-    return f"""# ssnv511e/f-type compression with X-FEM contact, {element.upper()} ({modelisation}), {algo} (tools/study)
-DEBUT(CODE=_F(NIV_PUB_WEB='INTERNET'))
-E = {E!r}
-NU = {NU!r}
-MAILLAG = LIRE_MAILLAGE(FORMAT='MED')
-MODELEIN = AFFE_MODELE(MAILLAGE=MAILLAG, AFFE=_F(GROUP_MA=('SURF', 'LH', 'LD'), PHENOMENE='MECANIQUE',
-                                                 MODELISATION='{modelisation}'))
-LN1 = FORMULE(VALE='Y', NOM_PARA=['X', 'Y'])
-LN2 = FORMULE(VALE='X', NOM_PARA=['X', 'Y'])
-FISS1 = DEFI_FISS_XFEM(MAILLAGE=MAILLAG, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN1))
-FISS2 = DEFI_FISS_XFEM(MAILLAGE=MAILLAG, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2),
-                       JONCTION=_F(FISSURE=FISS1, POINT=(0, 5)))
-FISS3 = DEFI_FISS_XFEM(MAILLAGE=MAILLAG, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2),
-                       JONCTION=_F(FISSURE=FISS1, POINT=(0, -5)))
-MODELEK = MODI_MODELE_XFEM(MODELE_IN=MODELEIN, FISSURE=(FISS1, FISS2, FISS3), CONTACT='STANDARD')
-CTXFEM = DEFI_CONTACT(MODELE=MODELEK, FORMULATION='XFEM', ITER_CONT_MAXI=10,
-                      ZONE=[_F(INTEGRATION='NOEUD', CONTACT_INIT='OUI', GLISSIERE='NON', FISS_MAIT=F, {zone})
-                            for F in (FISS1, FISS2, FISS3)])
-ACIER = DEFI_MATERIAU(ELAS=_F(E=E, NU=NU))
-CHAMPMAT = AFFE_MATERIAU(MAILLAGE=MAILLAG, MODELE=MODELEK, AFFE=_F(TOUT='OUI', MATER=ACIER))
-def pression(s):
-    return 1.0E6 if s < 0 else 2.0E6
-PRES_H = FORMULE(VALE='pression(X)', pression=pression, NOM_PARA='X')
-PRES_D = FORMULE(VALE='pression(Y)', pression=pression, NOM_PARA='Y')
-CH1 = AFFE_CHAR_MECA_F(MODELE=MODELEK, PRES_REP=(_F(GROUP_MA='LH', PRES=PRES_H), _F(GROUP_MA='LD', PRES=PRES_D)))
-CH2 = AFFE_CHAR_MECA(MODELE=MODELEK, DDL_IMPO=(_F(GROUP_MA='LB', DY=0.0, H1Y=0.0), _F(GROUP_MA='LG', DX=0.0, H1X=0.0)))
-L_INST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, NOMBRE=1))
-RESU = STAT_NON_LINE(MODELE=MODELEK, CHAM_MATER=CHAMPMAT, CONTACT=CTXFEM, EXCIT=(_F(CHARGE=CH1), _F(CHARGE=CH2)),
-                     COMPORTEMENT=_F(RELATION='ELAS', GROUP_MA='SURF'), INCREMENT=_F(LIST_INST=L_INST),
-                     CONVERGENCE=_F(ITER_GLOB_MAXI=20, RESI_GLOB_MAXI=1.0E-6), SOLVEUR=_F({solveur_text(solver)}))
-# exact field: uniform stresses per block, blocks in contact
-def strain(x, y):
-    sxx, syy = -pression(y), -pression(x)
-    if {plane_stress!r}:
-        return ((sxx - NU * syy) / E, (syy - NU * sxx) / E)
-    return (((1 - NU * NU) * sxx - NU * (1 + NU) * syy) / E, ((1 - NU * NU) * syy - NU * (1 + NU) * sxx) / E)
-def ux(x, y):
-    return strain(-1.0, y)[0] * (min(x, 0.0) + 5.0) + strain(1.0, y)[0] * max(x, 0.0)
-def uy(x, y):
-    return strain(x, -1.0)[1] * (min(y, 0.0) + 5.0) + strain(x, 1.0)[1] * max(y, 0.0)
-UX = FORMULE(VALE='ux(X, Y)', ux=ux, NOM_PARA=['X', 'Y'])
-UY = FORMULE(VALE='uy(X, Y)', uy=uy, NOM_PARA=['X', 'Y'])
-SXX = FORMULE(VALE='-pression(Y)', pression=pression, NOM_PARA=['X', 'Y'])
-SYY = FORMULE(VALE='-pression(X)', pression=pression, NOM_PARA=['X', 'Y'])
-SZZ = FORMULE(VALE='{0.0 if plane_stress else 1.0} * -NU * (pression(X) + pression(Y))', pression=pression, NU=NU,
-              NOM_PARA=['X', 'Y'])
-UCAL = CREA_CHAMP(OPERATION='EXTR', TYPE_CHAM='NOEU_DEPL_R', RESULTAT=RESU, NOM_CHAM='DEPL', NUME_ORDRE=1)
-SCAL = CREA_CHAMP(OPERATION='EXTR', TYPE_CHAM='ELGA_SIEF_R', RESULTAT=RESU, NOM_CHAM='SIEF_ELGA', NUME_ORDRE=1)
-TAB_L2 = POST_ERREUR(OPTION='DEPL_RELA', CHAM_GD=UCAL, MODELE=MODELEK, GROUP_MA='SURF', DX=UX, DY=UY)
-TAB_NRJ = POST_ERREUR(OPTION='ENER_RELA', CHAM_GD=SCAL, MODELE=MODELEK, DEFORMATION='PETIT', CHAM_MATER=CHAMPMAT,
-                      GROUP_MA='SURF', SIXX=SXX, SIYY=SYY, SIZZ=SZZ)
-IMPR_TABLE(TABLE=TAB_L2, FORMAT_R='E24.16')
-IMPR_TABLE(TABLE=TAB_NRJ, FORMAT_R='E24.16')
-FIN()
-"""
+    shift_coef = coef if (algo == "PENALISATION" and reference == "penalised") else None
+    plane_stress = modelisation in ("C_PLAN", "3D")  # 3D slab: free top face
+    a = 5.0 * size
+    para = "['X', 'Y']" if dim == 2 else "['X', 'Y', 'Z']"
+    xy = "X, Y" if dim == 2 else "X, Y, Z"
+    volume = "SURF" if dim == 2 else "VOLU"
+    lines = []
+    add = lines.append
+    add(f"# ssnv511e-h-type compression with X-FEM contact, {element.upper()} ({modelisation}), {algo}, "
+        f"domain [-{a!r}, {a!r}]^2 (tools/study)")
+    add("DEBUT(CODE=_F(NIV_PUB_WEB='INTERNET'))")
+    add(f"E = {E!r}")
+    add(f"NU = {NU!r}")
+    add(f"A = {a!r}")
+    add(f"P = {pressure!r}")
+    add(f"KSHIFT = {shift_coef!r}  # reference includes the penalty's rigid shifts p/COEF_PENA_CONT when not None")
+    add("MAILLAG = LIRE_MAILLAGE(FORMAT='MED')")
+    if dim == 2:
+        loaded, top, right, bottom, left = "('SURF', 'LH', 'LD')", "LH", "LD", "LB", "LG"
+    else:
+        add("MAILLAG = MODI_MAILLAGE(reuse=MAILLAG, MAILLAGE=MAILLAG, ORIE_PEAU_3D=_F(GROUP_MA='ENV'))")
+        add("MAILLAG = DEFI_GROUP(reuse=MAILLAG, MAILLAGE=MAILLAG,")
+        add("                     CREA_GROUP_MA=(_F(NOM='BOT', OPTION='FACE_NORMALE', VECT_NORMALE=(0, 0, -1)),")
+        add("                                    _F(NOM='XP', OPTION='FACE_NORMALE', VECT_NORMALE=(1, 0, 0)),")
+        add("                                    _F(NOM='XM', OPTION='FACE_NORMALE', VECT_NORMALE=(-1, 0, 0)),")
+        add("                                    _F(NOM='YP', OPTION='FACE_NORMALE', VECT_NORMALE=(0, 1, 0)),")
+        add("                                    _F(NOM='YM', OPTION='FACE_NORMALE', VECT_NORMALE=(0, -1, 0))))")
+        loaded, top, right, bottom, left = "('VOLU', 'YP', 'XP')", "YP", "XP", "YM", "XM"
+    pt = (lambda y: f"(0, {y!r})") if dim == 2 else (lambda y: f"(0, {y!r}, 0)")
+    add(f"MODELEIN = AFFE_MODELE(MAILLAGE=MAILLAG, AFFE=_F(GROUP_MA={loaded}, PHENOMENE='MECANIQUE',")
+    add(f"                                                 MODELISATION='{modelisation}'))")
+    add(f"LN1 = FORMULE(VALE='Y', NOM_PARA={para})")
+    add(f"LN2 = FORMULE(VALE='X', NOM_PARA={para})")
+    add("FISS1 = DEFI_FISS_XFEM(MAILLAGE=MAILLAG, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN1))")
+    add("FISS2 = DEFI_FISS_XFEM(MAILLAGE=MAILLAG, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2),")
+    add(f"                       JONCTION=_F(FISSURE=FISS1, POINT={pt(a)}))")
+    add("FISS3 = DEFI_FISS_XFEM(MAILLAGE=MAILLAG, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2),")
+    add(f"                       JONCTION=_F(FISSURE=FISS1, POINT={pt(-a)}))")
+    add("MODELEK = MODI_MODELE_XFEM(MODELE_IN=MODELEIN, FISSURE=(FISS1, FISS2, FISS3), CONTACT='STANDARD')")
+    add("CTXFEM = DEFI_CONTACT(MODELE=MODELEK, FORMULATION='XFEM', ITER_CONT_MAXI=10,")
+    add(f"                      ZONE=[_F(INTEGRATION='NOEUD', CONTACT_INIT='OUI', GLISSIERE='NON', FISS_MAIT=F, {zone})")
+    add("                            for F in (FISS1, FISS2, FISS3)])")
+    add("ACIER = DEFI_MATERIAU(ELAS=_F(E=E, NU=NU))")
+    add("CHAMPMAT = AFFE_MATERIAU(MAILLAGE=MAILLAG, MODELE=MODELEK, AFFE=_F(TOUT='OUI', MATER=ACIER))")
+    add("def pression(s):")
+    add("    return P if s < 0 else 2.0 * P")
+    add(f"PRES_H = FORMULE(VALE='pression(X)', pression=pression, NOM_PARA={para})")
+    add(f"PRES_D = FORMULE(VALE='pression(Y)', pression=pression, NOM_PARA={para})")
+    add(f"CH1 = AFFE_CHAR_MECA_F(MODELE=MODELEK, PRES_REP=(_F(GROUP_MA='{top}', PRES=PRES_H), _F(GROUP_MA='{right}', PRES=PRES_D)))")
+    bot = ", _F(GROUP_MA='BOT', DZ=0.0, H1Z=0.0)" if dim == 3 else ""
+    add(f"CH2 = AFFE_CHAR_MECA(MODELE=MODELEK, DDL_IMPO=(_F(GROUP_MA='{bottom}', DY=0.0, H1Y=0.0), "
+        f"_F(GROUP_MA='{left}', DX=0.0, H1X=0.0){bot}))")
+    add("L_INST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, NOMBRE=1))")
+    add("RESU = STAT_NON_LINE(MODELE=MODELEK, CHAM_MATER=CHAMPMAT, CONTACT=CTXFEM, EXCIT=(_F(CHARGE=CH1), _F(CHARGE=CH2)),")
+    add(f"                     COMPORTEMENT=_F(RELATION='ELAS', GROUP_MA='{volume}'), INCREMENT=_F(LIST_INST=L_INST),")
+    add(f"                     CONVERGENCE=_F({convergence}), SOLVEUR=_F({solveur_text(solver)}), INFO={info})")
+    add("# exact field: uniform stresses per block, blocks in contact (plus the penalty's rigid shifts if KSHIFT)")
+    add("def strain(x, y):")
+    add("    sxx, syy = -pression(y), -pression(x)")
+    add(f"    if {plane_stress!r}:")
+    add("        return ((sxx - NU * syy) / E, (syy - NU * sxx) / E, -NU * (sxx + syy) / E)")
+    add("    return (((1 - NU * NU) * sxx - NU * (1 + NU) * syy) / E, ((1 - NU * NU) * syy - NU * (1 + NU) * sxx) / E, 0.0)")
+    add("def ux(x, y, z=0.0):")
+    add("    u = strain(-1.0, y)[0] * (min(x, 0.0) + A) + strain(1.0, y)[0] * max(x, 0.0)")
+    add("    return u - (pression(y) / KSHIFT if KSHIFT and x > 0 else 0.0)")
+    add("def uy(x, y, z=0.0):")
+    add("    u = strain(x, -1.0)[1] * (min(y, 0.0) + A) + strain(x, 1.0)[1] * max(y, 0.0)")
+    add("    return u - (pression(x) / KSHIFT if KSHIFT and y > 0 else 0.0)")
+    add("def uz(x, y, z=0.0):")
+    add("    return strain(x, y)[2] * z")
+    add(f"UX = FORMULE(VALE='ux({xy})', ux=ux, NOM_PARA={para})")
+    add(f"UY = FORMULE(VALE='uy({xy})', uy=uy, NOM_PARA={para})")
+    add(f"UZ = FORMULE(VALE='uz({xy})', uz=uz, NOM_PARA={para})")
+    add(f"SXX = FORMULE(VALE='-pression(Y)', pression=pression, NOM_PARA={para})")
+    add(f"SYY = FORMULE(VALE='-pression(X)', pression=pression, NOM_PARA={para})")
+    add(f"SZZ = FORMULE(VALE='{0.0 if plane_stress else 1.0} * -NU * (pression(X) + pression(Y))', pression=pression, NU=NU,")
+    add(f"              NOM_PARA={para})")
+    add("UCAL = CREA_CHAMP(OPERATION='EXTR', TYPE_CHAM='NOEU_DEPL_R', RESULTAT=RESU, NOM_CHAM='DEPL', NUME_ORDRE=1)")
+    add("SCAL = CREA_CHAMP(OPERATION='EXTR', TYPE_CHAM='ELGA_SIEF_R', RESULTAT=RESU, NOM_CHAM='SIEF_ELGA', NUME_ORDRE=1)")
+    dz = ", DZ=UZ" if dim == 3 else ""
+    add(f"TAB_L2 = POST_ERREUR(OPTION='DEPL_RELA', CHAM_GD=UCAL, MODELE=MODELEK, GROUP_MA='{volume}', DX=UX, DY=UY{dz})")
+    add("TAB_NRJ = POST_ERREUR(OPTION='ENER_RELA', CHAM_GD=SCAL, MODELE=MODELEK, DEFORMATION='PETIT', CHAM_MATER=CHAMPMAT,")
+    add(f"                      GROUP_MA='{volume}', SIXX=SXX, SIYY=SYY, SIZZ=SZZ)")
+    add("IMPR_TABLE(TABLE=TAB_L2, FORMAT_R='E24.16')")
+    add("IMPR_TABLE(TABLE=TAB_NRJ, FORMAT_R='E24.16')")
+    add("FIN()")
+    return "\n".join(lines) + "\n"
 
 
-def penalty_expected_l2(coef, l2_ref):
+def penalty_expected_l2(coef, l2_ref, block_measure=25.0, pressure=1.0e6):
     """L2 error of the penalised compression scene: each interface is crossed by pressure/coef,
-    block 1 (x<0<y) moves by (0, -1e6/k), block 4 (y<0<x) by (-1e6/k, 0), block 3 by (-2e6/k, -2e6/k)
-    (each block has area 25)."""
-    d = [1e6 / coef, 2e6 / coef, 1e6 / coef, 2e6 / coef]
-    return (25.0 * sum(x * x for x in d)) ** 0.5 / l2_ref
+    block 1 (x<0<y) moves by (0, -p/k), block 4 (y<0<x) by (-p/k, 0), block 3 by (-2p/k, -2p/k),
+    u_z unchanged in 3D. block_measure: area (2D, per unit thickness) or volume (3D slab) of one
+    block, 25 size^2 (x thickness in 3D)."""
+    d = [pressure / coef, 2 * pressure / coef, pressure / coef, 2 * pressure / coef]
+    return (block_measure * sum(x * x for x in d)) ** 0.5 / l2_ref

@@ -3,7 +3,7 @@
 
     ./miniaster study smooth      [--full]   convergence of the smooth manufactured scene
     ./miniaster study stability   [--full]   extreme inputs on the ssnv511a rigid scene
-    ./miniaster study penalty     [--full]   exact contact vs penalty (COEF_PENA_CONT 1e4..1e20), ssnv511e/f
+    ./miniaster study penalty     [--full]   exact contact vs penalty (COEF_PENA_CONT 1e4..1e20), ssnv511e-h (2D and 3D)
     ./miniaster study perf        [--full]   set-up/assembly vs factorisation on ssnv511a (N=1001 with --full)
     ./miniaster study all         [--full]   the three above
     ./miniaster study check-field            checks of the manufactured field (derivatives, tractions)
@@ -342,8 +342,8 @@ def study_smooth(ctx):
 # ----------------------------------------------------------------------------------------------
 # stability: extreme inputs on the rigid scene
 
-STAB_COLUMNS = ["family", "label", "element", "N", "offset", "E", "NU", "size", "solver", "dofs", "l2_rel",
-                "strain_rel", "error", "verdict", "cond1", "cond2", "diag_ratio", "residual", "min_fraction",
+STAB_COLUMNS = ["family", "label", "element", "N", "offset", "E", "NU", "size", "solver", "algo", "coef", "dofs",
+                "l2_rel", "strain_rel", "energy_rel", "error", "verdict", "cond1", "cond2", "diag_ratio", "residual", "min_fraction",
                 "dropped", "snapped", "alarms", "diagnostic", "exit", "failure"]
 
 
@@ -371,10 +371,79 @@ def stability_points(full):
             for e in [1e-2, 1e-6, 1e-10]:
                 pts.append(dict(family="offset " + solver, label=f"eps={e:.0e}", element="quad4", N=10, offset=e,
                                 solver=solver))
+    return pts + contact_stability_points(full)
+
+
+def contact_stability_points(full):
+    """The uniform-compression scene with contact (scenes.compression_comm, ssnv511e-h type), for both
+    algorithms; families are prefixed 'contact'. PENALISATION uses COEF_PENA_CONT = 1e4 E / size (1e12 Pa/m
+    for the base point), its error is measured beyond the analytic shift p/COEF_PENA_CONT."""
+    pts = []
+    eps = [10.0 ** -k for k in range(1, 13)]
+    few = [1e-1, 1e-4, 1e-7, 1e-8, 1e-12]
+    for algo in ("STANDARD", "PENALISATION"):
+        c = dict(scene="contact", algo=algo)
+        for element in ["quad4", "tria3", "hexa8", "tetra4"]:
+            dim = scenes.ELEMENTS[element][1]
+            n = 10 if dim == 2 else 6
+            if dim == 3 and element == "tetra4" and not full:
+                continue
+            for e in (eps if dim == 2 or full else few):
+                pts.append(dict(c, family="contact offset", label=f"eps={e:.0e}", element=element, N=n, offset=e))
+            pts.append(dict(c, family="contact through nodes", label="interfaces on grid lines", element=element,
+                            N=n, offset=0.0))
+            pts.append(dict(c, family="contact cell centres", label="odd N", element=element, N=n + 1, offset=0.0))
+        for E in [1e-3, 1.0, 1e3, 1e6, 1e9, 1e12]:
+            pts.append(dict(c, family="contact E", label=f"E={E:.0e}", element="quad4", N=11, E=E))
+        pts.append(dict(c, family="contact units", label="mm, N, MPa (E=2e5 MPa)", element="quad4", N=11, E=2e5,
+                        size=1e3))
+        for nu in [0.0, 0.3, 0.45, 0.49, 0.499, 0.4999]:
+            for element in ["quad4", "tria3"] + (["hexa8"] if full else []):
+                pts.append(dict(c, family="contact NU", label=f"NU={nu}", element=element,
+                                N=11 if element != "hexa8" else 7, NU=nu))
+        for s in [1e-6, 1e-3, 1.0, 1e3, 1e6]:
+            pts.append(dict(c, family="contact size", label=f"size={s:.0e}", element="quad4", N=11, size=s))
+            if full:
+                pts.append(dict(c, family="contact size", label=f"size={s:.0e}", element="hexa8", N=7, size=s))
     return pts
 
 
+def contact_stability_case(ctx, p, tag):
+    """One point of the compression scene with contact (contact_stability_points)."""
+    element = p["element"]
+    dim = scenes.ELEMENTS[element][1]
+    size = p.get("size", 1.0)
+    E, NU = p.get("E", 100.0e6), p.get("NU", 0.3)
+    algo = p["algo"]
+    coef = 1e4 * E / size if algo == "PENALISATION" else None
+    a = 5.0 * size
+    kw = dict(bounds=(-a, a, -a, a))
+    if dim == 3:
+        kw["zbounds"] = (0.0, size)
+    if p.get("offset"):
+        kw["offset"] = (p["offset"], p["offset"])
+    mesh = ctx.mesh(element, p["N"], **kw)
+    # pressures scale with E (strains 1e-2 for every E); code_aster's default relative criterion
+    comm = scenes.compression_comm(element, algo, coef, E=E, NU=NU, size=size, pressure=1e-2 * E, info=2,
+                                   reference="penalised", convergence="RESI_GLOB_RELA=1.0E-6")
+    rec = ctx.run(tag, comm, mesh)
+    rec.update({k: v for k, v in p.items()}, E=E, NU=NU, size=size, solver="MUMPS", offset=p.get("offset", 0.0),
+               coef=coef if coef else "")
+    errs = [rec.get("l2_rel"), rec.get("energy_rel")]
+    if rec.get("exit") == 1:
+        rec["verdict"] = "refused (error)"
+    elif None in errs:
+        rec["verdict"] = "no result"
+    else:
+        rec["error"] = max(errs)
+        lost = not (rec["error"] <= 1e-9)
+        rec["verdict"] = "kept" if not lost else ("lost, alarm" if rec.get("alarms") else "LOST SILENTLY")
+    return rec
+
+
 def stability_case(ctx, p, tag):
+    if p.get("scene") == "contact":
+        return contact_stability_case(ctx, p, tag)
     element = p["element"]
     dim = scenes.ELEMENTS[element][1]
     size = p.get("size", 1.0)
@@ -426,7 +495,7 @@ def study_stability(ctx):
             ("cond1", "MUMPS cond1", "e"), ("cond2", "cond2", "e"), ("residual", "rel. residual", "e"),
             ("min_fraction", "smallest fraction kept", "e"), ("dropped", "dropped", None),
             ("snapped", "LSN snapped", None), ("alarms", "alarms", None), ("verdict", "verdict", None)]
-    md = ctx.header("Stability sweep on the ssnv511a rigid scene")
+    md = ctx.header("Stability sweep: ssnv511a rigid scene, ssnv511e-h compression with contact")
     md += ("Scene: tools/study/scenes.py `rigid_comm` (ssnv511a loading: DX = -0.25, -0.5, 0.75, 1 per block on "
            "the sides x = +-a, DY = 0), MECA_STATIQUE INFO=2 (MUMPS condition estimates RINFOG(10/11) when MUMPS "
            "is the solver). The exact answer is piecewise rigid for every point. Error = max(L2 relative error "
@@ -436,8 +505,28 @@ def study_stability(ctx):
            "grid lines are moved by eps cell sizes (tools/ssnv511_mesh --offset eps eps), so that the interfaces "
            "X=0 and Y=0 run eps*h from a row of nodes.\n\n")
     silent = [r for r in records if r["verdict"] == "LOST SILENTLY"]
-    md += f"**{len(silent)} silent loss(es) of precision out of {len(records)} points.**\n\n"
-    md += report.markdown_table(records, cols)
+    rigid = [r for r in records if r.get("scene") != "contact"]
+    contact = [r for r in records if r.get("scene") == "contact"]
+    md += f"**{len(silent)} silent loss(es) of precision out of {len(records)} points** "
+    md += f"({len(rigid)} rigid, {len(contact)} with contact).\n\n"
+    md += "## Rigid scene (ssnv511a)\n\n"
+    md += report.markdown_table(rigid, cols)
+    if contact:
+        md += ("\n## Uniform compression with contact (ssnv511e-h)\n\nScene: tools/study/scenes.py `compression_comm` "
+               "(pressures p = 1e-2 E and 2p on the top and right sides by halves, rollers on the left and bottom "
+               "sides, DEFI_CONTACT FORMULATION='XFEM' on the three interfaces, CONTACT_INIT='OUI', STAT_NON_LINE "
+               "INFO=2 with code_aster's default RESI_GLOB_RELA = 1e-6; 3D: the one-layer slab z in [0, size], "
+               "DZ = 0 on the bottom, free top). Exact answer: uniform stresses per block, closed interfaces. Error = "
+               "max(L2 relative error of POST_ERREUR DEPL_RELA, energy-norm relative error of ENER_RELA). "
+               "PENALISATION: COEF_PENA_CONT = 1e4 E / size, the reference field includes the analytic rigid shifts "
+               "p/COEF_PENA_CONT of the blocks (the error of the method), so the error is what is lost beyond "
+               "it.\n\n")
+        md += report.markdown_table(contact, [
+            ("family", "family", None), ("label", "point", None), ("element", "element", None), ("algo", "ALGO_CONT", None),
+            ("N", "N", None), ("dofs", "DOFs", None), ("l2_rel", "L2 rel.", "e"), ("energy_rel", "energy rel.", "e"),
+            ("cond1", "MUMPS cond1", "e"), ("residual", "rel. residual", "e"),
+            ("contact_iterations", "contact it.", None), ("min_fraction", "smallest fraction kept", "e"),
+            ("snapped", "LSN snapped", None), ("alarms", "alarms", None), ("verdict", "verdict", None)])
     for fam, fname, xlabel, key, logx in (("offset", "stability_offset.png", "eps (interface offset / h)", "offset", True),
                                           ("E", "stability_E.png", "E", "E", True),
                                           ("NU", "stability_nu.png", "NU", "NU", False),
@@ -450,12 +539,26 @@ def study_stability(ctx):
         if series:
             report.plot_sweep(os.path.join(ctx.out, fname), f"rigid scene: {fam}", xlabel, series, logx=logx)
             md += f"\n![{fam}]({fname})\n"
+    for fam, fname, xlabel, key, logx in (("offset", "stability_contact_offset.png", "eps (interface offset / h)",
+                                           "offset", True),
+                                          ("E", "stability_contact_E.png", "E (pressure = 1e-2 E)", "E", True),
+                                          ("NU", "stability_contact_nu.png", "NU", "NU", False),
+                                          ("size", "stability_contact_size.png", "domain size factor", "size", True)):
+        series = {}
+        for r in contact:
+            if r["family"] == "contact " + fam and r.get("error") is not None:
+                series.setdefault(f"{r['element']} {r['algo'].lower()}", []).append(
+                    (r[key], r["error"], bool(r.get("alarms"))))
+        if series:
+            report.plot_sweep(os.path.join(ctx.out, fname), f"compression with contact: {fam}", xlabel, series,
+                              logx=logx, ylabel="error (max of L2 rel., energy rel.)")
+            md += f"\n![contact {fam}]({fname})\n"
     write_text(os.path.join(ctx.out, "stability.md"), md)
     return records
 
 
 # ----------------------------------------------------------------------------------------------
-# penalty: exact contact (STANDARD) against the penalty (PENALISATION, COEF_PENA_CONT) on ssnv511e/f
+# penalty: exact contact (STANDARD) against the penalty (PENALISATION, COEF_PENA_CONT) on ssnv511e-h
 
 PENALTY_COLUMNS = ["element", "N", "algo", "coef", "dofs", "l2_rel", "expected_l2", "energy_rel", "penetration",
                    "contact_iterations", "newton", "cond1", "residual", "t_factorisation", "t_commands", "alarms",
@@ -464,25 +567,30 @@ PENALTY_COLUMNS = ["element", "N", "algo", "coef", "dofs", "l2_rel", "expected_l
 
 def study_penalty(ctx):
     coefs = [10.0 ** k for k in range(4, 21, 2)] if ctx.args.full else [1e4, 1e6, 1e8, 1e10, 1e12, 1e14, 1e16, 1e18, 1e20]
-    ns = [11, 41] if ctx.args.full else [11]
     records = []
-    for element in [e for e in ctx.elements if scenes.ELEMENTS[e][1] == 2]:
+    for element in ctx.elements:
+        dim = scenes.ELEMENTS[element][1]
+        # 3D: the one-layer slab z in [0, 1] (ssnv511g/h), N = 5 (and 11 with --full)
+        ns = ([11, 41] if ctx.args.full else [11]) if dim == 2 else ([5, 11] if ctx.args.full else [5])
         for n in ns:
-            mesh = ctx.mesh(element, n)
+            mesh = ctx.mesh(element, n) if dim == 2 else ctx.mesh(element, n, zbounds=(0.0, 1.0))
             for algo, coef in [("STANDARD", None)] + [("PENALISATION", c) for c in coefs]:
                 rec = ctx.run(f"pen_{element}_{n}_{algo}_{coef}", scenes.compression_comm(element, algo, coef), mesh)
                 rec.update(element=element, N=n, algo=algo, coef=coef if coef else "")
                 if coef and rec.get("l2_ref"):
-                    rec["expected_l2"] = scenes.penalty_expected_l2(coef, rec["l2_ref"])
+                    # block measure: 25 (area per unit thickness in 2D; volume of the 1-thick slab in 3D)
+                    rec["expected_l2"] = scenes.penalty_expected_l2(coef, rec["l2_ref"], block_measure=25.0)
                 records.append(rec)
                 log(f"penalty {element} N={n} {algo} {coef or ''}: L2 {rec.get('l2_rel', float('nan')):.3e} "
                     f"(expected {rec.get('expected_l2', 0.0):.3e}), energy {rec.get('energy_rel', float('nan')):.2e}, "
                     f"contact it. {rec.get('contact_iterations')}, [{rec.get('alarms', '')}] {rec.get('diagnostic')}")
     report.write_csv(os.path.join(ctx.out, "penalty.csv"), records, PENALTY_COLUMNS)
-    md = ctx.header("Exact contact against the penalty (ssnv511e/f compression)")
+    md = ctx.header("Exact contact against the penalty (ssnv511e-h compression)")
     md += ("Scene: tools/study/scenes.py `compression_comm` (ssnv511e loading: pressures 1e6/2e6 on LH and LD, "
            "rollers on LG and LB, DEFI_CONTACT FORMULATION='XFEM' on the three interfaces, CONTACT_INIT='OUI'), "
-           "STAT_NON_LINE. The exact answer has uniform stresses per block and closed interfaces. With "
+           "STAT_NON_LINE; 3D (HEXA8, TETRA4, ssnv511g/h): the one-layer slab z in [0, 1] of tools/ssnv511_mesh, "
+           "same loads on the faces x = 5 and y = 5, DZ = 0 on the bottom face, free top face. The exact answer "
+           "has uniform stresses per block and closed interfaces. With "
            "PENALISATION every interface is crossed by pressure/COEF_PENA_CONT: `expected L2` is that analytic "
            "rigid shift (the error of the method); the energy error should stay at round-off.\n\n")
     md += report.markdown_table(records, [
