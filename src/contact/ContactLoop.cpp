@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
@@ -69,6 +71,34 @@ std::shared_ptr<ContactTerms> attachContact(MechanicalProblem& problem, const Ma
     return terms;
 }
 
+namespace {
+
+// Cause of a singular system with penalised contact: the pressure unknowns (one per contact point)
+// are regularised by 1/COEF_PENA_CONT only; when the coefficient is huge next to E/h the points of
+// one facet act as exact constraints, more of them than the gap can follow, and their pressures
+// become numerically dependent (measured: 3D slab h = 2, E = 1e8: 1e18 solves, 1e20 is singular).
+std::string penaltySingularHint(const ContactTerms& terms) {
+    const int dim = terms.definition().xfemModel().dim();
+    double kappa = 0.0, ratio = 0.0;
+    for (const auto& cp : terms.points()) {
+        if (cp.multiplier < 0) continue;
+        const double k = terms.definition().zones[cp.zone].penalty;
+        const double h = dim == 2 ? terms.facets()[cp.facet].measure : std::sqrt(terms.facets()[cp.facet].measure);
+        kappa = std::max(kappa, k);
+        ratio = std::max(ratio, k * h / cp.scale);
+    }
+    if (kappa == 0.0) return {};
+    return fmt::format("The contact uses ALGO_CONT='PENALISATION' with COEF_PENA_CONT up to {:.3e} (COEF_PENA_CONT x "
+                       "facet size / E up to {:.1e}): the contact pressures are regularised by 1/COEF_PENA_CONT only, "
+                       "and so large a coefficient turns the penalty into exact constraints at more contact points "
+                       "than the gap can follow, whose pressures are then numerically dependent. Lower "
+                       "COEF_PENA_CONT (its error, interpenetration = pressure/COEF_PENA_CONT, is logged) or use "
+                       "ALGO_CONT='STANDARD' (exact contact).",
+                       kappa, ratio);
+}
+
+}  // namespace
+
 ContactIncrementReport solveIncrementWithContact(MechanicalProblem& problem, ContactTerms& terms, double inst,
                                                  const ConvergenceOptions& options) {
     ContactIncrementReport out;
@@ -81,7 +111,11 @@ ContactIncrementReport solveIncrementWithContact(MechanicalProblem& problem, Con
         try {
             report = problem.solveIncrement(inst, options);
         } catch (const NumericalError& e) {
-            if (before.active > 0) throw;
+            if (before.active > 0) {
+                const std::string hint = penaltySingularHint(terms);
+                if (hint.empty() || std::string(e.what()).find("singular system") == std::string::npos) throw;
+                throw NumericalError(fmt::format("{}\n{}", e.what(), hint));
+            }
             throw NumericalError(fmt::format("{}\nNo contact point is active (CONTACT_INIT='NON'): blocks held only by the "
                                              "contact float; start with CONTACT_INIT='OUI' or hold every block by "
                                              "boundary conditions",

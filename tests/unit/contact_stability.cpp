@@ -1,0 +1,92 @@
+// Contact at the extremes (docs/study/stability.md): what miniaster says when precision is at risk
+// or the system cannot be solved. Sliver blocks next to a contact facet raise CONTACT_SLIVER (and
+// only then); a penalty coefficient so large that the penalised contact becomes singular is
+// reported with its cause, not as a missing boundary condition.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdlib>
+
+#include <filesystem>
+#include <string>
+
+#include "parser_run.hpp"
+
+using namespace ma::test;
+
+namespace {
+
+// ssnv511e-type compression (pressures 1e6 / 2e6, rollers), DEFI_CONTACT on the three interfaces.
+std::string compression(const std::string& zone) {
+    return "DEBUT()\n"
+           "MA = LIRE_MAILLAGE(FORMAT='MED')\n"
+           "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(GROUP_MA=('SURF', 'LH', 'LD'), PHENOMENE='MECANIQUE', "
+           "MODELISATION='D_PLAN'))\n"
+           "LN1 = FORMULE(VALE='Y', NOM_PARA=['X', 'Y'])\n"
+           "LN2 = FORMULE(VALE='X', NOM_PARA=['X', 'Y'])\n"
+           "F1 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN1))\n"
+           "F2 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2), "
+           "JONCTION=_F(FISSURE=F1, POINT=(0, 5)))\n"
+           "F3 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2), "
+           "JONCTION=_F(FISSURE=F1, POINT=(0, -5)))\n"
+           "MX = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(F1, F2, F3), CONTACT='STANDARD')\n"
+           "CT = DEFI_CONTACT(MODELE=MX, FORMULATION='XFEM', ZONE=[_F(FISS_MAIT=F, CONTACT_INIT='OUI', " +
+           zone +
+           ") for F in (F1, F2, F3)])\n"
+           "MAT = DEFI_MATERIAU(ELAS=_F(E=1.0e8, NU=0.3))\n"
+           "CM = AFFE_MATERIAU(MAILLAGE=MA, AFFE=_F(TOUT='OUI', MATER=MAT))\n"
+           "def p(s):\n"
+           "    return 1.0e6 if s < 0 else 2.0e6\n"
+           "PH = FORMULE(VALE='p(X)', p=p, NOM_PARA='X')\n"
+           "PD = FORMULE(VALE='p(Y)', p=p, NOM_PARA='Y')\n"
+           "CH1 = AFFE_CHAR_MECA_F(MODELE=MX, PRES_REP=(_F(GROUP_MA='LH', PRES=PH), _F(GROUP_MA='LD', PRES=PD)))\n"
+           "CH2 = AFFE_CHAR_MECA(MODELE=MX, DDL_IMPO=(_F(GROUP_MA='LB', DY=0.0, H1Y=0.0), "
+           "_F(GROUP_MA='LG', DX=0.0, H1X=0.0)))\n"
+           "LI = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, NOMBRE=1))\n"
+           "R = STAT_NON_LINE(MODELE=MX, CHAM_MATER=CM, CONTACT=CT, EXCIT=(_F(CHARGE=CH1), _F(CHARGE=CH2)), "
+           "COMPORTEMENT=_F(RELATION='ELAS', GROUP_MA='SURF'), INCREMENT=_F(LIST_INST=LI))\n"
+           "FIN()\n";
+}
+
+const std::string kMesh = std::string("--mesh '") + MINIASTER_SHARED_DIR + "/astest/ssnv511a.mmed'";
+
+// A 10 x 10 QUAD4 mesh of [-5,5]^2 whose interior grid lines are moved by `offset` cells: the
+// interfaces x = 0, y = 0 run offset*h from a node row, the junction cell keeps an offset^2 block.
+std::string offsetMesh(double offset) {
+    const auto tool = std::filesystem::path(MINIASTER_BINARY).parent_path() / "tools" / "ssnv511_mesh";
+    const auto dir = std::filesystem::temp_directory_path() / fmt::format("miniaster-contact-stability-{}", getpid());
+    std::filesystem::create_directories(dir);
+    const auto path = dir / fmt::format("m_{}.med", offset);
+    const auto cmd = fmt::format("'{}' --type quad4 --n 10 --offset {} {} -o '{}' > /dev/null 2>&1", tool.string(), offset,
+                                 offset, path.string());
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    return fmt::format("--mesh '{}'", path.string());
+}
+
+}  // namespace
+
+TEST(ContactStability, SliverBlocksNextToAFacetRaiseAnAlarm) {
+    const auto sliver = runComm(compression("ALGO_CONT='STANDARD'"), offsetMesh(1e-5));
+    EXPECT_EQ(sliver.status, 0) << sliver.output;
+    EXPECT_NE(sliver.output.find("<A> <CONTACT_SLIVER>"), std::string::npos) << sliver.output;
+    EXPECT_NE(sliver.output.find("smallest fraction 1.000e-10"), std::string::npos) << sliver.output;
+    // an ordinary cut: no alarm, the smallest block fraction is logged
+    const auto plain = runComm(compression("ALGO_CONT='STANDARD'"), offsetMesh(1e-1));
+    EXPECT_EQ(plain.status, 0) << plain.output;
+    EXPECT_EQ(plain.output.find("CONTACT_SLIVER"), std::string::npos) << plain.output;
+    EXPECT_NE(plain.output.find("smallest block fraction of a cell next to a facet 1.000e-02"), std::string::npos)
+        << plain.output;
+}
+
+TEST(ContactStability, HugePenaltyIsReportedWithItsCause) {
+    const auto huge = runComm(compression("ALGO_CONT='PENALISATION', COEF_PENA_CONT=1.0e24"), kMesh);
+    EXPECT_EQ(huge.status, 1) << huge.output;
+    EXPECT_NE(huge.output.find("singular system"), std::string::npos) << huge.output;
+    EXPECT_NE(huge.output.find("ALGO_CONT='PENALISATION' with COEF_PENA_CONT up to 1.000e+24"), std::string::npos)
+        << huge.output;
+    EXPECT_NE(huge.output.find("Lower COEF_PENA_CONT"), std::string::npos);
+    const auto fine = runComm(compression("ALGO_CONT='PENALISATION', COEF_PENA_CONT=1.0e12"), kMesh);
+    EXPECT_EQ(fine.status, 0) << fine.output;
+    EXPECT_EQ(fine.output.find("Lower COEF_PENA_CONT"), std::string::npos);
+}
