@@ -30,6 +30,23 @@ std::array<double, 3> facetBarycentric(int dim, const Vec& xi) {
     return {1.0 - xi[0] - xi[1], xi[0], xi[1]};
 }
 
+// Unit gradient of the level set of the facet's interface at a point of the parent cell (nodal
+// values of the cut, physical shape-function gradients at the point), oriented like the facet's
+// geometric normal (from - to +); the geometric normal when the gradient vanishes.
+Vec levelSetNormal(const xfem::CellCut& cut, const ContactFacet& facet, int nodeCount, const std::vector<double>& gradN) {
+    const auto it = std::find(cut.cracks.begin(), cut.cracks.end(), facet.crack);
+    if (it == cut.cracks.end()) return facet.normal;
+    const size_t j = static_cast<size_t>(it - cut.cracks.begin());
+    Vec g{};
+    for (int a = 0; a < nodeCount; ++a)
+        for (int c = 0; c < 3; ++c) g[c] += cut.points[a].lsn[j] * gradN[size_t(a) * 3 + c];
+    const double len = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    if (!(len > 0.0)) return facet.normal;
+    const double orient = g[0] * facet.normal[0] + g[1] * facet.normal[1] + g[2] * facet.normal[2];
+    for (auto& v : g) v *= (orient < 0.0 ? -1.0 : 1.0) / len;
+    return g;
+}
+
 }  // namespace
 
 ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField& material,
@@ -65,6 +82,11 @@ ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField
             const auto bary = facetBarycentric(dim, rule.points[q]);
             for (int v = 0; v < dim; ++v)
                 for (int j = 0; j < 3; ++j) cp.xyz[j] += bary[v] * facet.vertices[v][j];
+            // Normal: the level-set gradient of the facet's interface at the point (docs/contact.md),
+            // from the - side's parent; the facet's own vertices can be off the interface by CellCut's
+            // merge tolerance (1e-9 h), which tilts a sliver facet (length 1e-5 h) by 1e-5 rad: then
+            // the exact uniform stress has a shear on it and frictionless contact is no longer exact.
+            Vec nv = facet.normal;
             for (int s = 0; s < 2; ++s) {
                 const FacetSide& side = s == 0 ? facet.minus : facet.plus;
                 const double sign = s == 0 ? -1.0 : 1.0;
@@ -83,9 +105,9 @@ ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField
                 ei.pointSubcell = {side.subcell};
                 ei.slots.assign(n, 1);
                 computePointGeometry(mesh, side.cell, dim, false, ei, geo);
+                if (s == 0) nv = levelSetNormal(*cut, facet, n, geo.gradN);
                 const Material& mat = material.at(side.cell);
                 const IsotropicLaw law = IsotropicLaw::from(mat, model.modelisation, mat.name);
-                const Vec& nv = facet.normal;
                 for (int a = 0; a < n; ++a) {
                     const double Na = geo.N[a];
                     const double* g = &geo.gradN[size_t(a) * 3];
