@@ -3,16 +3,21 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
+#include <barrier>
 #include <chrono>
 #include <cmath>
 #include <ctime>
 #include <limits>
+#include <numeric>
+#include <thread>
 #include <type_traits>
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "fe/ClassicalElement.hpp"
 #include "fe/ElementKinematics.hpp"
+#include "fe/Parallel.hpp"
 #include "fe/Quadrature.hpp"
 #include "fe/Enrichment.hpp"
 
@@ -183,37 +188,6 @@ void generalStiffness(const ElementIntegration& ei, const PointGeometry& geo, co
     }
 }
 
-// Adds an element matrix to the CSR matrix: the element's equations (eliminated dofs skipped)
-// sorted once, then each row merged with the sorted columns of the matrix row.
-void scatter(const std::vector<int>& eq, const int* dofs, int nd, const double* Ke, CsrMatrix& A) {
-    int rows[64], local[64];
-    std::vector<int> bigRows, bigLocal;
-    int* r = rows;
-    int* l = local;
-    if (nd > 64) {  // X-FEM elements with many slots
-        bigRows.resize(nd), bigLocal.resize(nd);
-        r = bigRows.data(), l = bigLocal.data();
-    }
-    int m = 0;
-    for (int j = 0; j < nd; ++j) {
-        const int row = eq[dofs[j]];
-        if (row < 0) continue;
-        int i = m++;  // insertion sort: a handful of entries
-        for (; i > 0 && (r[i - 1] > row || (r[i - 1] == row && l[i - 1] > j)); --i) r[i] = r[i - 1], l[i] = l[i - 1];
-        r[i] = row, l[i] = j;
-    }
-    const int* cols = A.cols.data();
-    double* values = A.values.data();
-    for (int i = 0; i < m; ++i) {
-        long long k = A.rowStart[r[i]];
-        const double* Kr = Ke + size_t(l[i]) * nd;
-        for (int j = 0; j < m; ++j) {
-            while (cols[k] < r[j]) ++k;
-            values[k] += Kr[l[j]];
-        }
-    }
-}
-
 }  // namespace
 
 IsotropicLaw IsotropicLaw::from(const Material& m, Modelisation modelisation, const std::string& where) {
@@ -269,17 +243,17 @@ MechanicalProblem::MechanicalProblem(std::shared_ptr<const Model> model, std::sh
     u.assign(numbering_->size(), 0.0);
     attached_.assign(numbering_->size(), 0);
     // Check materials and mark the dofs each element really uses.
-    ElementIntegration ei;
     std::vector<int> dofs;
     const bool enriched = model_->enrichment != nullptr;
-    if (enriched) enrichedIntegrations_.resize(model_->elements.size());
+    if (enriched) enrichedIndex_.assign(model_->elements.size(), -1);
     LawCache laws(*material_);
     for (size_t e = 0; e < model_->elements.size(); ++e) {
         const auto& element = model_->elements[e];
         (void)laws.of(element);
         if (enriched && model_->enrichment->isEnriched(element.cell)) {
-            model_->enrichment->integration(element.cell, enrichedIntegrations_[e]);
-            const auto& x = enrichedIntegrations_[e];
+            enrichedIndex_[e] = static_cast<int>(enrichedIntegrations_.size());
+            model_->enrichment->integration(element.cell, enrichedIntegrations_.emplace_back());
+            const auto& x = enrichedIntegrations_.back();
             localDofs(mesh, *numbering_, x, dofs);
             int i = 0;
             for (int a = 0; a < x.nodeCount; ++a)
@@ -414,6 +388,7 @@ void MechanicalProblem::buildPattern() {
     const auto& c = *constraints_;
     const int nNodes = mesh.nodeCount();
     const int nEq = c.freeCount + static_cast<int>(c.multi.size());
+    const int workers = workerCount();
     // Node -> elements incidence.
     std::vector<int> start(nNodes + 1, 0);
     for (const auto& e : model_->elements)
@@ -422,6 +397,7 @@ void MechanicalProblem::buildPattern() {
     std::vector<int> incidence(start.back()), fill(start.begin(), start.end() - 1);
     for (size_t e = 0; e < model_->elements.size(); ++e)
         for (int node : mesh.cellNodes(model_->elements[e].cell)) incidence[fill[node]++] = static_cast<int>(e);
+    fill = {};
     // Multipliers touching each dof.
     std::vector<std::vector<int>> dofMultipliers;
     if (!c.multi.empty()) {
@@ -441,123 +417,252 @@ void MechanicalProblem::buildPattern() {
             extraColumns[j].push_back(c.eq[i]);
         }
     }
+    // Free dofs (equations) of each node, in dof order.
+    std::vector<int> nodeFree(nNodes, 0);
+    for (int node = 0; node < nNodes; ++node)
+        for (int d = numbering_->first(node); d < numbering_->first(node + 1); ++d) nodeFree[node] += c.eq[d] >= 0;
+    // Neighbour nodes of every node (itself included), sorted: one node range per worker, each
+    // with its own list, so that the graph is the same for any number of workers.
+    struct Graph {
+        std::vector<int> offsets{0}, nodes;
+    };
+    std::vector<Graph> graphs(workers);
+    std::vector<int> firstNode(workers + 1, nNodes);
+    parallelRanges(size_t(nNodes), workers, [&](size_t begin, size_t end, int t) {
+        firstNode[t] = int(begin);
+        Graph& g = graphs[t];
+        g.offsets.reserve(end - begin + 1);
+        g.nodes.reserve((start[end] - start[begin]) * 3);
+        std::vector<int> marker(nNodes, -1);  // other node -> last node that listed it
+        std::vector<int> neighbours;
+        for (size_t node = begin; node < end; ++node) {
+            neighbours.clear();
+            if (numbering_->hasNode(int(node))) {
+                for (int k = start[node]; k < start[node + 1]; ++k)
+                    for (int other : mesh.cellNodes(model_->elements[incidence[k]].cell))
+                        if (marker[other] != int(node)) {
+                            marker[other] = int(node);
+                            neighbours.push_back(other);
+                        }
+                std::sort(neighbours.begin(), neighbours.end());
+            }
+            g.nodes.insert(g.nodes.end(), neighbours.begin(), neighbours.end());
+            g.offsets.push_back(static_cast<int>(g.nodes.size()));
+        }
+    });
+    auto neighboursOf = [&](int t, int node) {
+        const Graph& g = graphs[t];
+        const int i = node - firstNode[t];
+        return std::span<const int>(g.nodes.data() + g.offsets[i], size_t(g.offsets[i + 1] - g.offsets[i]));
+    };
+    // Row lengths, then the columns: the rows of a node range are a contiguous range of equations.
     matrix_ = CsrMatrix{};
     matrix_.rows = nEq;
     matrix_.rowStart.assign(nEq + 1, 0);
-    std::vector<int> marker(nNodes, -1), neighbours;
-    std::vector<int> columns, rowColumns;
-    // Two passes over the nodes: count, then fill (rows of a node are contiguous in eq order).
-    for (int pass = 0; pass < 2; ++pass) {
-        std::fill(marker.begin(), marker.end(), -1);
-        if (pass == 1) {
-            for (int i = 0; i < nEq; ++i) matrix_.rowStart[i + 1] += matrix_.rowStart[i];
-            matrix_.cols.resize(matrix_.rowStart.back());
-        }
-        for (int node = 0; node < nNodes; ++node) {
-            if (!numbering_->hasNode(node)) continue;
-            neighbours.clear();
-            for (int k = start[node]; k < start[node + 1]; ++k)
-                for (int other : mesh.cellNodes(model_->elements[incidence[k]].cell))
-                    if (marker[other] != node) {
-                        marker[other] = node;
-                        neighbours.push_back(other);
-                    }
-            std::sort(neighbours.begin(), neighbours.end());
-            columns.clear();
-            for (int other : neighbours)
-                for (int d = numbering_->first(other); d < numbering_->first(other + 1); ++d)
-                    if (c.eq[d] >= 0) columns.push_back(c.eq[d]);
-            const int firstDof = numbering_->first(node);
-            const int lastDof = numbering_->first(node + 1);
-            for (int d = firstDof; d < lastDof; ++d) {
+    std::vector<int> rowColumns;
+    auto specialRow = [&](int d, std::vector<int>& out, std::span<const int> neighbours) {
+        // Rare rows (contact couplings): element columns, couplings and multipliers, sorted, unique.
+        out.clear();
+        for (int other : neighbours)
+            for (int e = numbering_->first(other); e < numbering_->first(other + 1); ++e)
+                if (c.eq[e] >= 0) out.push_back(c.eq[e]);
+        out.insert(out.end(), extraColumns[d].begin(), extraColumns[d].end());
+        if (!dofMultipliers.empty()) out.insert(out.end(), dofMultipliers[d].begin(), dofMultipliers[d].end());
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
+    };
+    parallelRanges(size_t(nNodes), workers, [&](size_t begin, size_t end, int t) {
+        std::vector<int> special;
+        for (size_t node = begin; node < end; ++node) {
+            const auto neighbours = neighboursOf(t, int(node));
+            long long length = 0;
+            for (int other : neighbours) length += nodeFree[other];
+            for (int d = numbering_->first(int(node)); d < numbering_->first(int(node) + 1); ++d) {
                 const int row = c.eq[d];
                 if (row < 0) continue;
-                const size_t extra = dofMultipliers.empty() ? 0 : dofMultipliers[d].size();
                 if (!extraColumns.empty() && !extraColumns[d].empty()) {
-                    // Rare rows (contact): merged with the element columns, sorted, unique.
-                    rowColumns.assign(columns.begin(), columns.end());
-                    rowColumns.insert(rowColumns.end(), extraColumns[d].begin(), extraColumns[d].end());
-                    if (extra) rowColumns.insert(rowColumns.end(), dofMultipliers[d].begin(), dofMultipliers[d].end());
-                    std::sort(rowColumns.begin(), rowColumns.end());
-                    rowColumns.erase(std::unique(rowColumns.begin(), rowColumns.end()), rowColumns.end());
-                    if (pass == 0) matrix_.rowStart[row + 1] = static_cast<long long>(rowColumns.size());
-                    else std::copy(rowColumns.begin(), rowColumns.end(), matrix_.cols.begin() + matrix_.rowStart[row]);
+                    specialRow(d, special, neighbours);
+                    matrix_.rowStart[row + 1] = static_cast<long long>(special.size());
+                } else {
+                    matrix_.rowStart[row + 1] = length + (dofMultipliers.empty() ? 0 : long(dofMultipliers[d].size()));
+                }
+            }
+        }
+    });
+    // Rows of the additional terms' own unknowns: their declared couplings only.
+    auto ownRow = [&](int d, std::vector<int>& out) {
+        out.clear();
+        if (!extraColumns.empty()) out = extraColumns[d];
+        out.push_back(c.eq[d]);
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
+    };
+    for (int d = numbering_->size(); d < int(c.eq.size()); ++d)
+        if (c.eq[d] >= 0) {
+            ownRow(d, rowColumns);
+            matrix_.rowStart[c.eq[d] + 1] = static_cast<long long>(rowColumns.size());
+        }
+    for (size_t m = 0; m < c.multi.size(); ++m)
+        matrix_.rowStart[c.freeCount + int(m) + 1] = static_cast<long long>(c.multi[m].terms.size());
+    for (int i = 0; i < nEq; ++i) matrix_.rowStart[i + 1] += matrix_.rowStart[i];
+    matrix_.cols.resize(matrix_.rowStart.back());
+    parallelRanges(size_t(nNodes), workers, [&](size_t begin, size_t end, int t) {
+        std::vector<int> special;
+        for (size_t node = begin; node < end; ++node) {
+            const auto neighbours = neighboursOf(t, int(node));
+            for (int d = numbering_->first(int(node)); d < numbering_->first(int(node) + 1); ++d) {
+                const int row = c.eq[d];
+                if (row < 0) continue;
+                int* out = matrix_.cols.data() + matrix_.rowStart[row];
+                if (!extraColumns.empty() && !extraColumns[d].empty()) {
+                    specialRow(d, special, neighbours);
+                    std::copy(special.begin(), special.end(), out);
                     continue;
                 }
-                if (pass == 0) {
-                    matrix_.rowStart[row + 1] = static_cast<long long>(columns.size() + extra);
-                } else {
-                    auto out = matrix_.cols.begin() + matrix_.rowStart[row];
-                    out = std::copy(columns.begin(), columns.end(), out);
-                    if (extra) std::copy(dofMultipliers[d].begin(), dofMultipliers[d].end(), out);
-                }
+                for (int other : neighbours)
+                    for (int e = numbering_->first(other); e < numbering_->first(other + 1); ++e)
+                        if (c.eq[e] >= 0) *out++ = c.eq[e];
+                // Multiplier equations come after every dof equation: the row stays sorted.
+                if (!dofMultipliers.empty()) std::copy(dofMultipliers[d].begin(), dofMultipliers[d].end(), out);
             }
         }
-        // Rows of the additional terms' own unknowns: their declared couplings only.
-        for (int d = numbering_->size(); d < int(c.eq.size()); ++d) {
-            const int row = c.eq[d];
-            if (row < 0) continue;
-            rowColumns.clear();
-            if (!extraColumns.empty()) rowColumns = extraColumns[d];
-            rowColumns.push_back(row);
-            std::sort(rowColumns.begin(), rowColumns.end());
-            rowColumns.erase(std::unique(rowColumns.begin(), rowColumns.end()), rowColumns.end());
-            if (pass == 0) matrix_.rowStart[row + 1] = static_cast<long long>(rowColumns.size());
-            else std::copy(rowColumns.begin(), rowColumns.end(), matrix_.cols.begin() + matrix_.rowStart[row]);
+    });
+    for (int d = numbering_->size(); d < int(c.eq.size()); ++d)
+        if (c.eq[d] >= 0) {
+            ownRow(d, rowColumns);
+            std::copy(rowColumns.begin(), rowColumns.end(), matrix_.cols.begin() + matrix_.rowStart[c.eq[d]]);
         }
-        for (size_t m = 0; m < c.multi.size(); ++m) {
-            const int row = c.freeCount + int(m);
-            if (pass == 0) {
-                matrix_.rowStart[row + 1] = static_cast<long long>(c.multi[m].terms.size());
-            } else {
-                auto out = matrix_.cols.begin() + matrix_.rowStart[row];
-                for (const auto& [d, coef] : c.multi[m].terms) *out++ = c.eq[d];
-                std::sort(matrix_.cols.begin() + matrix_.rowStart[row], matrix_.cols.begin() + matrix_.rowStart[row + 1]);
-            }
-        }
+    for (size_t m = 0; m < c.multi.size(); ++m) {
+        const int row = c.freeCount + int(m);
+        auto out = matrix_.cols.begin() + matrix_.rowStart[row];
+        for (const auto& [d, coef] : c.multi[m].terms) *out++ = c.eq[d];
+        std::sort(matrix_.cols.begin() + matrix_.rowStart[row], matrix_.cols.begin() + matrix_.rowStart[row + 1]);
     }
-    // Rows with multipliers got them appended; keep every row sorted.
-    if (!c.multi.empty())
-        for (int i = 0; i < c.freeCount; ++i)
-            std::sort(matrix_.cols.begin() + matrix_.rowStart[i], matrix_.cols.begin() + matrix_.rowStart[i + 1]);
     matrix_.values.assign(matrix_.cols.size(), 0.0);
     msg().infof("    matrix pattern: {} equations ({} free dofs, {} eliminated, {} multipliers), {} non-zeros, "
                 "{:.3f} s (cpu {:.3f} s)",
-                nEq, c.freeCount, numbering_->size() - c.freeCount, c.multi.size(), matrix_.nonZeros(), seconds(t0),
+                nEq, c.freeCount, static_cast<int>(c.eq.size()) - c.freeCount, c.multi.size(), matrix_.nonZeros(), seconds(t0),
                 threadCpuSeconds() - cpu0);
 }
 
 void MechanicalProblem::assembleMatrix() {
     const auto t0 = std::chrono::steady_clock::now();
-    const double cpu0 = threadCpuSeconds();
     const Mesh& mesh = *model_->mesh;
     const auto& c = *constraints_;
     const int dim = numbering_->dim();
     matrix_.setZero();
-    ElementIntegration scratch;
-    PointGeometry geo;
-    std::vector<int> dofs;
-    std::vector<double> Ke;
-    LawCache laws(*material_);
-    for (size_t e = 0; e < model_->elements.size(); ++e) {
-        const auto& element = model_->elements[e];
-        const IsotropicLaw& law = laws.of(element);
-        const bool fixedSize = !isEnrichedElement(e) && classical::dispatch(mesh.cellTypes[element.cell], dim, [&](const auto& ref) {
-            using Ref = std::decay_t<decltype(ref)>;
-            classical::Geometry<Ref> g;
-            classical::computeGeometry(ref, mesh, element.cell, g);
-            int edofs[Ref::dofs];
-            double eK[Ref::dofs * Ref::dofs];
-            classicalDofs<Ref>(mesh, *numbering_, element.cell, edofs);
-            classicalStiffness(g, law, eK);
-            scatter(c.eq, edofs, Ref::dofs, eK, matrix_);
-        });
-        if (fixedSize) continue;
-        const ElementIntegration* ei = &integrationOf(e, scratch);
-        computePointGeometry(mesh, element.cell, dim, false, *ei, geo);
-        localDofs(mesh, *numbering_, *ei, dofs);
-        generalStiffness(*ei, geo, law, dim, static_cast<int>(dofs.size()), Ke);
-        scatter(c.eq, dofs.data(), static_cast<int>(dofs.size()), Ke.data(), matrix_);
+    // Batches of elements. Phase 1: each worker computes the matrices of its part of the batch
+    // (and their equations, sorted). Phase 2: each worker adds the whole batch, in element order,
+    // into the rows it owns (blocks of 64 equations dealt in turn). Every matrix entry thus receives
+    // its element contributions in element order whatever the number of workers: the same bits.
+    constexpr size_t kBatch = 4096;
+    const size_t nElements = model_->elements.size();
+    const int workers = static_cast<int>(std::min<size_t>(workerCount(), std::max<size_t>(1, nElements / kBatch)));
+    struct Part {  // one worker's element matrices of the current batch
+        std::vector<int> dofs, rows, local;  // per element: nd dofs; m (equation, local index) sorted
+        std::vector<double> Ke;
+    };
+    struct Entry {
+        int part = 0, nd = 0, m = 0;
+        size_t dofs = 0, Ke = 0, rows = 0;
+    };
+    std::vector<Part> parts(workers);
+    std::vector<Entry> entries(kBatch);
+    std::vector<double> cpu(workers, 0.0);
+    std::atomic<bool> failed{false};
+    std::vector<std::pair<size_t, std::exception_ptr>> errors(workers, {SIZE_MAX, nullptr});
+    std::barrier sync(workers);
+    auto work = [&](int t) {
+        const double cpu0 = threadCpuSeconds();
+        Part& part = parts[t];
+        ElementIntegration scratch;
+        PointGeometry geo;
+        std::vector<int> dofs;
+        std::vector<double> Ke;
+        LawCache laws(*material_);
+        auto keep = [&](size_t slot, const int* edofs, int nd, const double* eK) {
+            Entry& entry = entries[slot];
+            entry.part = t, entry.nd = nd;
+            entry.dofs = part.dofs.size(), entry.Ke = part.Ke.size(), entry.rows = part.rows.size();
+            part.dofs.insert(part.dofs.end(), edofs, edofs + nd);
+            part.Ke.insert(part.Ke.end(), eK, eK + size_t(nd) * nd);
+            int m = 0;
+            for (int j = 0; j < nd; ++j) {
+                const int row = c.eq[edofs[j]];
+                if (row < 0) continue;
+                part.rows.push_back(row), part.local.push_back(j);
+                // insertion sort by equation: a handful of entries
+                for (size_t i = part.rows.size() - 1; i > entry.rows && part.rows[i - 1] > row; --i) {
+                    std::swap(part.rows[i - 1], part.rows[i]);
+                    std::swap(part.local[i - 1], part.local[i]);
+                }
+                ++m;
+            }
+            entry.m = m;
+        };
+        for (size_t first = 0; first < nElements; first += kBatch) {
+            const size_t count = std::min(kBatch, nElements - first);
+            part.dofs.clear(), part.rows.clear(), part.local.clear(), part.Ke.clear();
+            size_t e = first + count * t / workers;
+            try {
+                for (; e < first + count * (t + 1) / workers; ++e) {
+                    const auto& element = model_->elements[e];
+                    const IsotropicLaw& law = laws.of(element);
+                    const bool fixedSize =
+                        !isEnrichedElement(e) && classical::dispatch(mesh.cellTypes[element.cell], dim, [&](const auto& ref) {
+                            using Ref = std::decay_t<decltype(ref)>;
+                            classical::Geometry<Ref> g;
+                            classical::computeGeometry(ref, mesh, element.cell, g);
+                            int edofs[Ref::dofs];
+                            double eK[Ref::dofs * Ref::dofs];
+                            classicalDofs<Ref>(mesh, *numbering_, element.cell, edofs);
+                            classicalStiffness(g, law, eK);
+                            keep(e - first, edofs, Ref::dofs, eK);
+                        });
+                    if (fixedSize) continue;
+                    const ElementIntegration* ei = &integrationOf(e, scratch);
+                    computePointGeometry(mesh, element.cell, dim, false, *ei, geo);
+                    localDofs(mesh, *numbering_, *ei, dofs);
+                    generalStiffness(*ei, geo, law, dim, static_cast<int>(dofs.size()), Ke);
+                    keep(e - first, dofs.data(), static_cast<int>(dofs.size()), Ke.data());
+                }
+            } catch (...) {
+                errors[t] = {e, std::current_exception()};
+                failed = true;
+            }
+            sync.arrive_and_wait();
+            if (failed) break;  // every worker sees the same value here
+            const int* cols = matrix_.cols.data();
+            double* values = matrix_.values.data();
+            for (size_t slot = 0; slot < count; ++slot) {
+                const Entry& entry = entries[slot];
+                const Part& p = parts[entry.part];
+                const int* rows = p.rows.data() + entry.rows;
+                const int* local = p.local.data() + entry.rows;
+                const double* eK = p.Ke.data() + entry.Ke;
+                for (int i = 0; i < entry.m; ++i) {
+                    if ((rows[i] >> 6) % workers != t) continue;
+                    long long k = matrix_.rowStart[rows[i]];
+                    const double* Kr = eK + size_t(local[i]) * entry.nd;
+                    for (int j = 0; j < entry.m; ++j) {
+                        while (cols[k] < rows[j]) ++k;
+                        values[k] += Kr[local[j]];
+                    }
+                }
+            }
+            sync.arrive_and_wait();
+        }
+        cpu[t] = threadCpuSeconds() - cpu0;
+    };
+    {
+        std::vector<std::jthread> threads;
+        for (int t = 1; t < workers; ++t) threads.emplace_back(work, t);
+        work(0);
+    }
+    if (failed) {  // the error of the first failing element, as a serial loop would report it
+        auto first = std::min_element(errors.begin(), errors.end(),
+                                      [](const auto& a, const auto& b) { return a.first < b.first; });
+        std::rethrow_exception(first->second);
     }
     if (additional_)
         additional_->tangent(u, [&](int i, int j, double v) {
@@ -585,14 +690,14 @@ void MechanicalProblem::assembleMatrix() {
     }
     factorised_ = false;
     matrixValid_ = true;
-    const double cpu = threadCpuSeconds() - cpu0;
-    msg().infof("    stiffness assembled: {} elements, {:.3f} s (cpu {:.3f} s, {:.3f} us per dof){}", model_->elements.size(),
-                seconds(t0), cpu, 1e6 * cpu / std::max(1, numbering_->size()),
+    const double cpuTotal = std::accumulate(cpu.begin(), cpu.end(), 0.0);
+    msg().infof("    stiffness assembled: {} elements, {:.3f} s (cpu {:.3f} s, {:.3f} us per dof, {} thread(s)){}",
+                model_->elements.size(), seconds(t0), cpuTotal, 1e6 * cpuTotal / std::max(1, numbering_->size()), workers,
                 c.multi.empty() ? "" : fmt::format(", multiplier scaling {:.3e}", alpha_));
 }
 
 const ElementIntegration& MechanicalProblem::integrationOf(size_t e, ElementIntegration& scratch) const {
-    if (!enrichedIntegrations_.empty() && enrichedIntegrations_[e].nodeCount > 0) return enrichedIntegrations_[e];
+    if (isEnrichedElement(e)) return enrichedIntegrations_[enrichedIndex_[e]];
     classicalIntegration(*model_->mesh, model_->elements[e].cell, false, scratch);
     return scratch;
 }
@@ -866,7 +971,7 @@ std::shared_ptr<GaussField> MechanicalProblem::stressField() const {
     // Sizes first: the field's arrays are filled without reallocation.
     size_t points = 0;
     for (size_t e = 0; e < model_->elements.size(); ++e)
-        points += isEnrichedElement(e) ? enrichedIntegrations_[e].refPoints.size()
+        points += isEnrichedElement(e) ? enrichedIntegrations_[enrichedIndex_[e]].refPoints.size()
                                        : stiffnessRule(mesh.cellTypes[model_->elements[e].cell]).points.size();
     field->cells.reserve(model_->elements.size());
     field->pointOffsets.reserve(model_->elements.size() + 1);

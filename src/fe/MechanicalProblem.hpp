@@ -101,16 +101,15 @@ private:
     double loadFactor(const LoadCase& lc, double inst) const;
     // The X-FEM description of element e when it is enriched, else its classical one (in scratch).
     const ElementIntegration& integrationOf(size_t e, ElementIntegration& scratch) const;
-    bool isEnrichedElement(size_t e) const {
-        return !enrichedIntegrations_.empty() && enrichedIntegrations_[e].nodeCount > 0;
-    }
+    bool isEnrichedElement(size_t e) const { return !enrichedIndex_.empty() && enrichedIndex_[e] >= 0; }
 
     std::shared_ptr<const Model> model_;
     std::shared_ptr<const MaterialField> material_;
     std::vector<LoadCase> loads_;
     SolverOptions solverOptions_;
     std::unique_ptr<DofNumbering> numbering_;
-    std::vector<ElementIntegration> enrichedIntegrations_;  // by element index; empty when classical
+    std::vector<ElementIntegration> enrichedIntegrations_;  // X-FEM elements only
+    std::vector<int> enrichedIndex_;  // element -> index in enrichedIntegrations_, -1 (empty: no X-FEM)
     std::vector<char> attached_;                              // per dof: used by some element
     std::unique_ptr<Constraints> constraints_;
     std::vector<double> lambda_;

@@ -1,6 +1,7 @@
 // The fixed-size classical element path (fe/ClassicalElement.hpp) gives the same bits as the
 // general path (classicalIntegration + computePointGeometry) on distorted cells of every type,
-// and reports an inverted cell with the same message.
+// and reports an inverted cell with the same message. The threaded pattern and assembly give the
+// same bits with 1, 2 and 3 threads.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +10,9 @@
 #include "core/Error.hpp"
 #include "fe/ClassicalElement.hpp"
 #include "fe/ElementKinematics.hpp"
+#include "fe/MechanicalProblem.hpp"
+#include "fe/Parallel.hpp"
+#include "fe_test_support.hpp"
 
 using namespace ma;
 
@@ -104,4 +108,50 @@ TEST(FeClassical, InvertedCellIsReportedAsByTheGeneralPath) {
     EXPECT_EQ(fixed, general);
     EXPECT_EQ(fixed, "cell M1 (QUAD4) has a negative Jacobian (-2.500e-01): the cell is degenerate or its nodes are not "
                      "in code_aster's order");
+}
+
+TEST(FeClassical, ThreadsDoNotChangeABit) {
+    using namespace fetest;
+    msg().setEcho(false);
+    auto mesh = planeMesh(130, 130, false);  // 16900 QUAD4: several assembly batches
+    auto model = affeModele(mesh, "D_PLAN", {"ALL", "RIGHT", "TOP"});
+    auto mat = material(model, 2.0e5, 0.3);
+    KeywordSet kw;
+    set(kw, "MODELE", model);
+    auto& d = kw.addOccurrence("DDL_IMPO");
+    setTexts(d, "GROUP_MA", {"LEFT"});
+    set(d, "DX", ConceptPtr(std::make_shared<LambdaFunction>([](double, double, double) { return 0.0; })));
+    set(d, "DY", ConceptPtr(std::make_shared<LambdaFunction>([](double, double y, double) { return 1e-3 * y * y; })));
+    auto& p = kw.addOccurrence("PRES_REP");
+    setTexts(p, "GROUP_MA", {"RIGHT", "TOP"});
+    set(p, "PRES", ConceptPtr(std::make_shared<LambdaFunction>([](double x, double y, double) { return 10.0 * y - x; })));
+    auto& f = kw.addOccurrence("FORCE_INTERNE");
+    set(f, "TOUT", std::string("OUI"));
+    set(f, "FX", ConceptPtr(std::make_shared<LambdaFunction>([](double x, double y, double) { return std::sin(x * y); })));
+    set(f, "FY", ConceptPtr(std::make_shared<LambdaFunction>([](double, double, double) { return -2.0; })));
+    auto load = std::dynamic_pointer_cast<MechanicalLoad>(run("AFFE_CHAR_MECA_F", kw, "CHAR"));
+    SolverOptions eigen;
+    eigen.method = "LDLT";  // deterministic ordering: differences can only come from the assembly
+    std::vector<double> u[3], fint[3];
+    std::vector<double> sigma[3];
+    for (int threads : {1, 2, 3}) {
+        setWorkerCount(threads);
+        MechanicalProblem problem(model, mat, {{load, nullptr}}, eigen);
+        ConvergenceOptions conv;
+        conv.maxIterations = 0;
+        conv.resiGlobRela = -1.0;
+        problem.solveIncrement(0.0, conv);
+        u[threads - 1] = problem.u;
+        problem.internalForces(problem.u, fint[threads - 1]);
+        sigma[threads - 1] = problem.stressField()->values;
+    }
+    setWorkerCount(0);
+    double umax = 0.0;
+    for (double v : u[0]) umax = std::max(umax, std::abs(v));
+    EXPECT_GT(umax, 1e-4);
+    for (int t : {1, 2}) {
+        EXPECT_EQ(u[t], u[0]) << t + 1 << " threads";
+        EXPECT_EQ(fint[t], fint[0]) << t + 1 << " threads";
+        EXPECT_EQ(sigma[t], sigma[0]) << t + 1 << " threads";
+    }
 }
