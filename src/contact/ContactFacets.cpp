@@ -213,8 +213,8 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
     }
     // Facets between two parent cells.
     // A face on an interface with no partner: on the boundary of the model (legitimately free), or
-    // inside the model where the two sides' sub-cells do not share it (non-conforming sub-cells):
-    // there the weak form misses the interface term and the discrete problem is inconsistent.
+    // inside its cell where no sub-cell of the other side shares it (in 3D, sliver pieces dropped by
+    // the cut as degenerate): there the weak form misses the interface term (counted, ContactLoop).
     // Only faces inside their parent cell are counted (a face on a parent face without partner is
     // on the boundary of the model or of the enriched zone).
     auto unmatched = [&](const FaceOnCrack& f) {

@@ -44,8 +44,8 @@ struct FacetStatistics {
     int acrossParentFaces = 0;  // interface along mesh faces: sides in two parent cells
     int atJunction = 0;
     double totalMeasure = 0.0;
-    // Faces on an interface inside a parent cell whose other side's sub-cells do not share them
-    // (non-conforming sub-cells, e.g. slivers at a junction): no facet there.
+    // Faces on an interface inside a parent cell that no sub-cell of the other side shares (in 3D,
+    // sliver pieces of the other side dropped by the cut as degenerate): no facet there.
     int unmatched = 0;
     double unmatchedMeasure = 0.0;
 };

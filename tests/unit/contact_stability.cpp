@@ -1,6 +1,6 @@
-// Contact at the extremes (docs/study/stability.md): what miniaster says when precision is at risk
-// or the system cannot be solved. Sliver blocks next to a contact facet raise CONTACT_SLIVER (and
-// only then); a penalty coefficient so large that the penalised contact becomes singular is
+// Contact at the extremes (docs/study/stability.md): sliver cuts next to the junction keep the exact
+// answer in 2D; in 3D, interface pieces left without the other side's sub-cells raise CONTACT_SLIVER
+// (and only then); a penalty coefficient so large that the penalised contact becomes singular is
 // reported with its cause, not as a missing boundary condition.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -9,6 +9,8 @@
 #include <cstdlib>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <regex>
 #include <string>
 
@@ -54,35 +56,55 @@ const std::string kMesh = std::string("--mesh '") + MINIASTER_SHARED_DIR + "/ast
 
 // A 10 x 10 QUAD4 mesh of [-5,5]^2 whose interior grid lines are moved by `offset` cells: the
 // interfaces x = 0, y = 0 run offset*h from a node row, the junction cell keeps an offset^2 block.
-std::string offsetMesh(double offset) {
+std::string offsetMesh(double offset, const std::string& type = "quad4", int n = 10) {
     const auto tool = std::filesystem::path(MINIASTER_BINARY).parent_path() / "tools" / "ssnv511_mesh";
     const auto dir = std::filesystem::temp_directory_path() / fmt::format("miniaster-contact-stability-{}", getpid());
     std::filesystem::create_directories(dir);
-    const auto path = dir / fmt::format("m_{}.med", offset);
-    const auto cmd = fmt::format("'{}' --type quad4 --n 10 --offset {} {} -o '{}' > /dev/null 2>&1", tool.string(), offset,
-                                 offset, path.string());
+    const auto path = dir / fmt::format("m_{}_{}_{}.med", type, n, offset);
+    const auto cmd = fmt::format("'{}' --type {} --n {} --offset {} {}{} -o '{}' > /dev/null 2>&1", tool.string(), type, n,
+                                 offset, offset, type == "tetra4" ? " --zbounds 0 1" : "", path.string());
     EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
     return fmt::format("--mesh '{}'", path.string());
 }
 
+std::string readFile(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
 }  // namespace
 
-TEST(ContactStability, SliverBlocksNextToAFacetRaiseAnAlarm) {
+TEST(ContactStability, SliverCutsIn2DKeepTheExactAnswer) {
+    // interfaces 1e-5 h from the node rows: the junction cell keeps a block of 1e-10 of the cell
     const auto sliver = runComm(compression("ALGO_CONT='STANDARD'"), offsetMesh(1e-5));
     EXPECT_EQ(sliver.status, 0) << sliver.output;
-    EXPECT_NE(sliver.output.find("<A> <CONTACT_SLIVER>"), std::string::npos) << sliver.output;
-    EXPECT_NE(sliver.output.find("smallest fraction 1.000e-10"), std::string::npos) << sliver.output;
+    EXPECT_NE(sliver.output.find("smallest block fraction of a cell next to a facet 1.000e-10"), std::string::npos)
+        << sliver.output;
+    // every facet found (the junction point merged 1e-10 h off FISS1 used to drop a piece of length ~h)
+    EXPECT_NE(sliver.output.find("contact zone F1: "), std::string::npos);
+    EXPECT_NE(sliver.output.find("interface length 10 (Nitsche)"), std::string::npos) << sliver.output;
     // Nitsche is exact here (uniform stress per block): no interpenetration beyond round-off. With the
     // facet's geometric normal (its vertex 1e-10 h off the interface, the facet 1e-5 h long) it was 4.5e-7.
     std::smatch m;
     ASSERT_TRUE(std::regex_search(sliver.output, m, std::regex(R"(largest penetration ([0-9.e+-]+))")));
     EXPECT_LT(std::stod(m[1]), 1e-10) << m[0];
-    // an ordinary cut: no alarm, the smallest block fraction is logged
-    const auto plain = runComm(compression("ALGO_CONT='STANDARD'"), offsetMesh(1e-1));
+    EXPECT_EQ(sliver.output.find("CONTACT_SLIVER"), std::string::npos);
+}
+
+TEST(ContactStability, SliverPiecesMissingIn3DRaiseAnAlarm) {
+    // astest/contact_compression_3d.comm (exact answer, energy and L2 errors checked to 1e-8 / 1e-10)
+    const std::string comm = readFile(std::filesystem::path(MINIASTER_SOURCE_DIR) / "astest" / "contact_compression_3d.comm");
+    ASSERT_FALSE(comm.empty());
+    // interfaces 1e-4 h from the node planes: sliver pieces of the other side are dropped by the cut
+    const auto sliver = runComm(comm, offsetMesh(1e-4, "tetra4", 6));
+    EXPECT_NE(sliver.output.find("<A> <CONTACT_SLIVER>"), std::string::npos) << sliver.output;
+    EXPECT_EQ(sliver.status, 2) << "precision lost: the exactness checks are NOOK";
+    // an ordinary cut: exact, no alarm
+    const auto plain = runComm(comm, offsetMesh(1e-1, "tetra4", 6));
     EXPECT_EQ(plain.status, 0) << plain.output;
     EXPECT_EQ(plain.output.find("CONTACT_SLIVER"), std::string::npos) << plain.output;
-    EXPECT_NE(plain.output.find("smallest block fraction of a cell next to a facet 1.000e-02"), std::string::npos)
-        << plain.output;
 }
 
 TEST(ContactStability, HugePenaltyIsReportedWithItsCause) {
