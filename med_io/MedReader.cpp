@@ -54,10 +54,15 @@ std::vector<MeshHeader> readHeaders(const MedFile& file) {
 std::vector<std::string> splitNames(const std::vector<char>& buf, med_int n) {
     std::vector<std::string> names(static_cast<size_t>(n));
     for (med_int i = 0; i < n; ++i) {
-        std::string s = trimName(buf.data() + size_t(i) * MED_SNAME_SIZE, MED_SNAME_SIZE);
-        if (s.size() > 8) s.resize(8);
-        while (!s.empty() && s.back() == ' ') s.pop_back();
-        names[size_t(i)] = s;
+        // trimName's rule (up to the first NUL, trailing blanks off), cut at 8, blanks off again;
+        // the string is built once (millions of names in a refined mesh).
+        const char* p = buf.data() + size_t(i) * MED_SNAME_SIZE;
+        size_t len = 0;
+        while (len < MED_SNAME_SIZE && p[len] != '\0') ++len;
+        while (len > 0 && p[len - 1] == ' ') --len;
+        if (len > 8) len = 8;
+        while (len > 0 && p[len - 1] == ' ') --len;
+        names[size_t(i)].assign(p, len);
     }
     return names;
 }
@@ -185,6 +190,18 @@ std::shared_ptr<Mesh> readMesh(const std::string& path, const std::string& meshN
     }
 
     std::vector<med_int> cellFamily;
+    {  // room for every cell at once (a refined mesh has millions)
+        size_t cells = 0, entries = 0;
+        for (med_geometry_type geo : types) {
+            const med_int n = count(MED_CELL, geo, MED_CONNECTIVITY, MED_NODAL);
+            if (n > 0) cells += size_t(n), entries += size_t(n) * nodeCount(static_cast<CellType>(geo));
+        }
+        mesh->cellTypes.reserve(cells);
+        mesh->cellOffsets.reserve(cells + 1);
+        mesh->cellNames.reserve(cells);
+        mesh->connectivity.reserve(entries);
+        cellFamily.reserve(cells);
+    }
     for (med_geometry_type geo : types) {
         CellType type = static_cast<CellType>(geo);
         const med_int n = count(MED_CELL, geo, MED_CONNECTIVITY, MED_NODAL);
@@ -217,8 +234,7 @@ std::shared_ptr<Mesh> readMesh(const std::string& path, const std::string& meshN
                 med[j] = int(node - 1);
             }
             medToInternal(type, med, internal);
-            std::string name = names.empty() ? std::string() : names[size_t(c)];
-            mesh->addCell(type, internal, name);
+            mesh->addCell(type, internal, names.empty() ? std::string() : std::move(names[size_t(c)]));
         }
         cellFamily.insert(cellFamily.end(), fam.begin(), fam.end());
     }

@@ -38,12 +38,11 @@ std::vector<std::string> meshDefects(const Mesh& mesh) {
     int repeated = 0;
     std::string example;
     for (int c = 0; c < mesh.cellCount(); ++c) {
-        auto n = mesh.cellNodes(c);
-        std::vector<int> s(n.begin(), n.end());
-        std::sort(s.begin(), s.end());
-        if (std::adjacent_find(s.begin(), s.end()) != s.end()) {
-            if (repeated++ == 0) example = mesh.cellNames[size_t(c)];
-        }
+        const auto n = mesh.cellNodes(c);
+        bool twice = false;  // pairwise: cells have at most 27 nodes
+        for (size_t i = 1; i < n.size() && !twice; ++i)
+            for (size_t j = 0; j < i && !twice; ++j) twice = n[i] == n[j];
+        if (twice && repeated++ == 0) example = mesh.cellNames[size_t(c)];
     }
     if (repeated > 0)
         out.push_back(fmt::format("{} cells have the same node twice (degenerate cells; first one: {})", repeated, example));

@@ -31,24 +31,19 @@ std::vector<int> groupElements(const Model& model, const std::string& group) {
     return out;
 }
 
-// Reference values of every component at the points (X, Y[, Z]), one batch per formula.
-std::vector<std::vector<double>> evaluateReference(const ReferenceFormulas& ref, size_t group, int dim,
-                                                   const std::vector<std::array<double, 3>>& points) {
-    std::map<std::string, std::vector<double>> columns;
-    const char* names[3] = {"X", "Y", "Z"};
-    for (int d = 0; d < dim; ++d) {
-        auto& col = columns[names[d]];
-        col.reserve(points.size());
-        for (const auto& p : points) col.push_back(p[size_t(d)]);
-    }
+// Reference values of every component at the points whose coordinates are the columns X, Y[, Z]:
+// one batch per distinct formula (SIXX=ZERO, SIYY=ZERO ... evaluate ZERO once), null = 0.
+std::vector<std::vector<double>> evaluateReference(const ReferenceFormulas& ref, size_t group,
+                                                   const std::map<std::string, std::vector<double>>& columns,
+                                                   size_t npoints) {
     std::vector<std::vector<double>> out(ref.components.size());
     for (size_t c = 0; c < ref.components.size(); ++c) {
-        if (ref.formulas[c].empty()) {
-            out[c].assign(points.size(), 0.0);
-            continue;
-        }
-        const auto& f = ref.formulas[c].at(group);
-        out[c] = f ? f->evaluateColumns(columns, points.size()) : std::vector<double>(points.size(), 0.0);
+        const Function* f = ref.formulas[c].empty() ? nullptr : ref.formulas[c].at(group).get();
+        size_t same = c;
+        for (size_t b = 0; b < c && same == c; ++b)
+            if (!ref.formulas[b].empty() && ref.formulas[b].at(group).get() == f && f) same = b;
+        if (same != c) out[c] = out[same];
+        else out[c] = f ? f->evaluateColumns(columns, npoints) : std::vector<double>(npoints, 0.0);
     }
     return out;
 }
@@ -103,10 +98,14 @@ std::shared_ptr<Table> displacementErrorTable(const Model& model, const NodalFie
     std::vector<double> diff(groups.size()), ref(groups.size());
     for (size_t g = 0; g < groups.size(); ++g) {
         const auto samples = sampleDisplacement(model, displacement, groupElements(model, groups[g]));
-        std::vector<std::array<double, 3>> points;
-        points.reserve(samples.size());
-        for (const auto& s : samples) points.push_back(s.xyz);
-        const auto uref = evaluateReference(reference, g, dim, points);
+        std::map<std::string, std::vector<double>> columns;
+        const char* names[3] = {"X", "Y", "Z"};
+        for (int d = 0; d < dim; ++d) {
+            auto& col = columns[names[d]];
+            col.resize(samples.size());
+            for (size_t p = 0; p < samples.size(); ++p) col[p] = samples[p].xyz[size_t(d)];
+        }
+        const auto uref = evaluateReference(reference, g, columns, samples.size());
         double d2 = 0.0, r2 = 0.0;
         for (size_t p = 0; p < samples.size(); ++p) {
             double dp = 0.0, rp = 0.0;
@@ -159,39 +158,42 @@ std::shared_ptr<Table> energyErrorTable(const Model& model, const GaussField& st
     for (size_t g = 0; g < groups.size(); ++g) {
         std::vector<char> inGroup(size_t(model.mesh->cellCount()), 0);
         for (int c : groupElements(model, groups[g])) inGroup[size_t(c)] = 1;
-        std::vector<size_t> pts;
-        std::vector<std::array<double, 3>> xyz;
-        for (size_t e = 0; e < stress.cells.size(); ++e) {
-            if (stress.cells[e] < 0 || stress.cells[e] >= int(inGroup.size()) || !inGroup[size_t(stress.cells[e])])
-                continue;
-            for (int p = stress.pointOffsets[e]; p < stress.pointOffsets[e + 1]; ++p) {
-                pts.push_back(size_t(p));
-                xyz.push_back(stress.pointCoords[size_t(p)]);
-            }
+        auto selected = [&](size_t e) {
+            return stress.cells[e] >= 0 && stress.cells[e] < int(inGroup.size()) && inGroup[size_t(stress.cells[e])];
+        };
+        // Coordinates of the group's points, in field order.
+        size_t npoints = 0;
+        for (size_t e = 0; e < stress.cells.size(); ++e)
+            if (selected(e)) npoints += size_t(stress.pointOffsets[e + 1] - stress.pointOffsets[e]);
+        std::map<std::string, std::vector<double>> columns;
+        const char* names[3] = {"X", "Y", "Z"};
+        for (int d = 0; d < dim; ++d) {
+            auto& col = columns[names[d]];
+            col.reserve(npoints);
+            for (size_t e = 0; e < stress.cells.size(); ++e)
+                if (selected(e))
+                    for (int p = stress.pointOffsets[e]; p < stress.pointOffsets[e + 1]; ++p)
+                        col.push_back(stress.pointCoords[size_t(p)][size_t(d)]);
         }
-        // Cell of each point, for its material.
-        std::vector<int> cellOf;
-        cellOf.reserve(pts.size());
-        for (size_t e = 0; e < stress.cells.size(); ++e) {
-            if (stress.cells[e] < 0 || stress.cells[e] >= int(inGroup.size()) || !inGroup[size_t(stress.cells[e])])
-                continue;
-            for (int p = stress.pointOffsets[e]; p < stress.pointOffsets[e + 1]; ++p) cellOf.push_back(stress.cells[e]);
-        }
-        const auto sref = evaluateReference(reference, g, dim, xyz);
+        const auto sref = evaluateReference(reference, g, columns, npoints);
         double eDiff = 0.0, eRef = 0.0;
-        for (size_t k = 0; k < pts.size(); ++k) {
-            const Material& m = material.at(cellOf[k]);
-            double sr[6] = {0, 0, 0, 0, 0, 0}, sd[6] = {0, 0, 0, 0, 0, 0};
-            for (int j = 0; j < 6; ++j) {
-                sr[j] = refComp[j] >= 0 ? sref[size_t(refComp[j])][k] : 0.0;
-                if (j < used) {
-                    const double sh = fieldComp[j] >= 0 ? stress.values[pts[k] * nc + size_t(fieldComp[j])] : 0.0;
-                    sd[j] = sh - sr[j];
+        size_t k = 0;
+        for (size_t e = 0; e < stress.cells.size(); ++e) {
+            if (!selected(e)) continue;
+            const Material& m = material.at(stress.cells[e]);
+            for (int p = stress.pointOffsets[e]; p < stress.pointOffsets[e + 1]; ++p, ++k) {
+                double sr[6] = {0, 0, 0, 0, 0, 0}, sd[6] = {0, 0, 0, 0, 0, 0};
+                for (int j = 0; j < 6; ++j) {
+                    sr[j] = refComp[j] >= 0 ? sref[size_t(refComp[j])][k] : 0.0;
+                    if (j < used) {
+                        const double sh = fieldComp[j] >= 0 ? stress.values[size_t(p) * nc + size_t(fieldComp[j])] : 0.0;
+                        sd[j] = sh - sr[j];
+                    }
                 }
+                const double w = stress.pointWeights[size_t(p)];
+                eRef += w * elasticEnergyDensity(sr, m.E, m.nu, planeStress);
+                eDiff += w * elasticEnergyDensity(sd, m.E, m.nu, planeStress);
             }
-            const double w = stress.pointWeights[pts[k]];
-            eRef += w * elasticEnergyDensity(sr, m.E, m.nu, planeStress);
-            eDiff += w * elasticEnergyDensity(sd, m.E, m.nu, planeStress);
         }
         diff[g] = eDiff;
         ref[g] = eRef;
