@@ -26,3 +26,9 @@ foreach(_name ${MINIASTER_ORIGINALS})
            COMMAND ${_run} $<TARGET_FILE:miniaster-bin> ${CMAKE_SOURCE_DIR}/../shared/astest/${_name}.export
                    ${CMAKE_BINARY_DIR}/astest-out/${_name} ${_opt})
 endforeach()
+
+# The manufactured fields of the smooth scenes (open and with contact): derivatives against finite
+# differences, body force, contact conditions on the interfaces, and mutated fields that must fail
+# (tools/study/smooth_field.py). The astest/smooth_* cases trust these fields; ~1 s.
+add_test(NAME study.check_field
+         COMMAND ${Python_EXECUTABLE} ${CMAKE_SOURCE_DIR}/tools/study/study.py check-field)
