@@ -538,7 +538,7 @@ void MechanicalProblem::buildPattern() {
         for (const auto& [d, coef] : c.multi[m].terms) *out++ = c.eq[d];
         std::sort(matrix_.cols.begin() + matrix_.rowStart[row], matrix_.cols.begin() + matrix_.rowStart[row + 1]);
     }
-    matrix_.values.assign(matrix_.cols.size(), 0.0);
+    // matrix_.values: allocated (and zeroed) by the first assembly.
     msg().infof("    matrix pattern: {} equations ({} free dofs, {} eliminated, {} multipliers), {} non-zeros, "
                 "{:.3f} s (cpu {:.3f} s)",
                 nEq, c.freeCount, static_cast<int>(c.eq.size()) - c.freeCount, c.multi.size(), matrix_.nonZeros(), seconds(t0),
@@ -550,7 +550,8 @@ void MechanicalProblem::assembleMatrix() {
     const Mesh& mesh = *model_->mesh;
     const auto& c = *constraints_;
     const int dim = numbering_->dim();
-    matrix_.setZero();
+    if (matrix_.values.size() != matrix_.cols.size()) matrix_.values.assign(matrix_.cols.size(), 0.0);
+    else matrix_.setZero();
     // Batches of elements. Phase 1: each worker computes the matrices of its part of the batch
     // (and their equations, sorted). Phase 2: each worker adds the whole batch, in element order,
     // into the rows it owns (blocks of 64 equations dealt in turn). Every matrix entry thus receives

@@ -171,8 +171,8 @@ private:
     DMUMPS_STRUC_C id_{};
     bool conditionLogged_ = false;  // once per factorisation (refinement steps solve again)
     bool initialised_ = false;
-    std::vector<MUMPS_INT> irn_, jcn_;
-    std::vector<double> a_;
+    LargeVector<MUMPS_INT> irn_, jcn_;
+    LargeVector<double> a_;
 };
 
 }  // namespace
