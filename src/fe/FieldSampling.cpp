@@ -13,13 +13,20 @@ namespace ma {
 
 std::vector<DisplacementSample> sampleDisplacement(const Model& model, const NodalField& depl,
                                                    const std::vector<int>& cells) {
-    const Mesh& mesh = *model.mesh;
-    const int dim = model.dim;
     std::vector<char> wanted;
     if (!cells.empty()) {
-        wanted.assign(mesh.cellCount(), 0);
+        wanted.assign(model.mesh->cellCount(), 0);
         for (int c : cells) wanted.at(c) = 1;
     }
+    std::vector<DisplacementSample> out;
+    appendDisplacementSamples(model, depl, wanted, 0, model.elements.size(), out);
+    return out;
+}
+
+void appendDisplacementSamples(const Model& model, const NodalField& depl, const std::vector<char>& wanted,
+                               size_t first, size_t last, std::vector<DisplacementSample>& out) {
+    const Mesh& mesh = *model.mesh;
+    const int dim = model.dim;
     // Field component of each (slot, direction), -1 when the field lacks it (counts as 0).
     std::vector<int> component;
     auto componentIndex = [&](int slot, int c) {
@@ -28,10 +35,10 @@ std::vector<DisplacementSample> sampleDisplacement(const Model& model, const Nod
         if (component[key] == -2) component[key] = depl.componentIndex(displacementComponentName(slot, c));
         return component[key];
     };
-    std::vector<DisplacementSample> out;
     ElementIntegration ei;
     PointGeometry geo;
-    for (const auto& element : model.elements) {
+    for (size_t e = first; e < last; ++e) {
+        const auto& element = model.elements[e];
         if (!wanted.empty() && !wanted[element.cell]) continue;
         const bool enriched = model.enrichment && model.enrichment->isEnriched(element.cell);
         // Classical elements: fixed-size geometry, slot 0 only (psi = 1).
@@ -80,7 +87,6 @@ std::vector<DisplacementSample> sampleDisplacement(const Model& model, const Nod
             out.push_back(s);
         }
     }
-    return out;
 }
 
 }  // namespace ma

@@ -21,4 +21,10 @@ struct DisplacementSample {
 std::vector<DisplacementSample> sampleDisplacement(const Model& model, const NodalField& depl,
                                                    const std::vector<int>& cells);
 
+// The same for the elements model.elements[first, last) whose cell is flagged in `wanted` (every
+// cell when `wanted` is empty), appended to `out`: POST_ERREUR goes through a large model in
+// batches of elements instead of holding every sample at once.
+void appendDisplacementSamples(const Model& model, const NodalField& depl, const std::vector<char>& wanted,
+                               size_t first, size_t last, std::vector<DisplacementSample>& out);
+
 }  // namespace ma
