@@ -105,6 +105,16 @@ def parse_mess(text):
             if m:
                 r["t_commands"] = _f(m.group(1))
                 r["peak_mb"] = _f(m.group(2))
+    # Set-up kind of commands run after the analysis (AFFE_MODELE of a visualisation model, as in
+    # ssnv511a.comm) are post-processing: moved there from the per-command totals.
+    ends = re.findall(r"# end of ([A-Z_]+) \(line \d+\): elapsed " + NUM + " s", text)
+    last_analysis = max((i for i, (cmd, _) in enumerate(ends) if PHASES.get(cmd) == "analysis"), default=None)
+    if last_analysis is not None:
+        for cmd, t in ends[last_analysis + 1:]:
+            phase = PHASES.get(cmd, "other")
+            if phase in ("mesh", "xfem", "setup") and phase in phases:
+                phases[phase] -= _f(t)
+                phases["post"] = phases.get("post", 0.0) + _f(t)
     for k, v in phases.items():
         r[f"t_{k}"] = v
     # what the analysis command spent besides numbering, pattern, assembly, factorisation and solve
@@ -117,6 +127,23 @@ def parse_mess(text):
     m = re.search(r"<F> <[A-Z_]+> (.*)", text)
     if m:
         r["failure"] = m.group(1)[:200]
+    return r
+
+
+def parse_tests(text):
+    """TEST_RESU / TEST_TABLE lines of a .resu: counts of OK and NOOK checks, per reference kind
+    (NON_REGRESSION, ANALYTIQUE, ...) -> tests_ok, tests_nook, tests (e.g. 'ANALYTIQUE 6/18, NON_REGRESSION 16/16')."""
+    counts = {}
+    for line in text.splitlines():
+        m = re.match(r"\s*(OK|NOOK)\s+([A-Z_]+)\s", line)
+        if m:
+            ok, total = counts.get(m.group(2), (0, 0))
+            counts[m.group(2)] = (ok + (m.group(1) == "OK"), total + 1)
+    r = {}
+    if counts:
+        r["tests_ok"] = sum(c[0] for c in counts.values())
+        r["tests_nook"] = sum(c[1] - c[0] for c in counts.values())
+        r["tests"] = ", ".join(f"{k} {ok}/{total} OK" for k, (ok, total) in sorted(counts.items()))
     return r
 
 
@@ -154,6 +181,27 @@ def make_mesh(build, element, n, path, bounds=None, zbounds=None, offset=None):
     if offset:
         cmd += ["--offset"] + [repr(float(o)) for o in offset]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+
+
+def run_comm_file(binary, comm, mesh, workdir, timeout=900):
+    """Runs an existing command file where it is (`miniaster run comm --mesh mesh`, outputs in
+    workdir); returns the parsed record as run_case, plus the TEST counts of its .resu."""
+    os.makedirs(workdir, exist_ok=True)
+    name = os.path.splitext(os.path.basename(comm))[0]
+    t0 = time.monotonic()
+    try:
+        proc = subprocess.run([binary, "run", comm, "--mesh", mesh, "--out-dir", workdir], stdout=subprocess.DEVNULL,
+                              stderr=subprocess.DEVNULL, timeout=timeout)
+        rc = proc.returncode
+    except subprocess.TimeoutExpired:
+        rc = "timeout"
+    rec = {"exit": rc, "wall": time.monotonic() - t0}
+    for ext, parse in ((".mess", parse_mess), (".mess", parse_error_tables), (".resu", parse_tests)):
+        path = os.path.join(workdir, name + ext)
+        if os.path.exists(path):
+            with open(path, errors="replace") as f:
+                rec.update(parse(f.read()))
+    return rec
 
 
 def run_case(binary, comm_text, mesh, workdir, name, timeout=900):

@@ -619,10 +619,32 @@ def study_penalty(ctx):
 # ----------------------------------------------------------------------------------------------
 # perf: ssnv511a-type scene refined
 
-PERF_COLUMNS = ["element", "N", "solver", "dofs", "equations", "nonzeros", "t_mesh", "t_xfem", "t_setup",
+PERF_COLUMNS = ["scene", "element", "N", "solver", "dofs", "equations", "nonzeros", "t_mesh", "t_xfem", "t_setup",
                 "t_numbering", "t_pattern", "t_assembly", "setup_assembly", "us_per_dof", "t_factorisation", "t_solve",
                 "fact_solve", "t_analysis_other", "t_post", "t_commands", "ratio_total", "ratio_compute", "wall",
-                "peak_mb", "solver_peak_mb", "factor_entries", "l2_rel", "residual", "diagnostic"]
+                "peak_mb", "solver_peak_mb", "factor_entries", "l2_rel", "residual", "tests_ok", "tests_nook", "tests",
+                "load", "diagnostic"]
+
+# code_aster's own command file, read in place (never copied into the project)
+SSNV511A_COMM = os.path.join(os.path.dirname(ROOT), "shared", "astest", "ssnv511a.comm")
+
+
+def perf_figures(rec):
+    """The two issue-8 figures of a run: set-up + assembly per DOF, total against factorisation + solve."""
+    # set-up + assembly: everything before the factorisation that scales with the mesh
+    rec["setup_assembly"] = sum(rec.get(k, 0.0) for k in ("t_mesh", "t_xfem", "t_setup", "t_numbering",
+                                                           "t_pattern", "t_assembly"))
+    if rec.get("dofs"):
+        rec["us_per_dof"] = 1e6 * rec["setup_assembly"] / rec["dofs"]
+    rec["fact_solve"] = rec.get("t_factorisation", 0.0) + rec.get("t_solve", 0.0)
+    if rec["fact_solve"] > 0:
+        rec["ratio_total"] = rec.get("t_commands", 0.0) / rec["fact_solve"]
+        rec["ratio_compute"] = (rec.get("t_commands", 0.0) - rec.get("t_post", 0.0)) / rec["fact_solve"]
+    log(f"perf {rec['scene']} N={rec['N']}: {rec.get('dofs')} dofs, set-up+assembly {rec['setup_assembly']:.2f} s "
+        f"({rec.get('us_per_dof', float('nan')):.2f} us/dof), factorisation+solve {rec['fact_solve']:.2f} s, "
+        f"total {rec.get('t_commands', float('nan')):.2f} s ({rec.get('ratio_total', float('nan')):.2f} x), "
+        f"load {rec['load']:.1f}{', tests ' + rec['tests'] if rec.get('tests') else ''}")
+    return rec
 
 
 def study_perf(ctx):
@@ -630,38 +652,42 @@ def study_perf(ctx):
     records = []
     for n in ns:
         mesh = ctx.mesh("quad4", n)
+        load = os.getloadavg()[0]
         rec = ctx.run(f"perf_{n}", scenes.rigid_comm("quad4", info=1), mesh)
-        rec.update(element="quad4", N=n, solver="MUMPS")
-        # set-up + assembly: everything before the factorisation that scales with the mesh
-        rec["setup_assembly"] = sum(rec.get(k, 0.0) for k in ("t_mesh", "t_xfem", "t_setup", "t_numbering",
-                                                               "t_pattern", "t_assembly"))
-        if rec.get("dofs"):
-            rec["us_per_dof"] = 1e6 * rec["setup_assembly"] / rec["dofs"]
-        rec["fact_solve"] = rec.get("t_factorisation", 0.0) + rec.get("t_solve", 0.0)
-        if rec["fact_solve"] > 0:
-            rec["ratio_total"] = rec.get("t_commands", 0.0) / rec["fact_solve"]
-            rec["ratio_compute"] = (rec.get("t_commands", 0.0) - rec.get("t_post", 0.0)) / rec["fact_solve"]
-        records.append(rec)
-        log(f"perf N={n}: {rec.get('dofs')} dofs, set-up+assembly {rec['setup_assembly']:.2f} s "
-            f"({rec.get('us_per_dof', float('nan')):.2f} us/dof), factorisation+solve {rec['fact_solve']:.2f} s, "
-            f"total {rec.get('t_commands', float('nan')):.2f} s")
+        rec.update(scene="rigid_comm + POST_ERREUR", element="quad4", N=n, solver="MUMPS", load=load)
+        records.append(perf_figures(rec))
+    # code_aster's ssnv511a.comm itself on the largest mesh, with its own post-processing and checks
+    if os.path.exists(SSNV511A_COMM):
+        n = ns[-1]
+        load = os.getloadavg()[0]
+        rec = runner.run_comm_file(ctx.binary, SSNV511A_COMM, ctx.mesh("quad4", n),
+                                   os.path.join(ctx.work, f"ssnv511a_{n}"), ctx.args.timeout)
+        rec.update(scene="ssnv511a.comm", element="quad4", N=n, solver="MUMPS", load=load)
+        records.append(perf_figures(rec))
+    else:
+        log(f"perf: {SSNV511A_COMM} not found: the ssnv511a.comm row is left out")
     report.write_csv(os.path.join(ctx.out, "perf.csv"), records, PERF_COLUMNS)
     md = ctx.header("Refined ssnv511a scene: set-up and assembly against the factorisation")
-    md += ("Scene: tools/study/scenes.py `rigid_comm('quad4')` = ssnv511a's model and loads (three interfaces with "
-           "junctions, DDL_IMPO functions, MECA_STATIQUE, MUMPS RENUM='AUTO') on tools/ssnv511_mesh QUAD4 N x N, "
-           "plus POST_ERREUR DEPL_RELA/ENER_RELA as post-processing. set-up + assembly = LIRE_MAILLAGE + "
-           "DEFI_FISS_XFEM x3 + MODI_MODELE_XFEM + the other set-up commands + numbering + matrix pattern + "
-           "stiffness assembly. Targets (issue 8): set-up + assembly <= 1 us per DOF, total <= 1.3 x "
-           "(factorisation + solve); `total/(f+s)` counts every command, `without post` leaves out "
-           "POST_ERREUR/CREA_CHAMP/IMPR_TABLE.\n\n")
+    md += ("Scenes, both on tools/ssnv511_mesh QUAD4 N x N (groups SURF, LG, LD as ssnv511a's mesh):\n\n"
+           "* `rigid_comm + POST_ERREUR`: tools/study/scenes.py `rigid_comm('quad4')` = ssnv511a's model and loads "
+           "(three interfaces with junctions, DDL_IMPO functions, MECA_STATIQUE, MUMPS RENUM='AUTO'), plus "
+           "CREA_CHAMP, POST_ERREUR DEPL_RELA/ENER_RELA and IMPR_TABLE as post-processing;\n"
+           "* `ssnv511a.comm`: code_aster's own command file, read in place from ../shared/astest, with its own "
+           "post-processing (POST_MAIL_XFEM, AFFE_MODELE of the visualisation model, POST_CHAM_XFEM, POST_RELEVE_T, "
+           "CALC_TABLE, CREA_CHAMP, POST_ERREUR, IMPR_TABLE, TEST_TABLE); `tests` counts its checks.\n\n"
+           "set-up + assembly = LIRE_MAILLAGE + DEFI_FISS_XFEM x3 + MODI_MODELE_XFEM + the other set-up commands + "
+           "numbering + matrix pattern + stiffness assembly. Targets (issue 8): set-up + assembly <= 1 us per DOF, "
+           "total <= 1.3 x (factorisation + solve); `total/(f+s)` counts every command, `without post` leaves out "
+           "the commands after MECA_STATIQUE. `load` is the 1-minute load average when the run started (the "
+           "machine's 2 cores are shared).\n\n")
     md += report.markdown_table(records, [
-        ("N", "N", None), ("dofs", "DOFs", None), ("equations", "equations", None), ("t_mesh", "mesh", "t"),
+        ("scene", "scene", None), ("N", "N", None), ("dofs", "DOFs", None), ("t_mesh", "mesh", "t"),
         ("t_xfem", "X-FEM set-up", "t"), ("t_setup", "other set-up", "t"), ("t_numbering", "numbering", "t"),
         ("t_pattern", "pattern", "t"), ("t_assembly", "assembly", "t"), ("setup_assembly", "set-up+assembly", "t"),
         ("us_per_dof", "us/DOF", "f"), ("t_factorisation", "factorisation", "t"), ("t_solve", "solve", "t"),
         ("t_analysis_other", "other analysis", "t"), ("t_post", "post", "t"), ("t_commands", "total", "t"),
         ("ratio_total", "total/(f+s)", "f"), ("ratio_compute", "without post", "f"), ("peak_mb", "peak MB", "t"),
-        ("l2_rel", "L2 rel. err.", "e")])
+        ("l2_rel", "L2 rel. err.", "e"), ("tests", "tests", None), ("load", "load", "f")])
     write_text(os.path.join(ctx.out, "perf.md"), md)
     return records
 
