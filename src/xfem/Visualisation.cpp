@@ -154,17 +154,24 @@ Visualisation buildVisualisation(const Model& model, const XfemModel& xm, const 
     for (int c : modelCells)
         if (!xm.isEnriched(c))
             for (int n : mesh.cellNodes(c)) used[n] = 1;
+    const size_t usedCount = size_t(std::count(used.begin(), used.end(), 1));
+    vm.coords.reserve(usedCount), vm.nodeNames.reserve(usedCount), out.nodes.reserve(usedCount);
+    vm.cellTypes.reserve(modelCells.size()), vm.cellNames.reserve(modelCells.size());
+    vm.cellOffsets.reserve(modelCells.size() + 1), out.cells.reserve(modelCells.size());
     for (int n = 0; n < mesh.nodeCount(); ++n)
         if (used[n]) {
             nodeMap[n] = vm.addNode(mesh.coords[n], mesh.nodeNames[n]);
             out.nodes.push_back({n, -1, -1, -1, false});
         }
-    std::vector<std::vector<int>> cellMap(mesh.cellCount());
+    // Cells of the visualisation mesh made from each cell: a contiguous range [first, last).
+    std::vector<std::pair<int, int>> cellMap(mesh.cellCount(), {0, 0});
     for (int c : modelCells) {
         if (xm.isEnriched(c)) continue;
-        std::vector<int> nodes;
-        for (int n : mesh.cellNodes(c)) nodes.push_back(nodeMap[n]);
-        cellMap[c].push_back(vm.addCell(mesh.cellTypes[c], nodes, mesh.cellNames[c]));
+        const auto cn = mesh.cellNodes(c);
+        std::array<int, 27> nodes{};
+        for (size_t a = 0; a < cn.size(); ++a) nodes[a] = nodeMap[cn[a]];
+        const int id = vm.addCell(mesh.cellTypes[c], std::span<const int>(nodes.data(), cn.size()), mesh.cellNames[c]);
+        cellMap[c] = {id, id + 1};
         out.cells.push_back({c, -1, -1});
     }
 
@@ -221,7 +228,8 @@ Visualisation buildVisualisation(const Model& model, const XfemModel& xm, const 
                 const auto span = std::span<const std::array<double, 3>>(pv.data(), cut->vertexCount());
                 if (simplexMeasure(cut->dim, span) < 0) std::swap(nodes[0], nodes[1]);
             }
-            cellMap[c].push_back(vm.addCell(simplex, nodes, names.cellX + std::to_string(++cellCounter)));
+            const int id = vm.addCell(simplex, nodes, names.cellX + std::to_string(++cellCounter));
+            cellMap[c] = {s == 0 ? id : cellMap[c].first, id + 1};
             out.cells.push_back({-1, c, s});
         }
     }
@@ -231,7 +239,7 @@ Visualisation buildVisualisation(const Model& model, const XfemModel& xm, const 
     for (const auto& g : mesh.cellGroups.names()) {
         std::vector<int> members;
         for (int c : mesh.cellGroups.get(g))
-            members.insert(members.end(), cellMap[c].begin(), cellMap[c].end());
+            for (int id = cellMap[c].first; id < cellMap[c].second; ++id) members.push_back(id);
         if (!members.empty()) vm.cellGroups.set(g, std::move(members));
     }
     if (!crackNodes.empty()) vm.nodeGroups.set(names.crackGroup, crackNodes);
@@ -318,15 +326,24 @@ std::shared_ptr<Result> visualisationResult(const Result& input, const std::shar
             field->quantity = sief->quantity;
             field->components = sief->components;
             const size_t nc = sief->components.size();
-            std::map<int, int> elementOf;  // input cell -> element index of the input field
-            for (size_t e = 0; e < sief->cells.size(); ++e) elementOf[sief->cells[e]] = static_cast<int>(e);
+            std::vector<int> elementOf(size_t(mesh.cellCount()), -1);  // input cell -> element of the input field
+            for (size_t e = 0; e < sief->cells.size(); ++e)
+                if (sief->cells[e] >= 0 && sief->cells[e] < mesh.cellCount())
+                    elementOf[size_t(sief->cells[e])] = static_cast<int>(e);
+            const size_t reserve = sief->pointWeights.size() + sief->pointWeights.size() / 8;
+            field->cells.reserve(modelVisu->elements.size());
+            field->pointOffsets.reserve(modelVisu->elements.size() + 1);
+            field->pointCoords.reserve(reserve);
+            field->pointWeights.reserve(reserve);
+            field->pointSubcell.reserve(reserve);
+            field->pointRefCoords.reserve(reserve);
+            field->values.reserve(reserve * nc);
             for (const auto& el : modelVisu->elements) {
                 const int vc = el.cell;
                 const auto& info = visu.cells[vc];
                 const int parent = info.original >= 0 ? info.original : info.parentCell;
-                auto it = elementOf.find(parent);
-                if (it == elementOf.end()) continue;
-                const int e = it->second;
+                const int e = parent >= 0 && parent < mesh.cellCount() ? elementOf[size_t(parent)] : -1;
+                if (e < 0) continue;
                 const int p0 = sief->pointOffsets[e], p1 = sief->pointOffsets[e + 1];
                 field->cells.push_back(vc);
                 if (info.original >= 0) {  // classical element: same points
@@ -336,7 +353,8 @@ std::shared_ptr<Result> visualisationResult(const Result& input, const std::shar
                         field->pointSubcell.push_back(0);
                         field->pointRefCoords.push_back(p < int(sief->pointRefCoords.size()) ? sief->pointRefCoords[p]
                                                                                              : std::array<double, 3>{});
-                        for (size_t j = 0; j < nc; ++j) field->values.push_back(sief->values[size_t(p) * nc + j]);
+                        field->values.insert(field->values.end(), sief->values.begin() + size_t(p) * nc,
+                                             sief->values.begin() + size_t(p + 1) * nc);
                     }
                 } else {  // sub-cell: mean of the parent's points of that sub-cell, at every point
                     std::vector<double> mean(nc, 0.0);
