@@ -97,7 +97,7 @@ ConceptPtr defiContact(const KeywordSet& kw, CommandContext& ctx) {
     for (const auto& z : def->zones)
         msg().infof("    contact zone on {}: {}, CONTACT_INIT={}, GLISSIERE={}", z.crack->name,
                     z.algorithm == ContactAlgorithm::Nitsche
-                        ? fmt::format("ALGO_CONT='STANDARD' (Nitsche, gamma = {} E / h, theta = {})",
+                        ? fmt::format("ALGO_CONT='STANDARD' (Nitsche, gamma = {} (lambda + 2 mu) / h, theta = {})",
                                       def->nitsche.gammaZero, def->nitsche.theta)
                         : fmt::format("ALGO_CONT='PENALISATION' (penalty, COEF_PENA_CONT = {:.6e})", z.penalty),
                     z.initiallyActive ? "OUI" : "NON", z.bilateral ? "OUI" : "NON");

@@ -67,10 +67,18 @@ ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField
         const ContactFacet& facet = facets_[f];
         const int zone = definition_->zoneOfCrack(facet.crack);
         if (zone < 0) continue;
-        double youngMax = 0.0;
-        for (const FacetSide* side : {&facet.minus, &facet.plus})
-            youngMax = std::max(youngMax, material.at(side->cell).E);
-        const double gamma = definition_->nitsche.gammaZero * youngMax * facet.pairMeasure /
+        // Nitsche parameter on the stiffest normal response of the two sides, the P-wave modulus
+        // lambda + 2 mu (E (1 - nu) / ((1 + nu)(1 - 2 nu)) in 3D / D_PLAN): sigma_n(v) is bounded by it,
+        // not by E. With E the symmetric Nitsche matrix lost positive definiteness near
+        // incompressibility (MUMPS negative pivots from NU = 0.49, docs/study/stability.md).
+        double youngMax = 0.0, modulusMax = 0.0;
+        for (const FacetSide* side : {&facet.minus, &facet.plus}) {
+            const Material& mat = material.at(side->cell);
+            const IsotropicLaw law = IsotropicLaw::from(mat, model.modelisation, mat.name);
+            youngMax = std::max(youngMax, mat.E);
+            modulusMax = std::max(modulusMax, law.lambdaEff + 2.0 * law.mu);
+        }
+        const double gamma = definition_->nitsche.gammaZero * modulusMax * facet.pairMeasure /
                              (facet.minus.blockMeasure + facet.plus.blockMeasure);
         const double wMinus = facet.minus.blockMeasure / (facet.minus.blockMeasure + facet.plus.blockMeasure);
         for (int q = 0; q < rule.size(); ++q) {
