@@ -969,72 +969,78 @@ std::shared_ptr<GaussField> MechanicalProblem::stressField() const {
     field->components = dim == 2 ? std::vector<std::string>{"SIXX", "SIYY", "SIZZ", "SIXY"}
                                  : std::vector<std::string>{"SIXX", "SIYY", "SIZZ", "SIXY", "SIXZ", "SIYZ"};
     const size_t nc = field->components.size();
-    // Sizes first: the field's arrays are filled without reallocation.
-    size_t points = 0;
-    for (size_t e = 0; e < model_->elements.size(); ++e)
-        points += isEnrichedElement(e) ? enrichedIntegrations_[enrichedIndex_[e]].refPoints.size()
-                                       : stiffnessRule(mesh.cellTypes[model_->elements[e].cell]).points.size();
-    field->cells.reserve(model_->elements.size());
-    field->pointOffsets.reserve(model_->elements.size() + 1);
-    field->pointCoords.reserve(points);
-    field->pointWeights.reserve(points);
-    field->pointSubcell.reserve(points);
-    field->pointRefCoords.reserve(points);
-    field->values.reserve(points * nc);
-    auto store = [&](const IsotropicLaw& law, const double G[3][3]) {
+    // Point offsets first; then every element writes its own points (element ranges on the workers).
+    const size_t nElements = model_->elements.size();
+    field->cells.resize(nElements);
+    field->pointOffsets.assign(nElements + 1, 0);
+    for (size_t e = 0; e < nElements; ++e) {
+        field->cells[e] = model_->elements[e].cell;
+        field->pointOffsets[e + 1] =
+            field->pointOffsets[e] +
+            static_cast<int>(isEnrichedElement(e) ? enrichedIntegrations_[enrichedIndex_[e]].refPoints.size()
+                                                  : stiffnessRule(mesh.cellTypes[model_->elements[e].cell]).points.size());
+    }
+    const size_t points = size_t(field->pointOffsets.back());
+    field->pointCoords.resize(points);
+    field->pointWeights.resize(points);
+    field->pointSubcell.resize(points);
+    field->pointRefCoords.resize(points);
+    field->values.resize(points * nc);
+    auto store = [&](size_t point, const IsotropicLaw& law, const double G[3][3]) {
         double tr = 0.0;
         for (int c = 0; c < dim; ++c) tr += G[c][c];
         auto sigma = [&](int a, int b) { return law.mu * (G[a][b] + G[b][a]) + (a == b ? law.lambdaEff * tr : 0.0); };
+        double* out = field->values.data() + point * nc;
         if (dim == 2) {
-            const double szz = law.lambdaZ * (G[0][0] + G[1][1]);
-            field->values.insert(field->values.end(), {sigma(0, 0), sigma(1, 1), szz, sigma(0, 1)});
+            out[0] = sigma(0, 0), out[1] = sigma(1, 1), out[2] = law.lambdaZ * (G[0][0] + G[1][1]), out[3] = sigma(0, 1);
         } else {
-            field->values.insert(field->values.end(),
-                                 {sigma(0, 0), sigma(1, 1), sigma(2, 2), sigma(0, 1), sigma(0, 2), sigma(1, 2)});
+            out[0] = sigma(0, 0), out[1] = sigma(1, 1), out[2] = sigma(2, 2);
+            out[3] = sigma(0, 1), out[4] = sigma(0, 2), out[5] = sigma(1, 2);
         }
     };
-    ElementIntegration scratch;
-    PointGeometry geo;
-    std::vector<int> dofs;
-    LawCache laws(*material_);
-    for (size_t e = 0; e < model_->elements.size(); ++e) {
-        const auto& element = model_->elements[e];
-        const IsotropicLaw& law = laws.of(element);
-        field->cells.push_back(element.cell);
-        const bool fixedSize = !isEnrichedElement(e) && classical::dispatch(mesh.cellTypes[element.cell], dim, [&](const auto& ref) {
-            using Ref = std::decay_t<decltype(ref)>;
-            classical::Geometry<Ref> g;
-            classical::computeGeometry(ref, mesh, element.cell, g);
-            int edofs[Ref::dofs];
-            classicalDofs<Ref>(mesh, *numbering_, element.cell, edofs);
-            double ue[Ref::dofs];
-            for (int i = 0; i < Ref::dofs; ++i) ue[i] = u[edofs[i]];
-            for (int p = 0; p < Ref::points; ++p) {
-                double G[3][3];
-                classicalGradient(g.grad[p], ue, G);
-                field->pointCoords.push_back(g.xyz[p]);
-                field->pointWeights.push_back(g.weight[p]);
-                field->pointSubcell.push_back(0);
-                field->pointRefCoords.push_back(ref.point[p]);
-                store(law, G);
-            }
-        });
-        if (!fixedSize) {
+    parallelRanges(nElements, nElements >= 4096 ? workerCount() : 1, [&](size_t begin, size_t end, int) {
+        ElementIntegration scratch;
+        PointGeometry geo;
+        std::vector<int> dofs;
+        LawCache laws(*material_);
+        for (size_t e = begin; e < end; ++e) {
+            const auto& element = model_->elements[e];
+            const IsotropicLaw& law = laws.of(element);
+            const size_t first = size_t(field->pointOffsets[e]);
+            const bool fixedSize =
+                !isEnrichedElement(e) && classical::dispatch(mesh.cellTypes[element.cell], dim, [&](const auto& ref) {
+                    using Ref = std::decay_t<decltype(ref)>;
+                    classical::Geometry<Ref> g;
+                    classical::computeGeometry(ref, mesh, element.cell, g);
+                    int edofs[Ref::dofs];
+                    classicalDofs<Ref>(mesh, *numbering_, element.cell, edofs);
+                    double ue[Ref::dofs];
+                    for (int i = 0; i < Ref::dofs; ++i) ue[i] = u[edofs[i]];
+                    for (int p = 0; p < Ref::points; ++p) {
+                        double G[3][3];
+                        classicalGradient(g.grad[p], ue, G);
+                        field->pointCoords[first + p] = g.xyz[p];
+                        field->pointWeights[first + p] = g.weight[p];
+                        field->pointSubcell[first + p] = 0;
+                        field->pointRefCoords[first + p] = ref.point[p];
+                        store(first + p, law, G);
+                    }
+                });
+            if (fixedSize) continue;
             const ElementIntegration* ei = &integrationOf(e, scratch);
             computePointGeometry(mesh, element.cell, dim, false, *ei, geo);
             localDofs(mesh, *numbering_, *ei, dofs);
             for (size_t p = 0; p < ei->refPoints.size(); ++p) {
                 double G[3][3];
                 displacementGradient(*ei, geo, dofs, u, p, dim, G);
-                field->pointCoords.push_back(geo.xyz[p]);
-                field->pointWeights.push_back(geo.weight[p]);
-                field->pointSubcell.push_back(ei->pointSubcell.empty() ? 0 : ei->pointSubcell[p]);
-                field->pointRefCoords.push_back(ei->refPoints[p]);
-                store(law, G);
+                field->pointCoords[first + p] = geo.xyz[p];
+                field->pointWeights[first + p] = geo.weight[p];
+                field->pointSubcell[first + p] = ei->pointSubcell.empty() ? 0 : ei->pointSubcell[p];
+                field->pointRefCoords[first + p] = ei->refPoints[p];
+                store(first + p, law, G);
             }
         }
-        field->pointOffsets.push_back(static_cast<int>(field->pointWeights.size()));
-    }
+    });
     return field;
 }
 
