@@ -188,6 +188,56 @@ void generalStiffness(const ElementIntegration& ei, const PointGeometry& geo, co
     }
 }
 
+// Element loop on `workers` threads whose sums keep the serial order. Elements go in batches;
+// phase 1: compute(e, worker) for the worker's share of the batch (e in increasing order);
+// phase 2: scatter(first, count, worker) on every worker for the whole batch, each worker adding
+// only into the entries it owns, in element order. A failing element stops the loop after its
+// batch's phase 1; the exception of the first failing element is rethrown (what a serial loop
+// reports). cpu[worker] receives each worker's CPU time.
+template <class Begin, class Compute, class Scatter>
+void batchedElementLoop(size_t nElements, size_t batch, int workers, std::vector<double>& cpu, Begin&& begin,
+                        Compute&& compute, Scatter&& scatter) {
+    cpu.assign(workers, 0.0);
+    std::atomic<bool> failed{false};
+    std::vector<std::pair<size_t, std::exception_ptr>> errors(workers, {SIZE_MAX, nullptr});
+    std::barrier sync(workers);
+    auto work = [&](int t) {
+        const double cpu0 = threadCpuSeconds();
+        for (size_t first = 0; first < nElements; first += batch) {
+            const size_t count = std::min(batch, nElements - first);
+            begin(t);
+            size_t e = first + count * t / workers;
+            try {
+                for (; e < first + count * (t + 1) / workers; ++e) compute(e, t);
+            } catch (...) {
+                errors[t] = {e, std::current_exception()};
+                failed = true;
+            }
+            sync.arrive_and_wait();
+            if (failed) break;  // every worker sees the same value here
+            scatter(first, count, t);
+            sync.arrive_and_wait();
+        }
+        cpu[t] = threadCpuSeconds() - cpu0;
+    };
+    {
+        std::vector<std::jthread> threads;
+        for (int t = 1; t < workers; ++t) threads.emplace_back(work, t);
+        work(0);
+    }
+    if (failed) {
+        auto first = std::min_element(errors.begin(), errors.end(),
+                                      [](const auto& a, const auto& b) { return a.first < b.first; });
+        std::rethrow_exception(first->second);
+    }
+}
+
+// Workers for an element loop: one per 4096 elements at most (threads cost more than small loops).
+constexpr size_t kElementBatch = 4096;
+int elementWorkers(size_t nElements) {
+    return static_cast<int>(std::min<size_t>(workerCount(), std::max<size_t>(1, nElements / kElementBatch)));
+}
+
 }  // namespace
 
 IsotropicLaw IsotropicLaw::from(const Material& m, Modelisation modelisation, const std::string& where) {
@@ -552,87 +602,78 @@ void MechanicalProblem::assembleMatrix() {
     const int dim = numbering_->dim();
     if (matrix_.values.size() != matrix_.cols.size()) matrix_.values.assign(matrix_.cols.size(), 0.0);
     else matrix_.setZero();
-    // Batches of elements. Phase 1: each worker computes the matrices of its part of the batch
-    // (and their equations, sorted). Phase 2: each worker adds the whole batch, in element order,
-    // into the rows it owns (blocks of 64 equations dealt in turn). Every matrix entry thus receives
-    // its element contributions in element order whatever the number of workers: the same bits.
-    constexpr size_t kBatch = 4096;
+    // Phase 1: each worker computes the matrices of its share of the batch (with their equations,
+    // sorted). Phase 2: each worker adds the whole batch, in element order, into the rows it owns
+    // (blocks of 64 equations dealt in turn). Every matrix entry thus receives its element
+    // contributions in element order whatever the number of workers: the same bits.
     const size_t nElements = model_->elements.size();
-    const int workers = static_cast<int>(std::min<size_t>(workerCount(), std::max<size_t>(1, nElements / kBatch)));
+    const int workers = elementWorkers(nElements);
     struct Part {  // one worker's element matrices of the current batch
-        std::vector<int> dofs, rows, local;  // per element: nd dofs; m (equation, local index) sorted
+        std::vector<int> rows, local;  // per element: m (equation, local index), sorted
         std::vector<double> Ke;
     };
     struct Entry {
         int part = 0, nd = 0, m = 0;
-        size_t dofs = 0, Ke = 0, rows = 0;
+        size_t Ke = 0, rows = 0;
     };
     std::vector<Part> parts(workers);
-    std::vector<Entry> entries(kBatch);
-    std::vector<double> cpu(workers, 0.0);
-    std::atomic<bool> failed{false};
-    std::vector<std::pair<size_t, std::exception_ptr>> errors(workers, {SIZE_MAX, nullptr});
-    std::barrier sync(workers);
-    auto work = [&](int t) {
-        const double cpu0 = threadCpuSeconds();
-        Part& part = parts[t];
-        ElementIntegration scratch;
+    std::vector<Entry> entries(kElementBatch);
+    struct Scratch {
+        ElementIntegration ei;
         PointGeometry geo;
         std::vector<int> dofs;
         std::vector<double> Ke;
-        LawCache laws(*material_);
-        auto keep = [&](size_t slot, const int* edofs, int nd, const double* eK) {
-            Entry& entry = entries[slot];
-            entry.part = t, entry.nd = nd;
-            entry.dofs = part.dofs.size(), entry.Ke = part.Ke.size(), entry.rows = part.rows.size();
-            part.dofs.insert(part.dofs.end(), edofs, edofs + nd);
-            part.Ke.insert(part.Ke.end(), eK, eK + size_t(nd) * nd);
-            int m = 0;
-            for (int j = 0; j < nd; ++j) {
-                const int row = c.eq[edofs[j]];
-                if (row < 0) continue;
-                part.rows.push_back(row), part.local.push_back(j);
-                // insertion sort by equation: a handful of entries
-                for (size_t i = part.rows.size() - 1; i > entry.rows && part.rows[i - 1] > row; --i) {
-                    std::swap(part.rows[i - 1], part.rows[i]);
-                    std::swap(part.local[i - 1], part.local[i]);
-                }
-                ++m;
+        LawCache laws;
+    };
+    std::vector<std::unique_ptr<Scratch>> scratch;
+    for (int t = 0; t < workers; ++t) scratch.push_back(std::make_unique<Scratch>(Scratch{{}, {}, {}, {}, LawCache(*material_)}));
+    auto keep = [&](int t, size_t slot, const int* edofs, int nd, const double* eK) {
+        Part& part = parts[t];
+        Entry& entry = entries[slot];
+        entry.part = t, entry.nd = nd;
+        entry.Ke = part.Ke.size(), entry.rows = part.rows.size();
+        part.Ke.insert(part.Ke.end(), eK, eK + size_t(nd) * nd);
+        int m = 0;
+        for (int j = 0; j < nd; ++j) {
+            const int row = c.eq[edofs[j]];
+            if (row < 0) continue;
+            part.rows.push_back(row), part.local.push_back(j);
+            for (size_t i = part.rows.size() - 1; i > entry.rows && part.rows[i - 1] > row; --i) {  // insertion sort
+                std::swap(part.rows[i - 1], part.rows[i]);
+                std::swap(part.local[i - 1], part.local[i]);
             }
-            entry.m = m;
-        };
-        for (size_t first = 0; first < nElements; first += kBatch) {
-            const size_t count = std::min(kBatch, nElements - first);
-            part.dofs.clear(), part.rows.clear(), part.local.clear(), part.Ke.clear();
-            size_t e = first + count * t / workers;
-            try {
-                for (; e < first + count * (t + 1) / workers; ++e) {
-                    const auto& element = model_->elements[e];
-                    const IsotropicLaw& law = laws.of(element);
-                    const bool fixedSize =
-                        !isEnrichedElement(e) && classical::dispatch(mesh.cellTypes[element.cell], dim, [&](const auto& ref) {
-                            using Ref = std::decay_t<decltype(ref)>;
-                            classical::Geometry<Ref> g;
-                            classical::computeGeometry(ref, mesh, element.cell, g);
-                            int edofs[Ref::dofs];
-                            double eK[Ref::dofs * Ref::dofs];
-                            classicalDofs<Ref>(mesh, *numbering_, element.cell, edofs);
-                            classicalStiffness(g, law, eK);
-                            keep(e - first, edofs, Ref::dofs, eK);
-                        });
-                    if (fixedSize) continue;
-                    const ElementIntegration* ei = &integrationOf(e, scratch);
-                    computePointGeometry(mesh, element.cell, dim, false, *ei, geo);
-                    localDofs(mesh, *numbering_, *ei, dofs);
-                    generalStiffness(*ei, geo, law, dim, static_cast<int>(dofs.size()), Ke);
-                    keep(e - first, dofs.data(), static_cast<int>(dofs.size()), Ke.data());
-                }
-            } catch (...) {
-                errors[t] = {e, std::current_exception()};
-                failed = true;
-            }
-            sync.arrive_and_wait();
-            if (failed) break;  // every worker sees the same value here
+            ++m;
+        }
+        entry.m = m;
+    };
+    std::vector<double> cpu;
+    batchedElementLoop(
+        nElements, kElementBatch, workers, cpu,
+        [&](int t) { parts[t].rows.clear(), parts[t].local.clear(), parts[t].Ke.clear(); },
+        [&](size_t e, int t) {
+            Scratch& w = *scratch[t];
+            const auto& element = model_->elements[e];
+            const IsotropicLaw& law = w.laws.of(element);
+            const size_t slot = e % kElementBatch;
+            const bool fixedSize =
+                !isEnrichedElement(e) && classical::dispatch(mesh.cellTypes[element.cell], dim, [&](const auto& ref) {
+                    using Ref = std::decay_t<decltype(ref)>;
+                    classical::Geometry<Ref> g;
+                    classical::computeGeometry(ref, mesh, element.cell, g);
+                    int edofs[Ref::dofs];
+                    double eK[Ref::dofs * Ref::dofs];
+                    classicalDofs<Ref>(mesh, *numbering_, element.cell, edofs);
+                    classicalStiffness(g, law, eK);
+                    keep(t, slot, edofs, Ref::dofs, eK);
+                });
+            if (fixedSize) return;
+            const ElementIntegration* ei = &integrationOf(e, w.ei);
+            computePointGeometry(mesh, element.cell, dim, false, *ei, w.geo);
+            localDofs(mesh, *numbering_, *ei, w.dofs);
+            generalStiffness(*ei, w.geo, law, dim, static_cast<int>(w.dofs.size()), w.Ke);
+            keep(t, slot, w.dofs.data(), static_cast<int>(w.dofs.size()), w.Ke.data());
+        },
+        [&](size_t, size_t count, int t) {
             const int* cols = matrix_.cols.data();
             double* values = matrix_.values.data();
             for (size_t slot = 0; slot < count; ++slot) {
@@ -651,20 +692,7 @@ void MechanicalProblem::assembleMatrix() {
                     }
                 }
             }
-            sync.arrive_and_wait();
-        }
-        cpu[t] = threadCpuSeconds() - cpu0;
-    };
-    {
-        std::vector<std::jthread> threads;
-        for (int t = 1; t < workers; ++t) threads.emplace_back(work, t);
-        work(0);
-    }
-    if (failed) {  // the error of the first failing element, as a serial loop would report it
-        auto first = std::min_element(errors.begin(), errors.end(),
-                                      [](const auto& a, const auto& b) { return a.first < b.first; });
-        std::rethrow_exception(first->second);
-    }
+        });
     if (additional_)
         additional_->tangent(u, [&](int i, int j, double v) {
             const int row = c.eq[i], col = c.eq[j];
@@ -707,65 +735,104 @@ void MechanicalProblem::internalForces(const std::vector<double>& disp, std::vec
     const Mesh& mesh = *model_->mesh;
     const int dim = numbering_->dim();
     f.assign(numbering_->size(), 0.0);
-    ElementIntegration scratch;
-    PointGeometry geo;
-    std::vector<int> dofs;
-    std::vector<double> fe;
-    LawCache laws(*material_);
-    for (size_t e = 0; e < model_->elements.size(); ++e) {
-        const auto& element = model_->elements[e];
-        const IsotropicLaw& law = laws.of(element);
-        const bool fixedSize = !isEnrichedElement(e) && classical::dispatch(mesh.cellTypes[element.cell], dim, [&](const auto& ref) {
-            using Ref = std::decay_t<decltype(ref)>;
-            classical::Geometry<Ref> g;
-            classical::computeGeometry(ref, mesh, element.cell, g);
-            int edofs[Ref::dofs];
-            classicalDofs<Ref>(mesh, *numbering_, element.cell, edofs);
-            double ue[Ref::dofs], fl[Ref::dofs] = {};
-            for (int i = 0; i < Ref::dofs; ++i) ue[i] = disp[edofs[i]];
-            for (int p = 0; p < Ref::points; ++p) {
-                double S[3][3];
-                classicalStress(g.grad[p], ue, law, S);
-                const double w = g.weight[p];
-                for (int a = 0; a < Ref::nodes; ++a)
-                    for (int c = 0; c < Ref::dim; ++c) {
-                        double s = 0.0;
-                        for (int j = 0; j < Ref::dim; ++j) s += S[c][j] * g.grad[p][a][j];
-                        fl[a * Ref::dim + c] += w * s;
+    // Element vectors of a batch computed on the workers, then added in element order by the worker
+    // owning each block of 64 dofs: the sums of the serial loop, bit for bit.
+    const size_t nElements = model_->elements.size();
+    const int workers = elementWorkers(nElements);
+    struct Part {
+        std::vector<int> dofs;
+        std::vector<double> fe;
+    };
+    struct Entry {
+        int part = 0, nd = 0;
+        size_t offset = 0;
+    };
+    struct Scratch {
+        ElementIntegration ei;
+        PointGeometry geo;
+        std::vector<int> dofs;
+        std::vector<double> fe;
+        LawCache laws;
+    };
+    std::vector<Part> parts(workers);
+    std::vector<Entry> entries(kElementBatch);
+    std::vector<std::unique_ptr<Scratch>> scratch;
+    for (int t = 0; t < workers; ++t) scratch.push_back(std::make_unique<Scratch>(Scratch{{}, {}, {}, {}, LawCache(*material_)}));
+    auto keep = [&](int t, size_t e, const int* dofs, const double* fe, int nd) {
+        Part& part = parts[t];
+        entries[e % kElementBatch] = {t, nd, part.dofs.size()};
+        part.dofs.insert(part.dofs.end(), dofs, dofs + nd);
+        part.fe.insert(part.fe.end(), fe, fe + nd);
+    };
+    std::vector<double> cpu;
+    batchedElementLoop(
+        nElements, kElementBatch, workers, cpu, [&](int t) { parts[t].dofs.clear(), parts[t].fe.clear(); },
+        [&](size_t e, int t) {
+            Scratch& w = *scratch[t];
+            const auto& element = model_->elements[e];
+            const IsotropicLaw& law = w.laws.of(element);
+            const bool fixedSize =
+                !isEnrichedElement(e) && classical::dispatch(mesh.cellTypes[element.cell], dim, [&](const auto& ref) {
+                    using Ref = std::decay_t<decltype(ref)>;
+                    classical::Geometry<Ref> g;
+                    classical::computeGeometry(ref, mesh, element.cell, g);
+                    int edofs[Ref::dofs];
+                    classicalDofs<Ref>(mesh, *numbering_, element.cell, edofs);
+                    double ue[Ref::dofs], fl[Ref::dofs] = {};
+                    for (int i = 0; i < Ref::dofs; ++i) ue[i] = disp[edofs[i]];
+                    for (int p = 0; p < Ref::points; ++p) {
+                        double S[3][3];
+                        classicalStress(g.grad[p], ue, law, S);
+                        const double wp = g.weight[p];
+                        for (int a = 0; a < Ref::nodes; ++a)
+                            for (int c = 0; c < Ref::dim; ++c) {
+                                double sum = 0.0;
+                                for (int j = 0; j < Ref::dim; ++j) sum += S[c][j] * g.grad[p][a][j];
+                                fl[a * Ref::dim + c] += wp * sum;
+                            }
                     }
-            }
-            for (int i = 0; i < Ref::dofs; ++i) f[edofs[i]] += fl[i];
-        });
-        if (fixedSize) continue;
-        const ElementIntegration* ei = &integrationOf(e, scratch);
-        computePointGeometry(mesh, element.cell, dim, false, *ei, geo);
-        localDofs(mesh, *numbering_, *ei, dofs);
-        fe.assign(dofs.size(), 0.0);
-        const int n = ei->nodeCount;
-        for (size_t p = 0; p < ei->refPoints.size(); ++p) {
-            double G[3][3];  // G[c][j] = du_c/dx_j
-            displacementGradient(*ei, geo, dofs, disp, p, dim, G);
-            double tr = 0.0;
-            for (int c = 0; c < dim; ++c) tr += G[c][c];
-            double S[3][3];
-            for (int c = 0; c < dim; ++c)
-                for (int j = 0; j < dim; ++j) S[c][j] = law.mu * (G[c][j] + G[j][c]) + (c == j ? law.lambdaEff * tr : 0.0);
-            const double w = geo.weight[p];
-            int i = 0;
-            for (int a = 0; a < n; ++a) {
-                const double* ga = &geo.gradN[(p * n + a) * 3];
-                for (int k = 0; k < ei->slots[a]; ++k) {
-                    const double pa = ei->multiplier(int(p), a, k);
-                    for (int c = 0; c < dim; ++c, ++i) {
-                        double s = 0.0;
-                        for (int j = 0; j < dim; ++j) s += S[c][j] * ga[j];
-                        fe[i] += w * pa * s;
+                    keep(t, e, edofs, fl, Ref::dofs);
+                });
+            if (fixedSize) return;
+            const ElementIntegration* ei = &integrationOf(e, w.ei);
+            computePointGeometry(mesh, element.cell, dim, false, *ei, w.geo);
+            localDofs(mesh, *numbering_, *ei, w.dofs);
+            w.fe.assign(w.dofs.size(), 0.0);
+            const int n = ei->nodeCount;
+            for (size_t p = 0; p < ei->refPoints.size(); ++p) {
+                double G[3][3];  // G[c][j] = du_c/dx_j
+                displacementGradient(*ei, w.geo, w.dofs, disp, p, dim, G);
+                double tr = 0.0;
+                for (int c = 0; c < dim; ++c) tr += G[c][c];
+                double S[3][3];
+                for (int c = 0; c < dim; ++c)
+                    for (int j = 0; j < dim; ++j)
+                        S[c][j] = law.mu * (G[c][j] + G[j][c]) + (c == j ? law.lambdaEff * tr : 0.0);
+                const double wp = w.geo.weight[p];
+                int i = 0;
+                for (int a = 0; a < n; ++a) {
+                    const double* ga = &w.geo.gradN[(p * n + a) * 3];
+                    for (int k = 0; k < ei->slots[a]; ++k) {
+                        const double pa = ei->multiplier(int(p), a, k);
+                        for (int c = 0; c < dim; ++c, ++i) {
+                            double sum = 0.0;
+                            for (int j = 0; j < dim; ++j) sum += S[c][j] * ga[j];
+                            w.fe[i] += wp * pa * sum;
+                        }
                     }
                 }
             }
-        }
-        for (size_t i = 0; i < dofs.size(); ++i) f[dofs[i]] += fe[i];
-    }
+            keep(t, e, w.dofs.data(), w.fe.data(), static_cast<int>(w.dofs.size()));
+        },
+        [&](size_t, size_t count, int t) {
+            for (size_t slot = 0; slot < count; ++slot) {
+                const Entry& entry = entries[slot];
+                const int* dofs = parts[entry.part].dofs.data() + entry.offset;
+                const double* fe = parts[entry.part].fe.data() + entry.offset;
+                for (int i = 0; i < entry.nd; ++i)
+                    if ((dofs[i] >> 6) % workers == t) f[dofs[i]] += fe[i];
+            }
+        });
 }
 
 void MechanicalProblem::externalForces(double inst, std::vector<double>& f) const {
