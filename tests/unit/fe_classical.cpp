@@ -155,3 +155,38 @@ TEST(FeClassical, ThreadsDoNotChangeABit) {
         EXPECT_EQ(sigma[t], sigma[0]) << t + 1 << " threads";
     }
 }
+
+// Inverted cells in both workers' shares of a batch: the error names the first inverted cell in
+// element order, as the serial loop does, whatever the number of threads.
+TEST(FeClassical, ThreadedLoopsReportTheFirstBadElement) {
+    using namespace fetest;
+    msg().setEcho(false);
+    auto mesh = planeMesh(100, 100, false);  // 10000 QUAD4: two workers when 2 threads are allowed
+    for (int cell : {7000, 5000}) {  // reverse the node order of two cells: negative Jacobians
+        auto* nodes = mesh->connectivity.data() + mesh->cellOffsets[cell];
+        std::swap(nodes[1], nodes[3]);
+    }
+    auto model = affeModele(mesh, "D_PLAN", {"ALL"});
+    auto mat = material(model, 2.0e5, 0.3);
+    KeywordSet kw;
+    set(kw, "MODELE", model);
+    auto& d = kw.addOccurrence("DDL_IMPO");
+    setTexts(d, "GROUP_MA", {"LEFT"});
+    set(d, "DX", ConceptPtr(std::make_shared<LambdaFunction>([](double, double, double) { return 0.0; })));
+    set(d, "DY", ConceptPtr(std::make_shared<LambdaFunction>([](double, double, double) { return 0.0; })));
+    auto load = std::dynamic_pointer_cast<MechanicalLoad>(run("AFFE_CHAR_MECA_F", kw, "CHAR"));
+    for (int threads : {1, 2}) {
+        setWorkerCount(threads);
+        MechanicalProblem problem(model, mat, {{load, nullptr}}, SolverOptions{});
+        ConvergenceOptions conv;
+        conv.maxIterations = 0;
+        conv.resiGlobRela = -1.0;
+        try {
+            problem.solveIncrement(0.0, conv);
+            ADD_FAILURE() << threads << " thread(s): no error";
+        } catch (const NumericalError& e) {
+            EXPECT_EQ(std::string(e.what()).substr(0, 38), "cell M5001 (QUAD4) has a negative Jaco") << threads;
+        }
+    }
+    setWorkerCount(0);
+}
