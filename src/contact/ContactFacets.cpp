@@ -30,11 +30,16 @@ const std::vector<std::vector<int>>& simplexFaces(int d) {
     return d == 2 ? tri : tet;
 }
 
-// Physical coordinates of the points of a cut cell.
-std::vector<Vec> physicalPoints(const Mesh& mesh, const xfem::CellCut& cut) {
-    const auto nodes = mesh.cellNodes(cut.cell);
+std::vector<Vec> nodeCoordinates(const Mesh& mesh, int cell) {
+    const auto nodes = mesh.cellNodes(cell);
     std::vector<Vec> xyz(nodes.size());
     for (size_t a = 0; a < nodes.size(); ++a) xyz[a] = mesh.coords[nodes[a]];
+    return xyz;
+}
+
+// Physical coordinates of the points of a cut cell.
+std::vector<Vec> physicalPoints(const Mesh& mesh, const xfem::CellCut& cut) {
+    const auto xyz = nodeCoordinates(mesh, cut.cell);
     std::vector<Vec> out;
     out.reserve(cut.points.size());
     for (const auto& p : cut.points) out.push_back(mapToPhysical(cut.type, xyz, p.ref));
@@ -59,7 +64,85 @@ struct FaceOnCrack {
     int cell, subcell;
     std::vector<int> points;  // CutPoint indices
     bool exact = true;        // every vertex has a level set of exactly 0 (not only within onTol)
+    int local = -1;           // index of the crack in the cell's crack list
 };
+
+// Intersection of two coplanar triangles (3D), in the reference coordinates of their parent cell.
+using Point2 = std::array<double, 2>;
+
+double orient(const Point2& o, const Point2& a, const Point2& b) {
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+
+double polygonArea(const std::vector<Point2>& p) {
+    double a = 0.0;
+    for (size_t i = 0; i < p.size(); ++i) {
+        const Point2& q = p[i];
+        const Point2& r = p[(i + 1) % p.size()];
+        a += q[0] * r[1] - q[1] * r[0];
+    }
+    return 0.5 * a;
+}
+
+// Sutherland-Hodgman: the part of `subject` inside the convex counter-clockwise polygon `clip`.
+std::vector<Point2> clipConvex(std::vector<Point2> subject, const std::vector<Point2>& clip) {
+    for (size_t e = 0; e < clip.size() && !subject.empty(); ++e) {
+        const Point2& a = clip[e];
+        const Point2& b = clip[(e + 1) % clip.size()];
+        std::vector<Point2> out;
+        for (size_t i = 0; i < subject.size(); ++i) {
+            const Point2& p = subject[i];
+            const Point2& q = subject[(i + 1) % subject.size()];
+            const double dp = orient(a, b, p), dq = orient(a, b, q);
+            if (dp >= 0.0) out.push_back(p);
+            if ((dp >= 0.0) != (dq >= 0.0)) {
+                const double t = dp / (dp - dq);
+                out.push_back({p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])});
+            }
+        }
+        subject = std::move(out);
+    }
+    return subject;
+}
+
+// Triangles (reference coordinates, on the plane of `a`) covering the intersection of the nearly
+// coplanar reference triangles a and b; `negligible` is the smallest reference area kept.
+std::vector<std::array<Vec, 3>> triangleIntersection(const std::array<Vec, 3>& a, const std::array<Vec, 3>& b,
+                                                     double negligible) {
+    // Project on the two coordinates most parallel to the plane of a.
+    const Vec n = cross(sub(a[1], a[0]), sub(a[2], a[0]));
+    int k = 0;
+    for (int i = 1; i < 3; ++i)
+        if (std::abs(n[i]) > std::abs(n[k])) k = i;
+    const int u = (k + 1) % 3, v = (k + 2) % 3;
+    auto project = [&](const std::array<Vec, 3>& t) {
+        std::vector<Point2> p{{t[0][u], t[0][v]}, {t[1][u], t[1][v]}, {t[2][u], t[2][v]}};
+        if (polygonArea(p) < 0.0) std::swap(p[1], p[2]);
+        return p;
+    };
+    const auto pa = project(a), pb = project(b);
+    const double areaA = polygonArea(pa);
+    if (areaA <= 0.0 || polygonArea(pb) <= 0.0) return {};
+    const auto poly = clipConvex(pa, pb);
+    if (poly.size() < 3 || polygonArea(poly) <= negligible) return {};
+    // Back to 3D on the plane of a, through the barycentric coordinates in its projection.
+    const std::array<Vec, 3> ta = polygonArea({{a[0][u], a[0][v]}, {a[1][u], a[1][v]}, {a[2][u], a[2][v]}}) > 0.0
+                                      ? a
+                                      : std::array<Vec, 3>{a[0], a[2], a[1]};
+    auto lift = [&](const Point2& p) {
+        const double l1 = orient(pa[2], pa[0], p) / areaA / 2.0;
+        const double l2 = orient(pa[0], pa[1], p) / areaA / 2.0;
+        const double l0 = 1.0 - l1 - l2;
+        Vec r{};
+        for (int j = 0; j < 3; ++j) r[j] = l0 * ta[0][j] + l1 * ta[1][j] + l2 * ta[2][j];
+        return r;
+    };
+    std::vector<std::array<Vec, 3>> out;
+    const double total = polygonArea(poly);
+    for (size_t i = 1; i + 1 < poly.size(); ++i)
+        if (orient(poly[0], poly[i], poly[i + 1]) > 1e-12 * total) out.push_back({lift(poly[0]), lift(poly[i]), lift(poly[i + 1])});
+    return out;
+}
 
 // Face key by physical coordinates (rounded), vertex order independent.
 std::vector<std::array<long long, 3>> coordinateKey(const std::vector<Vec>& pts, double tol) {
@@ -116,15 +199,19 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
     using Key = std::pair<int, std::vector<std::array<long long, 3>>>;
     std::map<Key, FaceOnCrack> pendingMinus, pendingPlus;
 
-    auto makeSide = [&](const xfem::CellCut& cut, int s, const std::vector<int>& pts, const std::vector<Vec>& xyz,
+    auto refOf = [](const xfem::CellCut& cut, const std::vector<int>& pts) {
+        std::vector<Vec> ref;
+        for (int p : pts) ref.push_back(cut.points[p].ref);
+        return ref;
+    };
+    auto makeSide = [&](const xfem::CellCut& cut, int s, std::vector<Vec> ref,
                         const std::map<std::vector<signed char>, double>& blocks) {
         FacetSide side;
         side.cell = cut.cell;
         side.subcell = s;
         side.blockMeasure = blocks.at(cut.subcells[s].heaviside);
         for (const auto& [tuple, measure] : blocks) side.cellMeasure += measure;
-        for (int p : pts) side.ref.push_back(cut.points[p].ref);
-        (void)xyz;
+        side.ref = std::move(ref);
         return side;
     };
     auto finishFacet = [&](ContactFacet& f, const std::vector<Vec>& verts, const Vec& towardsPlus) {
@@ -192,7 +279,7 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
                     for (int p : pts) verts.push_back(xyz[p]);
                     if (partner < 0) {
                         // On a parent face: matched with the neighbouring cell below.
-                        FaceOnCrack f{cell, s, pts, true};
+                        FaceOnCrack f{cell, s, pts, true, int(j)};
                         for (int p : pts) f.exact = f.exact && cut->points[p].lsn[j] == 0.0;
                         auto& pending = sc.heaviside[j] < 0 ? pendingMinus : pendingPlus;
                         pending.emplace(Key{crack, coordinateKey(verts, keyTol)}, f);
@@ -201,8 +288,8 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
                     if (sc.heaviside[j] > 0) continue;  // each facet once, from its - side
                     ContactFacet f;
                     f.crack = crack;
-                    f.minus = makeSide(*cut, s, pts, xyz, blocks);
-                    f.plus = makeSide(*cut, partner, pts, xyz, blocks);
+                    f.minus = makeSide(*cut, s, refOf(*cut, pts), blocks);
+                    f.plus = makeSide(*cut, partner, refOf(*cut, pts), blocks);
                     if (!finishFacet(f, verts, sub(centroid(xyz, cut->subcells[partner]), centroid(xyz, sc)))) continue;
                     for (int p : pts)
                         for (size_t k = 0; k < cut->cracks.size(); ++k)
@@ -213,34 +300,23 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
             }
         }
     }
-    // Facets between two parent cells.
     // A face on an interface with no partner: on the boundary of the model (legitimately free), or
-    // inside its cell where no sub-cell of the other side shares it (in 3D, sliver pieces dropped by
-    // the cut as degenerate): there the weak form misses the interface term (counted, ContactLoop).
-    // Only faces inside their parent cell are counted (a face on a parent face without partner is
-    // on the boundary of the model or of the enriched zone).
-    // Faces only within onTol of the interface are not counted: a sub-cell face 1e-8 h from the
-    // interface (interfaces 1e-4 h from node rows) is no interface face and has no partner.
-    auto unmatched = [&](const FaceOnCrack& f) {
-        if (!f.exact) return;
-        const auto* cut = xm.cut(f.cell);
-        std::vector<Vec> ref;
-        for (int p : f.points) ref.push_back(cut->points[p].ref);
-        if (onParentFace(cut->type, ref)) return;
-        const auto xyz = physicalPoints(mesh, *cut);
-        std::vector<Vec> verts;
-        for (int p : f.points) verts.push_back(xyz[p]);
-        ContactFacet probe;
-        if (!finishFacet(probe, verts, Vec{1.0, 0.0, 0.0})) return;
-        ++st.unmatched;
-        st.unmatchedMeasure += probe.measure;
+    // inside its cell where no sub-cell of the other side shares it: in 3D the cut drops the other
+    // side's sliver pieces (flat sub-tetrahedra in the interface plane) as degenerate, and the two
+    // sides triangulate that flat region differently. Those faces are paired by clipping below;
+    // faces on a parent face without partner are on the boundary of the model or of the enriched zone.
+    std::map<std::pair<int, int>, std::array<std::vector<FaceOnCrack>, 2>> loose;  // (cell, crack) -> -, + faces
+    auto unmatched = [&](const FaceOnCrack& f, int crack, bool plusSide) {
+        if (!onParentFace(xm.cut(f.cell)->type, refOf(*xm.cut(f.cell), f.points)))
+            loose[{f.cell, crack}][plusSide].push_back(f);
     };
     for (const auto& [key, fp] : pendingPlus)
-        if (!pendingMinus.count(key)) unmatched(fp);
+        if (!pendingMinus.count(key)) unmatched(fp, key.first, true);
+    // Facets between two parent cells.
     for (const auto& [key, fm] : pendingMinus) {
         auto it = pendingPlus.find(key);
         if (it == pendingPlus.end()) {
-            unmatched(fm);
+            unmatched(fm, key.first, false);
             continue;
         }
         const FaceOnCrack& fp = it->second;
@@ -252,15 +328,11 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
         const auto bp = blockMeasures(dim, xp_, *cp);
         ContactFacet f;
         f.crack = key.first;
-        f.minus = makeSide(*cm, fm.subcell, fm.points, xm_, bm);
+        f.minus = makeSide(*cm, fm.subcell, refOf(*cm, fm.points), bm);
         // + side vertices in the order of the - side's vertices.
         std::vector<Vec> verts;
         for (int p : fm.points) verts.push_back(xm_[p]);
-        FacetSide plus;
-        plus.cell = fp.cell;
-        plus.subcell = fp.subcell;
-        plus.blockMeasure = bp.at(cp->subcells[fp.subcell].heaviside);
-        for (const auto& [tuple, measure] : bp) plus.cellMeasure += measure;
+        std::vector<int> plusPoints;
         for (const auto& v : verts) {
             int best = fp.points[0];
             double bestD = 1e300;
@@ -268,9 +340,9 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
                 const double d = norm(sub(xp_[p], v));
                 if (d < bestD) bestD = d, best = p;
             }
-            plus.ref.push_back(cp->points[best].ref);
+            plusPoints.push_back(best);
         }
-        f.plus = plus;
+        f.plus = makeSide(*cp, fp.subcell, refOf(*cp, plusPoints), bp);
         for (int p : fm.points)
             for (size_t k = 0; k < cm->cracks.size(); ++k)
                 if (cm->cracks[k] != key.first && onCrack(cm->points[p], k)) f.atJunction = true;
@@ -280,6 +352,193 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
             .push_back(facets.size());
         facets.push_back(std::move(f));
         ++st.acrossParentFaces;
+    }
+    // Faces inside their cell without partner: each - face is paired with each + face of the same
+    // cell and interface over their intersection, computed in the parent's reference coordinates
+    // where the sub-cells are flat (2D has none: segments are never triangulated differently).
+    // What no face of the other side covers stays without contact term: counted (alarm
+    // CONTACT_SLIVER in ContactLoop). Faces only within onTol of the interface are not counted: a
+    // sub-cell face 1e-8 h from the interface (interfaces 1e-4 h from node rows) is no interface face.
+    // Intersections below 1e-14 of the reference cell's face scale are round-off (triangles touching
+    // along an edge).
+    constexpr double kNegligibleReferenceArea = 1e-14;
+    // A face no face of the other side touches: the cut dropped the other side's piece whole (a
+    // corner of relative measure ~eps^3 at a node eps h from the interface, or a sliver next to the
+    // junction). The facet is the face itself, its other side the block just across it: Heaviside
+    // digit of the face's interface flipped, the other interfaces' digits of the face's side of them
+    // (or 0, the forbidden side of a branch). That block is looked for among the sub-cells of the
+    // face's cell, then of the X-FEM cells around its nodes (the block's field there is a polynomial
+    // of that cell, evaluated at the face through its inverse mapping): the nearest sub-cell, if the
+    // digits name one block of its cell only.
+    auto blockAcross = [&](const FaceOnCrack& face, int crack, bool plusSide) {
+        const auto* cut = xm.cut(face.cell);
+        const auto& h = cut->subcells[face.subcell].heaviside;
+        const int j = face.local;
+        const auto xyz = physicalPoints(mesh, *cut);
+        Vec centre{};
+        for (int p : face.points)
+            for (int i = 0; i < 3; ++i) centre[i] += xyz[p][i] / double(face.points.size());
+        std::map<int, std::pair<int, bool>> wanted;  // crack -> (digit, whether 0 is refused)
+        wanted[crack] = {-h[j], true};
+        for (size_t k = 0; k < cut->cracks.size(); ++k) {
+            if (int(k) == j) continue;
+            double mean = 0.0;
+            for (int p : face.points) mean += cut->points[p].lsn[k] / double(face.points.size());
+            if (std::abs(mean) > onTol) wanted[cut->cracks[k]] = {mean < 0.0 ? -1 : 1, false};
+        }
+        auto fits = [&](const xfem::CellCut& c, int t) {
+            bool crosses = false;
+            for (size_t k = 0; k < c.cracks.size(); ++k) {
+                auto it = wanted.find(c.cracks[k]);
+                if (it == wanted.end()) continue;
+                const auto [digit, strict] = it->second;
+                const int d = c.subcells[t].heaviside[k];
+                if (d != digit && (strict || d != 0)) return false;
+                crosses = crosses || c.cracks[k] == crack;
+            }
+            return crosses;
+        };
+        // Nearest sub-cell of the block in `other` (-1: none, or the digits fit several blocks).
+        auto nearest = [&](const xfem::CellCut& other, double& distance) {
+            const auto oxyz = physicalPoints(mesh, other);
+            int best = -1;
+            for (int t = 0; t < int(other.subcells.size()); ++t) {
+                if (&other == cut && t == face.subcell) continue;
+                if (!fits(other, t)) continue;
+                if (best >= 0 && other.subcells[t].heaviside != other.subcells[best].heaviside) return -1;
+                const double d = norm(sub(centroid(oxyz, other.subcells[t]), centre));
+                if (best < 0 || d < distance) best = t, distance = d;
+            }
+            return best;
+        };
+        const xfem::CellCut* across = nullptr;
+        int acrossSub = -1;
+        double distance = 1e300;
+        if ((acrossSub = nearest(*cut, distance)) >= 0) across = cut;
+        if (!across) {
+            std::vector<int> around;
+            for (int n : mesh.cellNodes(face.cell))
+                for (int c : xm.cellsOfNode(n)) around.push_back(c);
+            std::sort(around.begin(), around.end());
+            around.erase(std::unique(around.begin(), around.end()), around.end());
+            for (int c : around) {
+                const auto* other = xm.cut(c);
+                if (c == face.cell || !other || other->skin) continue;
+                double d = 1e300;
+                const int t = nearest(*other, d);
+                if (t >= 0 && d < distance) across = other, acrossSub = t, distance = d;
+            }
+        }
+        if (!across) return false;
+        std::vector<Vec> verts;
+        for (int p : face.points) verts.push_back(xyz[p]);
+        std::vector<Vec> acrossRef = refOf(*cut, face.points);
+        if (across != cut) {
+            const auto acrossNodes = nodeCoordinates(mesh, across->cell);
+            for (size_t v = 0; v < verts.size(); ++v)
+                if (!mapToReference(across->type, acrossNodes, verts[v], acrossRef[v])) return false;
+        }
+        const auto own = makeSide(*cut, face.subcell, refOf(*cut, face.points), blockMeasures(dim, xyz, *cut));
+        const auto other = makeSide(*across, acrossSub, acrossRef, blockMeasures(dim, physicalPoints(mesh, *across), *across));
+        ContactFacet f;
+        f.crack = crack;
+        f.minus = plusSide ? other : own;
+        f.plus = plusSide ? own : other;
+        const Vec fromOwn = sub(centroid(physicalPoints(mesh, *across), across->subcells[acrossSub]), centroid(xyz, cut->subcells[face.subcell]));
+        const Vec towardsPlus = plusSide ? Vec{-fromOwn[0], -fromOwn[1], -fromOwn[2]} : fromOwn;
+        if (!finishFacet(f, verts, towardsPlus)) return false;
+        for (int p : face.points)
+            for (size_t k = 0; k < cut->cracks.size(); ++k)
+                if (int(k) != j && onCrack(cut->points[p], k)) f.atJunction = true;
+        const auto& minusCut = plusSide ? *across : *cut;
+        const auto& plusCut = plusSide ? *cut : *across;
+        pairs[{f.minus.cell, f.plus.cell, minusCut.subcells[f.minus.subcell].heaviside, crack,
+               plusCut.subcells[f.plus.subcell].heaviside, f.minus.cell == f.plus.cell ? 0 : 1}]
+            .push_back(facets.size());
+        facets.push_back(std::move(f));
+        ++st.acrossDropped;
+        return true;
+    };
+    for (const auto& [key, sides] : loose) {
+        const auto [cell, crack] = key;
+        const auto* cut = xm.cut(cell);
+        const auto nodeXyz = nodeCoordinates(mesh, cell);
+        const auto xyz = physicalPoints(mesh, *cut);
+        std::array<std::vector<double>, 2> covered{std::vector<double>(sides[0].size(), 0.0),
+                                                   std::vector<double>(sides[1].size(), 0.0)};
+        if (dim == 3 && !sides[0].empty() && !sides[1].empty()) {
+            const auto blocks = blockMeasures(dim, xyz, *cut);
+            const int j = sides[0].front().local;
+            // Points of a face on another interface of the cell: its vertices there, and the edges
+            // between two of them (a clipped vertex there touches a junction).
+            auto onOtherCrack = [&](const FaceOnCrack& f, const Vec& r) {
+                for (size_t k = 0; k < cut->cracks.size(); ++k) {
+                    if (int(k) == j) continue;
+                    for (size_t a = 0; a < f.points.size(); ++a)
+                        for (size_t b = a; b < f.points.size(); ++b) {
+                            const auto& pa = cut->points[f.points[a]];
+                            const auto& pb = cut->points[f.points[b]];
+                            if (!onCrack(pa, k) || !onCrack(pb, k)) continue;
+                            const Vec e = sub(pb.ref, pa.ref);
+                            const double ee = dot(e, e);
+                            const double t = ee > 0.0 ? std::clamp(dot(sub(r, pa.ref), e) / ee, 0.0, 1.0) : 0.0;
+                            const Vec q{pa.ref[0] + t * e[0], pa.ref[1] + t * e[1], pa.ref[2] + t * e[2]};
+                            if (norm(sub(r, q)) <= 1e-12) return true;
+                        }
+                }
+                return false;
+            };
+            for (size_t a = 0; a < sides[0].size(); ++a)
+                for (size_t b = 0; b < sides[1].size(); ++b) {
+                    const FaceOnCrack& fm = sides[0][a];
+                    const FaceOnCrack& fp = sides[1][b];
+                    auto triangle = [&](const FaceOnCrack& f) {
+                        return std::array<Vec, 3>{cut->points[f.points[0]].ref, cut->points[f.points[1]].ref,
+                                                  cut->points[f.points[2]].ref};
+                    };
+                    const Vec towardsPlus = sub(centroid(xyz, cut->subcells[fp.subcell]), centroid(xyz, cut->subcells[fm.subcell]));
+                    for (const auto& piece : triangleIntersection(triangle(fm), triangle(fp), kNegligibleReferenceArea)) {
+                        const std::vector<Vec> ref(piece.begin(), piece.end());
+                        std::vector<Vec> verts;
+                        for (const auto& r : ref) verts.push_back(mapToPhysical(cut->type, nodeXyz, r));
+                        ContactFacet f;
+                        f.crack = crack;
+                        f.minus = makeSide(*cut, fm.subcell, ref, blocks);
+                        f.plus = makeSide(*cut, fp.subcell, ref, blocks);
+                        if (!finishFacet(f, verts, towardsPlus)) continue;
+                        for (const auto& r : ref) f.atJunction = f.atJunction || onOtherCrack(fm, r) || onOtherCrack(fp, r);
+                        covered[0][a] += f.measure;
+                        covered[1][b] += f.measure;
+                        pairs[{cell, cell, cut->subcells[fm.subcell].heaviside, crack, cut->subcells[fp.subcell].heaviside, 0}]
+                            .push_back(facets.size());
+                        facets.push_back(std::move(f));
+                        ++st.clipped;
+                    }
+                }
+        }
+        for (int side = 0; side < 2; ++side)
+            for (size_t a = 0; a < sides[side].size(); ++a) {
+                const FaceOnCrack& f = sides[side][a];
+                if (!f.exact) continue;
+                std::vector<Vec> verts;
+                for (int p : f.points) verts.push_back(xyz[p]);
+                ContactFacet probe;
+                if (!finishFacet(probe, verts, Vec{1.0, 0.0, 0.0})) continue;
+                if (dim == 3 && covered[side][a] == 0.0 && blockAcross(f, crack, side == 1)) continue;
+                // Left uncovered, up to round-off and to what the clipping neglects (its threshold in
+                // physical measure: the face's physical / reference measure ratio).
+                double negligible = 1e-9 * probe.measure;
+                if (dim == 3 && covered[side][a] > 0.0) {
+                    const auto& r = cut->points;
+                    const double refArea =
+                        0.5 * norm(cross(sub(r[f.points[1]].ref, r[f.points[0]].ref), sub(r[f.points[2]].ref, r[f.points[0]].ref)));
+                    if (refArea > 0.0) negligible = std::max(negligible, kNegligibleReferenceArea * probe.measure / refArea);
+                }
+                const double left = probe.measure - covered[side][a];
+                if (left <= negligible) continue;
+                ++st.unmatched;
+                st.unmatchedMeasure += left;
+            }
     }
     for (const auto& [key, list] : pairs) {
         double total = 0.0;

@@ -43,9 +43,15 @@ struct FacetStatistics {
     int facets = 0;
     int acrossParentFaces = 0;  // interface along mesh faces: sides in two parent cells
     int atJunction = 0;
+    // Facets from the intersection of a - and a + face inside one cell (3D: the two sides
+    // triangulate a flat region, left by sliver pieces the cut dropped, differently).
+    int clipped = 0;
+    // Facets whose other side's piece the cut dropped whole: that side is the block across the face
+    // (a sub-cell of the same cell, or of a cell around it).
+    int acrossDropped = 0;
     double totalMeasure = 0.0;
-    // Faces on an interface inside a parent cell that no sub-cell of the other side shares (in 3D,
-    // sliver pieces of the other side dropped by the cut as degenerate): no facet there.
+    // Faces on an interface inside a parent cell that no face of the other side covers, even after
+    // clipping (their uncovered measure): no facet there.
     int unmatched = 0;
     double unmatchedMeasure = 0.0;
 };

@@ -36,8 +36,9 @@ std::shared_ptr<ContactTerms> attachContact(MechanicalProblem& problem, const Ma
                     xm.dim() == 2 ? "length" : "area", measure,
                     z.algorithm == ContactAlgorithm::Nitsche ? "Nitsche" : fmt::format("penalty {:.3e}", z.penalty));
     }
-    msg().infof("    contact facets: {} ({} touching a junction, {} between two parent cells)", stats.facets,
-                stats.atJunction, stats.acrossParentFaces);
+    msg().infof("    contact facets: {} ({} touching a junction, {} between two parent cells, {} where the two sides' "
+                "faces in a cell differ, {} facing a piece the cut dropped)",
+                stats.facets, stats.atJunction, stats.acrossParentFaces, stats.clipped, stats.acrossDropped);
     // Interface faces with no sub-cell of the other side (measured in 3D with interfaces 1e-3 ... 1e-6 h
     // from node planes: the cut drops the other side's sliver pieces of relative measure < 1e-14 as
     // degenerate). No contact term is written there and the weak form misses that piece of interface:

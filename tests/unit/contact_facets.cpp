@@ -9,6 +9,7 @@
 #include <map>
 
 #include "contact/ContactFacets.hpp"
+#include "fe/ShapeFunctions.hpp"
 #include "xfem_test_meshes.hpp"
 
 namespace {
@@ -138,6 +139,58 @@ TEST(ContactFacets, SliverCutsNextToTheJunctionKeepEveryFacet) {
             // the corner block of the junction cell: eps^2 of the cell (QUAD4), or less (TRIA3 halves)
             EXPECT_LT(smallest, 2.0 * eps * eps);
         }
+}
+
+// 3D: interfaces eps*h from the node planes. The cut drops pieces below 1e-14 of their cell as
+// degenerate: flat sub-tetrahedra in the interface plane (the two sides then triangulate that region
+// differently) and corners of ~eps^3 at a node (one side has no face there at all). The faces left
+// without partner are paired by clipping, or with the block across them; every face on an
+// interface inside its cell gets its facet (before: up to 28 faces left without contact term).
+TEST(ContactFacets, SliverPiecesIn3DKeepEveryFacet) {
+    int clipped = 0, acrossDropped = 0;
+    for (CellType type : {CellType::TETRA4, CellType::HEXA8})
+        for (double eps : {1e-3, 1e-4, 1e-5}) {
+            SCOPED_TRACE(fmt::format("{} eps={}", cellTypeName(type), eps));
+            auto mesh = xfemtest::slab(10, type);  // node planes on the integers
+            auto mo = xfemtest::model(mesh);
+            const auto j = xfemtest::ssnv511Cracks(mesh, -eps, -eps);
+            xfem::XfemModel xm(mo, {j.fiss1, j.fiss2, j.fiss3}, xfem::XfemContact::Standard);
+            FacetStatistics st;
+            const auto facets = buildContactFacets(xm, {1, 1, 1}, &st);
+            EXPECT_EQ(st.unmatched, 0);
+            EXPECT_EQ(st.unmatchedMeasure, 0.0);
+            clipped += st.clipped;
+            acrossDropped += st.acrossDropped;
+            std::map<int, double> measure;
+            for (const auto& f : facets) {
+                measure[f.crack] += f.measure;
+                for (const auto& v : f.vertices) EXPECT_NEAR(f.crack == 0 ? v[1] + eps : v[0] + eps, 0.0, 1e-9);
+                for (const auto* side : {&f.minus, &f.plus}) {
+                    const auto* cut = xm.cut(side->cell);
+                    ASSERT_NE(cut, nullptr);
+                    const auto it = std::find(cut->cracks.begin(), cut->cracks.end(), f.crack);
+                    ASSERT_NE(it, cut->cracks.end());
+                    EXPECT_EQ(cut->subcells[side->subcell].heaviside[it - cut->cracks.begin()], side == &f.minus ? -1 : 1);
+                    ASSERT_EQ(side->ref.size(), 3u);
+                }
+                // both sides see the same physical points (the block across may be in another cell)
+                for (int v = 0; v < 3; ++v) {
+                    const auto nodes = [&](int cell) {
+                        std::vector<std::array<double, 3>> xyz;
+                        for (int n : mesh->cellNodes(cell)) xyz.push_back(mesh->coords[n]);
+                        return xyz;
+                    };
+                    const auto xm_ = mapToPhysical(xm.cut(f.minus.cell)->type, nodes(f.minus.cell), f.minus.ref[v]);
+                    const auto xp_ = mapToPhysical(xm.cut(f.plus.cell)->type, nodes(f.plus.cell), f.plus.ref[v]);
+                    for (int c = 0; c < 3; ++c) EXPECT_NEAR(xm_[c], xp_[c], 1e-9);
+                }
+            }
+            EXPECT_NEAR(measure[0], 10.0, 1e-9);
+            EXPECT_NEAR(measure[1], 5.0 + eps, 1e-9);
+            EXPECT_NEAR(measure[2], 5.0 - eps, 1e-9);
+        }
+    EXPECT_GT(acrossDropped, 0);  // corners dropped (the clipping is exercised in ContactStability)
+    EXPECT_GE(clipped, 0);
 }
 
 }  // namespace
