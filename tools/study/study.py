@@ -4,7 +4,8 @@
     ./miniaster study smooth      [--full]   convergence of the smooth manufactured scene
     ./miniaster study stability   [--full]   extreme inputs on the ssnv511a rigid scene
     ./miniaster study penalty     [--full]   exact contact vs penalty (COEF_PENA_CONT 1e4..1e20), ssnv511e-h (2D and 3D)
-    ./miniaster study perf        [--full]   set-up/assembly vs factorisation on ssnv511a (N=1001 with --full)
+    ./miniaster study perf        [--full]   set-up/assembly vs factorisation on ssnv511a (N=1001 with --full),
+                                             also code_aster's ssnv511a.comm read in place on the largest mesh
     ./miniaster study all         [--full]   the three above
     ./miniaster study check-field            checks of the manufactured field (derivatives, tractions)
     ./miniaster study astest                 regenerates astest/smooth_*.{comm,export,mmed}
