@@ -303,20 +303,21 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
     // A face on an interface with no partner: on the boundary of the model (legitimately free), or
     // inside its cell where no sub-cell of the other side shares it: in 3D the cut drops the other
     // side's sliver pieces (flat sub-tetrahedra in the interface plane) as degenerate, and the two
-    // sides triangulate that flat region differently. Those faces are paired by clipping below;
-    // faces on a parent face without partner are on the boundary of the model or of the enriched zone.
+    // sides triangulate that flat region differently, or it drops a corner of the other side whole.
+    // Those faces are paired below (clipping, block across); faces on a parent face without partner
+    // are on the boundary of the model or of the enriched zone.
     std::map<std::pair<int, int>, std::array<std::vector<FaceOnCrack>, 2>> loose;  // (cell, crack) -> -, + faces
-    auto unmatched = [&](const FaceOnCrack& f, int crack, bool plusSide) {
+    auto keepLoose = [&](const FaceOnCrack& f, int crack, bool plusSide) {
         if (!onParentFace(xm.cut(f.cell)->type, refOf(*xm.cut(f.cell), f.points)))
             loose[{f.cell, crack}][plusSide].push_back(f);
     };
     for (const auto& [key, fp] : pendingPlus)
-        if (!pendingMinus.count(key)) unmatched(fp, key.first, true);
+        if (!pendingMinus.count(key)) keepLoose(fp, key.first, true);
     // Facets between two parent cells.
     for (const auto& [key, fm] : pendingMinus) {
         auto it = pendingPlus.find(key);
         if (it == pendingPlus.end()) {
-            unmatched(fm, key.first, false);
+            keepLoose(fm, key.first, false);
             continue;
         }
         const FaceOnCrack& fp = it->second;
@@ -356,8 +357,8 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
     // Faces inside their cell without partner: each - face is paired with each + face of the same
     // cell and interface over their intersection, computed in the parent's reference coordinates
     // where the sub-cells are flat (2D has none: segments are never triangulated differently).
-    // What no face of the other side covers stays without contact term: counted (alarm
-    // CONTACT_SLIVER in ContactLoop). Faces only within onTol of the interface are not counted: a
+    // A face no clipped piece touches is paired with the block across it (blockAcross); what stays
+    // uncovered has no contact term: counted (alarm CONTACT_SLIVER in ContactLoop). Faces only within onTol of the interface are not counted: a
     // sub-cell face 1e-8 h from the interface (interfaces 1e-4 h from node rows) is no interface face.
     // Intersections below 1e-14 of the reference cell's face scale are round-off (triangles touching
     // along an edge).

@@ -39,11 +39,12 @@ std::shared_ptr<ContactTerms> attachContact(MechanicalProblem& problem, const Ma
     msg().infof("    contact facets: {} ({} touching a junction, {} between two parent cells, {} where the two sides' "
                 "faces in a cell differ, {} facing a piece the cut dropped)",
                 stats.facets, stats.atJunction, stats.acrossParentFaces, stats.clipped, stats.acrossDropped);
-    // Interface faces with no sub-cell of the other side (measured in 3D with interfaces 1e-3 ... 1e-6 h
-    // from node planes: the cut drops the other side's sliver pieces of relative measure < 1e-14 as
-    // degenerate). No contact term is written there and the weak form misses that piece of interface:
-    // the study (docs/study/stability.md) measured relative errors of 1 to 100 times the missing
-    // fraction of the interface, hence the alarm from a fraction of 1e-11 on.
+    // Interface faces that no face of the other side covers, even after ContactFacets' clipping and
+    // block-across pairing (in 3D with interfaces 1e-3 ... 1e-6 h from node planes the cut drops the
+    // other side's pieces of relative measure < 1e-14 as degenerate; those pairings cover every face
+    // measured). No contact term is written on what stays and the weak form misses that piece of
+    // interface: before the pairing the study (docs/study/stability.md) measured relative errors of 1 to
+    // 100 times the missing fraction of the interface, hence the alarm from a fraction of 1e-11 on.
     double smallest = 1.0;
     for (const auto& f : facets)
         for (const FacetSide* side : {&f.minus, &f.plus})
