@@ -232,6 +232,16 @@ void batchedElementLoop(size_t nElements, size_t batch, int workers, std::vector
     }
 }
 
+// What one worker of an element loop reuses from element to element (general path buffers, law).
+struct WorkerScratch {
+    explicit WorkerScratch(const MaterialField& material) : laws(material) {}
+    ElementIntegration ei;
+    PointGeometry geo;
+    std::vector<int> dofs;
+    std::vector<double> values;  // element matrix or vector
+    LawCache laws;
+};
+
 // Workers for an element loop: one per 4096 elements at most (threads cost more than small loops).
 constexpr size_t kElementBatch = 4096;
 int elementWorkers(size_t nElements) {
@@ -618,15 +628,8 @@ void MechanicalProblem::assembleMatrix() {
     };
     std::vector<Part> parts(workers);
     std::vector<Entry> entries(kElementBatch);
-    struct Scratch {
-        ElementIntegration ei;
-        PointGeometry geo;
-        std::vector<int> dofs;
-        std::vector<double> Ke;
-        LawCache laws;
-    };
-    std::vector<std::unique_ptr<Scratch>> scratch;
-    for (int t = 0; t < workers; ++t) scratch.push_back(std::make_unique<Scratch>(Scratch{{}, {}, {}, {}, LawCache(*material_)}));
+    std::vector<WorkerScratch> scratch;
+    for (int t = 0; t < workers; ++t) scratch.emplace_back(*material_);
     auto keep = [&](int t, size_t slot, const int* edofs, int nd, const double* eK) {
         Part& part = parts[t];
         Entry& entry = entries[slot];
@@ -651,7 +654,7 @@ void MechanicalProblem::assembleMatrix() {
         nElements, kElementBatch, workers, cpu,
         [&](int t) { parts[t].rows.clear(), parts[t].local.clear(), parts[t].Ke.clear(); },
         [&](size_t e, int t) {
-            Scratch& w = *scratch[t];
+            WorkerScratch& w = scratch[t];
             const auto& element = model_->elements[e];
             const IsotropicLaw& law = w.laws.of(element);
             const size_t slot = e % kElementBatch;
@@ -670,8 +673,8 @@ void MechanicalProblem::assembleMatrix() {
             const ElementIntegration* ei = &integrationOf(e, w.ei);
             computePointGeometry(mesh, element.cell, dim, false, *ei, w.geo);
             localDofs(mesh, *numbering_, *ei, w.dofs);
-            generalStiffness(*ei, w.geo, law, dim, static_cast<int>(w.dofs.size()), w.Ke);
-            keep(t, slot, w.dofs.data(), static_cast<int>(w.dofs.size()), w.Ke.data());
+            generalStiffness(*ei, w.geo, law, dim, static_cast<int>(w.dofs.size()), w.values);
+            keep(t, slot, w.dofs.data(), static_cast<int>(w.dofs.size()), w.values.data());
         },
         [&](size_t, size_t count, int t) {
             const int* cols = matrix_.cols.data();
@@ -747,17 +750,10 @@ void MechanicalProblem::internalForces(const std::vector<double>& disp, std::vec
         int part = 0, nd = 0;
         size_t offset = 0;
     };
-    struct Scratch {
-        ElementIntegration ei;
-        PointGeometry geo;
-        std::vector<int> dofs;
-        std::vector<double> fe;
-        LawCache laws;
-    };
     std::vector<Part> parts(workers);
     std::vector<Entry> entries(kElementBatch);
-    std::vector<std::unique_ptr<Scratch>> scratch;
-    for (int t = 0; t < workers; ++t) scratch.push_back(std::make_unique<Scratch>(Scratch{{}, {}, {}, {}, LawCache(*material_)}));
+    std::vector<WorkerScratch> scratch;
+    for (int t = 0; t < workers; ++t) scratch.emplace_back(*material_);
     auto keep = [&](int t, size_t e, const int* dofs, const double* fe, int nd) {
         Part& part = parts[t];
         entries[e % kElementBatch] = {t, nd, part.dofs.size()};
@@ -768,7 +764,7 @@ void MechanicalProblem::internalForces(const std::vector<double>& disp, std::vec
     batchedElementLoop(
         nElements, kElementBatch, workers, cpu, [&](int t) { parts[t].dofs.clear(), parts[t].fe.clear(); },
         [&](size_t e, int t) {
-            Scratch& w = *scratch[t];
+            WorkerScratch& w = scratch[t];
             const auto& element = model_->elements[e];
             const IsotropicLaw& law = w.laws.of(element);
             const bool fixedSize =
@@ -797,7 +793,7 @@ void MechanicalProblem::internalForces(const std::vector<double>& disp, std::vec
             const ElementIntegration* ei = &integrationOf(e, w.ei);
             computePointGeometry(mesh, element.cell, dim, false, *ei, w.geo);
             localDofs(mesh, *numbering_, *ei, w.dofs);
-            w.fe.assign(w.dofs.size(), 0.0);
+            w.values.assign(w.dofs.size(), 0.0);
             const int n = ei->nodeCount;
             for (size_t p = 0; p < ei->refPoints.size(); ++p) {
                 double G[3][3];  // G[c][j] = du_c/dx_j
@@ -817,12 +813,12 @@ void MechanicalProblem::internalForces(const std::vector<double>& disp, std::vec
                         for (int c = 0; c < dim; ++c, ++i) {
                             double sum = 0.0;
                             for (int j = 0; j < dim; ++j) sum += S[c][j] * ga[j];
-                            w.fe[i] += wp * pa * sum;
+                            w.values[i] += wp * pa * sum;
                         }
                     }
                 }
             }
-            keep(t, e, w.dofs.data(), w.fe.data(), static_cast<int>(w.dofs.size()));
+            keep(t, e, w.dofs.data(), w.values.data(), static_cast<int>(w.dofs.size()));
         },
         [&](size_t, size_t count, int t) {
             for (size_t slot = 0; slot < count; ++slot) {
