@@ -5,6 +5,7 @@
 #include <mutex>
 
 #include "core/Error.hpp"
+#include "fe/ShapeFunctions.hpp"
 
 namespace ma {
 
@@ -202,6 +203,75 @@ QuadratureRule tetrahedron(int n) {
     return r;
 }
 
+// Rules from explicit points and weights (1D: x only).
+QuadratureRule listed(CellType cell, std::string family, int degree, std::vector<double> x, std::vector<double> w) {
+    QuadratureRule r;
+    r.family = std::move(family);
+    r.cell = cell;
+    r.degree = degree;
+    for (double v : x) r.points.push_back({v, 0, 0});
+    r.weights = std::move(w);
+    return r;
+}
+
+double referenceMeasure(CellType cell) {
+    switch (cell) {
+        case CellType::SEG2: return 2.0;
+        case CellType::TRIA3: return 0.5;
+        case CellType::QUAD4: return 4.0;
+        case CellType::TETRA4: return 1.0 / 6.0;
+        case CellType::HEXA8: return 8.0;
+        default: throw NotImplemented("integration family NOEU on " + cellTypeName(cell));
+    }
+}
+
+// code_aster's named families that are not Gauss rules (elraga): NOEU on every cell (the vertices,
+// each weighted by measure / vertex count: exact for the multilinear functions of the cell), and
+// the closed Newton-Cotes families of the X-FEM contact facets. Their degrees were checked on the
+// monomials (tests/unit/fe_quadrature.cpp); TRIA3 SIMP (vertices 1/30, edge midpoints 4/30) is exact
+// for degree 1 only, as written in elraga.
+bool buildNamed(CellType cell, const std::string& family, QuadratureRule& r) {
+    if (family == "NOEU") {
+        r.family = family;
+        r.cell = cell;
+        r.degree = 1;
+        const auto nodes = referenceNodes(cell);
+        const double w = referenceMeasure(cell) / double(nodes.size());
+        for (const auto& p : nodes) {
+            r.points.push_back(p);
+            r.weights.push_back(w);
+        }
+        return true;
+    }
+    if (cell == CellType::SEG2) {
+        const double t = 1.0 / 3.0, s = 1.0 / 9.0;
+        if (family == "SIMP")  // Simpson
+            r = listed(cell, family, 3, {-1, 0, 1}, {t, 4 * t, t});
+        else if (family == "SIMP1")  // Simpson on the two halves
+            r = listed(cell, family, 3, {-1, -0.5, 0, 0.5, 1}, {1.0 / 6, 2 * t, t, 2 * t, 1.0 / 6});
+        else if (family == "COTES")  // Simpson's 3/8 rule
+            r = listed(cell, family, 3, {-1, -t, t, 1}, {0.25, 0.75, 0.75, 0.25});
+        else if (family == "COTES1")  // Boole's rule
+            r = listed(cell, family, 5, {-1, -0.5, 0, 0.5, 1},
+                       {7.0 / 45, 32.0 / 45, 12.0 / 45, 32.0 / 45, 7.0 / 45});
+        else if (family == "COTES2")  // the 3/8 rule on three thirds
+            r = listed(cell, family, 3, {-1, -7 * s, -5 * s, -3 * s, -s, s, 3 * s, 5 * s, 7 * s, 1},
+                       {1.0 / 12, 0.25, 0.25, 1.0 / 6, 0.25, 0.25, 1.0 / 6, 0.25, 0.25, 1.0 / 12});
+        else
+            return false;
+        return true;
+    }
+    if (cell == CellType::TRIA3 && family == "SIMP") {
+        r.family = family;
+        r.cell = cell;
+        r.degree = 1;
+        r.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.5, 0, 0}, {0.5, 0.5, 0}, {0, 0.5, 0}};
+        r.weights = {1.0 / 30, 1.0 / 30, 1.0 / 30, 4.0 / 30, 4.0 / 30, 4.0 / 30};
+        return true;
+    }
+    return false;
+}
+
 QuadratureRule build(CellType cell, int n) {
     switch (cell) {
         case CellType::SEG2: return segment(n);
@@ -231,7 +301,9 @@ const QuadratureRule& quadratureRule(CellType cell, const std::string& family) {
     auto key = std::make_pair(static_cast<int>(cell), family);
     auto it = cache.find(key);
     if (it != cache.end()) return it->second;
-    if (family.rfind("FPG", 0) != 0)
+    if (QuadratureRule named; buildNamed(cell, family, named)) return cache.emplace(key, std::move(named)).first->second;
+    if (family.rfind("FPG", 0) != 0 || family.size() == 3 ||
+        family.find_first_not_of("0123456789", 3) != std::string::npos)
         throw NotImplemented("integration family " + family + " on " + cellTypeName(cell));
     const int n = std::stoi(family.substr(3));
     return cache.emplace(key, build(cell, n)).first->second;

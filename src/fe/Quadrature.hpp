@@ -1,13 +1,16 @@
 #pragma once
-// Gauss rules on the reference elements of fe/ShapeFunctions.hpp, named as code_aster's
-// integration families (FPG1, FPG4 ...). Weights sum to the reference measure (SEG 2,
-// TRIA 1/2, QUAD 4, TETRA 1/6, HEXA 8).
+// Integration rules on the reference elements of fe/ShapeFunctions.hpp, named as code_aster's
+// integration families (FPG1, FPG4, NOEU ...; points and weights of bibfor/elements/elraga.F90).
+// Weights sum to the reference measure (SEG 2, TRIA 1/2, QUAD 4, TETRA 1/6, HEXA 8).
 //
 //   SEG2   FPG1 FPG2 FPG3 FPG4            (Gauss-Legendre, degree 2n-1)
+//          SIMP (3) SIMP1 (3) COTES (3) COTES1 (5) COTES2 (3)   (closed Newton-Cotes, X-FEM contact)
 //   TRIA3  FPG1 (1) FPG3 (2) FPG4 (3, negative centre weight) FPG6 (4) FPG7 (5) FPG12 (6)
+//          SIMP (1: vertices 1/30, edge midpoints 4/30)
 //   QUAD4  FPG1 FPG4 (2x2) FPG9 (3x3)
 //   TETRA4 FPG1 (1) FPG4 (2) FPG5 (3, negative centre weight) FPG15 (5)
 //   HEXA8  FPG1 FPG8 (2x2x2) FPG27 (3x3x3)
+//   every cell: NOEU (1: the vertices, weight = measure / vertex count)
 // (degree of exactness in parentheses; unit-tested on monomials.)
 #include <array>
 #include <string>

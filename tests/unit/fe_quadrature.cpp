@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "core/Error.hpp"
 #include "fe/Quadrature.hpp"
 #include "fe/ShapeFunctions.hpp"
 
@@ -45,6 +46,11 @@ TEST(FeQuadrature, RulesAreExactForTheirDegree) {
         {CellType::QUAD4, "FPG9", 5, 9},   {CellType::TETRA4, "FPG1", 1, 1},  {CellType::TETRA4, "FPG4", 2, 4},
         {CellType::TETRA4, "FPG5", 3, 5},  {CellType::TETRA4, "FPG15", 5, 15}, {CellType::HEXA8, "FPG1", 1, 1},
         {CellType::HEXA8, "FPG8", 3, 8},   {CellType::HEXA8, "FPG27", 5, 27},
+        // code_aster's other families (elraga): vertices, and the X-FEM contact facets' Newton-Cotes.
+        {CellType::SEG2, "NOEU", 1, 2},    {CellType::TRIA3, "NOEU", 1, 3},   {CellType::QUAD4, "NOEU", 1, 4},
+        {CellType::TETRA4, "NOEU", 1, 4},  {CellType::HEXA8, "NOEU", 1, 8},   {CellType::SEG2, "SIMP", 3, 3},
+        {CellType::SEG2, "SIMP1", 3, 5},   {CellType::SEG2, "COTES", 3, 4},   {CellType::SEG2, "COTES1", 5, 5},
+        {CellType::SEG2, "COTES2", 3, 10}, {CellType::TRIA3, "SIMP", 1, 6},
     };
     for (const auto& c : cases) {
         const auto& rule = quadratureRule(c.cell, c.family);
@@ -74,6 +80,53 @@ TEST(FeQuadrature, NextDegreeIsNotExactForSimplexRules) {
     double sum = 0;
     for (int p = 0; p < fpg1.size(); ++p) sum += fpg1.weights[p] * fpg1.points[p][0] * fpg1.points[p][0];
     EXPECT_GT(std::abs(sum - exactMoment(CellType::TRIA3, 2, 0, 0)), 1e-3);
+}
+
+TEST(FeQuadrature, NamedFamiliesStopAtTheirDegree) {
+    // The Newton-Cotes rules are exact one degree above their odd node count's polynomial only
+    // (symmetry); the next even monomial is not integrated exactly, nor is TRIA3 SIMP's x^2 (1/10
+    // instead of 1/12: elraga's weights 1/30, 4/30 make it a degree-1 rule).
+    const std::pair<const char*, int> seg[] = {{"SIMP", 4}, {"SIMP1", 4}, {"COTES", 4}, {"COTES1", 6}, {"COTES2", 4},
+                                               {"NOEU", 2}};
+    for (const auto& [family, power] : seg) {
+        const auto& rule = quadratureRule(CellType::SEG2, family);
+        double sum = 0;
+        for (int p = 0; p < rule.size(); ++p) sum += rule.weights[p] * std::pow(rule.points[p][0], power);
+        EXPECT_GT(std::abs(sum - exactMoment(CellType::SEG2, power, 0, 0)), 1e-4) << family;
+    }
+    for (const char* family : {"SIMP", "NOEU"}) {
+        const auto& rule = quadratureRule(CellType::TRIA3, family);
+        double sum = 0;
+        for (int p = 0; p < rule.size(); ++p) sum += rule.weights[p] * rule.points[p][0] * rule.points[p][0];
+        EXPECT_GT(std::abs(sum - exactMoment(CellType::TRIA3, 2, 0, 0)), 1e-3) << family;
+    }
+    EXPECT_NEAR([] {
+        const auto& rule = quadratureRule(CellType::TRIA3, "SIMP");
+        double sum = 0;
+        for (int p = 0; p < rule.size(); ++p) sum += rule.weights[p] * rule.points[p][0] * rule.points[p][0];
+        return sum;
+    }(), 0.1, 1e-15);
+}
+
+TEST(FeQuadrature, NoeuPointsAreTheVertices) {
+    for (auto t : {CellType::SEG2, CellType::TRIA3, CellType::QUAD4, CellType::TETRA4, CellType::HEXA8}) {
+        const auto& rule = quadratureRule(t, "NOEU");
+        const auto nodes = referenceNodes(t);
+        ASSERT_EQ(size_t(rule.size()), nodes.size()) << cellTypeName(t);
+        for (size_t a = 0; a < nodes.size(); ++a) {
+            for (int j = 0; j < 3; ++j) EXPECT_EQ(rule.points[a][j], nodes[a][j]) << cellTypeName(t);
+            EXPECT_DOUBLE_EQ(rule.weights[a], rule.weights[0]);
+        }
+    }
+    EXPECT_EQ(quadratureRule(CellType::SEG2, "NOEU").weights[0], 1.0);
+    EXPECT_DOUBLE_EQ(quadratureRule(CellType::TRIA3, "NOEU").weights[0], 1.0 / 6.0);
+}
+
+TEST(FeQuadrature, UnknownFamiliesAreRefused) {
+    EXPECT_THROW(quadratureRule(CellType::TRIA3, "SIMP1"), ma::NotImplemented);
+    EXPECT_THROW(quadratureRule(CellType::TRIA3, "COTES"), ma::NotImplemented);
+    EXPECT_THROW(quadratureRule(CellType::SEG2, "FPG"), ma::NotImplemented);
+    EXPECT_THROW(quadratureRule(CellType::SEG2, "FPG2X"), ma::NotImplemented);
 }
 
 TEST(FeQuadrature, StiffnessRulesAreCodeAsters) {
