@@ -53,7 +53,11 @@ void addXfemCommands(Catalog& c) {
          fact("ZONE").many().mandatory().keywords(join({
              {CO("FISS_MAIT", {kCrack}).mandatory(),
               TXM("INTEGRATION").into({"NOEUD", "GAUSS", "SIMPSON", "NCOTES"}).def("GAUSS"),
-              bloc(when("INTEGRATION", {"GAUSS", "SIMPSON", "NCOTES"}), {I("ORDRE_INT")}),
+              // ORDRE_INT: degree of the Legendre polynomial (GAUSS), number of subdivisions
+              // (SIMPSON), degree of the interpolating polynomial (NCOTES).
+              bloc(when("INTEGRATION", {"GAUSS"}), {I("ORDRE_INT").def(6).range(1, 6)}),
+              bloc(when("INTEGRATION", {"SIMPSON"}), {I("ORDRE_INT").def(1).range(1, 4)}),
+              bloc(when("INTEGRATION", {"NCOTES"}), {I("ORDRE_INT").def(3).range(3, 8)}),
               yesNo("CONTACT_INIT").def("NON"), yesNo("GLISSIERE").def("NON"),
               TXM("ALGO_CONT").into({"STANDARD", "PENALISATION", "CZM"}).notSupported({"CZM"}).def("STANDARD"),
               bloc(when("ALGO_CONT", {"STANDARD"}), {R("COEF_CONT").def(100.0)}),
