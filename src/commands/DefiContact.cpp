@@ -1,13 +1,14 @@
 // DEFI_CONTACT with FORMULATION='XFEM' (xfem_spec §5.1): frictionless contact on the interfaces of
 // an X-FEM model, one zone per interface (FISS_MAIT). What miniaster computes is described in
-// docs/contact.md; keywords that only tune code_aster's own algorithm (augmented Lagrangian
-// coefficient, multiplier space, nodal integration, geometric loop) are accepted and logged as
-// ignored.
+// docs/contact.md; ZONE/INTEGRATION and ORDRE_INT choose the rule of the facets as in code_aster;
+// keywords that only tune code_aster's own algorithm (augmented Lagrangian coefficient, multiplier
+// space, geometric loop) are accepted and logged as ignored.
 #include <fmt/format.h>
 
 #include <set>
 
 #include "contact/ContactDefinition.hpp"
+#include "contact/ContactIntegration.hpp"
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "fe/Model.hpp"
@@ -83,8 +84,22 @@ ConceptPtr defiContact(const KeywordSet& kw, CommandContext& ctx) {
         }
         zone.initiallyActive = z.text("CONTACT_INIT", "NON") == "OUI";
         zone.bilateral = z.text("GLISSIERE", "NON") == "OUI";
-        ignore(z, "INTEGRATION", "contact is integrated with Gauss points on the facets");
-        ignore(z, "ORDRE_INT", "contact is integrated with Gauss points on the facets");
+        zone.integration.scheme = z.text("INTEGRATION", "GAUSS");
+        if (zone.integration.scheme != "NOEUD") zone.integration.order = static_cast<int>(z.integer("ORDRE_INT"));
+        if (contact::facetFamily(xm->dim(), zone.integration).empty()) {
+            const auto& in = zone.integration;
+            const std::string why =
+                in.scheme == "NCOTES" && in.order > 5
+                    ? "code_aster's X-FEM contact (xminte) selects no integration family for it in 3D"
+                    : fmt::format("code_aster's X-FEM contact (xminte) selects for it the family {}, which is defined "
+                                  "on segment facets only (elraga has no {} for triangles)",
+                                  in.scheme == "SIMPSON" ? "SIMP1" : "COTES", in.scheme == "SIMPSON" ? "SIMP1" : "COTES");
+            throw NotImplemented(fmt::format(
+                "{}='{}' with {}={} on the triangular facets of a 3D model: {}, so miniaster has no rule to take "
+                "and does not substitute another one; in 3D use INTEGRATION='NOEUD', 'GAUSS' (ORDRE_INT 1 to 6) "
+                "or 'SIMPSON' with ORDRE_INT=1",
+                z.pathOf("INTEGRATION"), in.scheme, z.pathOf("ORDRE_INT"), in.order, why));
+        }
         ignore(z, "COEF_CONT", "augmented Lagrangian coefficient; miniaster uses Nitsche");
         ignore(z, "ALGO_LAGR", "multiplier space of code_aster; Nitsche has none");
         ignore(z, "COEF_ECHELLE", "scaling of code_aster's contact equations");
@@ -95,12 +110,13 @@ ConceptPtr defiContact(const KeywordSet& kw, CommandContext& ctx) {
         if (!seen.count(static_cast<int>(i)))
             msg().infof("    interface {} has no contact zone: its lips are free (no contact condition)", cracks[i]->name);
     for (const auto& z : def->zones)
-        msg().infof("    contact zone on {}: {}, CONTACT_INIT={}, GLISSIERE={}", z.crack->name,
+        msg().infof("    contact zone on {}: {}, {}, CONTACT_INIT={}, GLISSIERE={}", z.crack->name,
                     z.algorithm == ContactAlgorithm::Nitsche
                         ? fmt::format("ALGO_CONT='STANDARD' (Nitsche, gamma = {} (lambda + 2 mu) / h, theta = {})",
                                       def->nitsche.gammaZero, def->nitsche.theta)
                         : fmt::format("ALGO_CONT='PENALISATION' (penalty, COEF_PENA_CONT = {:.6e})", z.penalty),
-                    z.initiallyActive ? "OUI" : "NON", z.bilateral ? "OUI" : "NON");
+                    contact::describe(xm->dim(), z.integration), z.initiallyActive ? "OUI" : "NON",
+                    z.bilateral ? "OUI" : "NON");
     msg().infof("    ITER_CONT_MAXI = {}", def->maxContactIterations);
     if (!ignored.empty())
         msg().infof("    DEFI_CONTACT keywords accepted but ignored by miniaster (code_aster algorithm settings):\n      {}",

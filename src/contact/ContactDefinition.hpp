@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/ContactIntegration.hpp"
 #include "core/Concept.hpp"
 #include "fe/Model.hpp"
 
@@ -28,6 +29,7 @@ struct ContactZone {
     double penalty = 0.0;        // COEF_PENA_CONT
     bool initiallyActive = false;  // CONTACT_INIT='OUI'
     bool bilateral = false;        // GLISSIERE='OUI': a point that has been in contact stays active
+    ContactIntegration integration;  // INTEGRATION, ORDRE_INT: the rule of the zone's facets
 };
 
 // Nitsche parameters (docs/contact.md): gamma = gammaZero * E * |facets| / |adjacent blocks|,

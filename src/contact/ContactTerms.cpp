@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "core/Error.hpp"
 #include "fe/ElementKinematics.hpp"
@@ -18,10 +20,13 @@ namespace {
 
 using Vec = std::array<double, 3>;
 
-// Facet rule: degree 5 on segments, degree 4 on triangles (products of the shape functions of
-// bilinear/trilinear parents along the facet).
-const QuadratureRule& facetRule(int dim) {
-    return dim == 2 ? quadratureRule(CellType::SEG2, "FPG3") : quadratureRule(CellType::TRIA3, "FPG6");
+// Rule of the facets of a zone (ZONE/INTEGRATION, ORDRE_INT; DEFI_CONTACT has refused the schemes
+// without a family). Whatever the rule, the point terms are consistent (docs/contact.md).
+const QuadratureRule& facetRule(int dim, const ContactZone& zone) {
+    const std::string family = facetFamily(dim, zone.integration);
+    if (family.empty())
+        throw std::logic_error("contact: no facet family for INTEGRATION='" + zone.integration.scheme + "'");
+    return quadratureRule(dim == 2 ? CellType::SEG2 : CellType::TRIA3, family);
 }
 
 // Weights of a point of the reference facet on its vertices (SEG2 on [-1,1], TRIA3 unit triangle).
@@ -58,7 +63,6 @@ ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField
     const auto& xm = definition_->xfemModel();
     const DofNumbering& numbering = problem.numbering();
     const int dim = model.dim;
-    const QuadratureRule& rule = facetRule(dim);
     const double refMeasure = dim == 2 ? 2.0 : 0.5;
 
     ElementIntegration ei;
@@ -67,6 +71,7 @@ ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField
         const ContactFacet& facet = facets_[f];
         const int zone = definition_->zoneOfCrack(facet.crack);
         if (zone < 0) continue;
+        const QuadratureRule& rule = facetRule(dim, definition_->zones[zone]);
         // Nitsche parameter on the stiffest normal response of the two sides, the P-wave modulus
         // lambda + 2 mu (E (1 - nu) / ((1 + nu)(1 - 2 nu)) in 3D / D_PLAN): sigma_n(v) is bounded by it,
         // not by E. With E the symmetric Nitsche matrix lost positive definiteness near

@@ -14,6 +14,10 @@
 // which the exact solution satisfies (lambda = sigma_n, sigma_n g = 0): the method is consistent.
 // The min is resolved by an active set frozen during each Newton solve (active: lambda = P,
 // inactive: lambda = 0) and updated by the contact loop (ContactLoop.hpp).
+// The integrals are sums over the points of each facet's rule, the one of its zone
+// (ZONE/INTEGRATION, ContactIntegration.hpp): with 'NOEUD' the points are the facet vertices, so a
+// vertex shared by several facets (the junction point among them) carries one point per facet,
+// each with the stresses of its own facet's two sides.
 #include <array>
 #include <memory>
 #include <vector>

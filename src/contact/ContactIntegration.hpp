@@ -1,0 +1,23 @@
+#pragma once
+// ZONE/INTEGRATION and ORDRE_INT of DEFI_CONTACT (FORMULATION='XFEM'): the integration rule of the
+// contact facets of a zone, chosen as code_aster chooses it (docs/contact.md, "Integration of the
+// contact terms"): bibfor/elements/xminte.F90 maps the scheme and its order to an integration
+// family of the facet element (SE2 in 2D, TR3 in 3D), whose points are those of elraga.F90.
+#include <string>
+
+namespace ma::contact {
+
+struct ContactIntegration {
+    std::string scheme = "GAUSS";  // INTEGRATION: 'NOEUD', 'GAUSS', 'SIMPSON' or 'NCOTES'
+    int order = 6;                 // ORDRE_INT (unused with 'NOEUD')
+};
+
+// code_aster's facet family for the scheme ("NOEU", "FPG4", "SIMP1", ...) in dimension 2 or 3, or
+// an empty string where code_aster defines no rule (3D: SIMPSON of order 2..4 -> SIMP1 and NCOTES ->
+// COTES exist for SE2 only; NCOTES of order 6..8 selects no family at all).
+std::string facetFamily(int dim, const ContactIntegration& integration);
+
+// For the .mess: "INTEGRATION='NOEUD' (facet vertices)", "INTEGRATION='GAUSS', ORDRE_INT=6 (SE2 FPG4)".
+std::string describe(int dim, const ContactIntegration& integration);
+
+}  // namespace ma::contact

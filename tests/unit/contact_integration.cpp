@@ -1,0 +1,281 @@
+// ZONE/INTEGRATION and ORDRE_INT of DEFI_CONTACT (src/contact/ContactIntegration, ContactTerms):
+// the facet family of every scheme is code_aster's (xminte.F90), the points of each facet integrate
+// the polynomials of their rule's degree and sum to the facet measure, 'NOEUD' puts them on the facet
+// vertices, each zone keeps its own rule, and the command refuses what code_aster does not define
+// (3D SIMPSON of order > 1 and NCOTES) and orders out of the catalogue's ranges.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "contact/ContactIntegration.hpp"
+#include "contact_test_scene.hpp"
+#include "fe/Quadrature.hpp"
+#include "parser_run.hpp"
+
+namespace {
+
+using namespace ma;
+using namespace ma::contact;
+using Vec = std::array<double, 3>;
+
+struct Expected {
+    const char* scheme;
+    int order;
+    const char* family2d;
+    const char* family3d;  // "" where code_aster defines no TR3 rule
+};
+
+// bibfor/elements/xminte.F90 for INTEG = 10 ORDRE_INT + (1 NOEUD, 2 GAUSS, 3 SIMPSON, 4 NCOTES), and
+// the X-FEM contact elements' TR3 'GAUSS' = FPG12.
+const Expected kTable[] = {
+    {"NOEUD", 0, "NOEU", "NOEU"},    {"GAUSS", 1, "FPG2", "FPG3"},    {"GAUSS", 2, "FPG2", "FPG3"},
+    {"GAUSS", 3, "FPG3", "FPG4"},    {"GAUSS", 4, "FPG4", "FPG6"},    {"GAUSS", 5, "FPG4", "FPG7"},
+    {"GAUSS", 6, "FPG4", "FPG12"},   {"SIMPSON", 1, "SIMP", "SIMP"},  {"SIMPSON", 2, "SIMP1", ""},
+    {"SIMPSON", 3, "SIMP1", ""},     {"SIMPSON", 4, "SIMP1", ""},     {"NCOTES", 3, "COTES", ""},
+    {"NCOTES", 4, "COTES1", ""},     {"NCOTES", 5, "COTES1", ""},     {"NCOTES", 6, "COTES2", ""},
+    {"NCOTES", 7, "COTES2", ""},     {"NCOTES", 8, "COTES2", ""},
+};
+
+double factorial(int n) { return n <= 1 ? 1.0 : n * factorial(n - 1); }
+
+Vec sub(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+// Barycentric coordinates (l1, l2) of x on the facet (segment: l1 only), from the physical vertices.
+std::array<double, 2> barycentric(const std::vector<Vec>& v, const Vec& x) {
+    const Vec e1 = sub(v[1], v[0]), d = sub(x, v[0]);
+    if (v.size() == 2) return {dot(d, e1) / dot(e1, e1), 0.0};
+    const Vec e2 = sub(v[2], v[0]);
+    const double a = dot(e1, e1), b = dot(e1, e2), c = dot(e2, e2), p = dot(d, e1), q = dot(d, e2);
+    const double det = a * c - b * b;
+    return {(p * c - q * b) / det, (q * a - p * b) / det};
+}
+
+// Checks every facet's points of scene s against its rule: count, sum of weights = facet measure,
+// exact on l1^i l2^j (i + j <= degree), and with NOEU the points are the facet vertices.
+void expectFacetRule(const contacttest::Scene& s, const QuadratureRule& rule, const std::string& what) {
+    const auto& terms = *s.terms;
+    std::vector<std::vector<int>> byFacet(terms.facets().size());
+    for (size_t p = 0; p < terms.points().size(); ++p) byFacet[terms.points()[p].facet].push_back(int(p));
+    const int dim = s.model->dim;
+    int checked = 0;
+    for (size_t f = 0; f < byFacet.size(); ++f) {
+        const auto& facet = terms.facets()[f];
+        ASSERT_EQ(int(byFacet[f].size()), rule.size()) << what << " facet " << f;
+        double sum = 0.0;
+        for (int p : byFacet[f]) sum += terms.points()[p].weight;
+        EXPECT_NEAR(sum, facet.measure, 1e-14 * facet.measure) << what;
+        for (int i = 0; i <= rule.degree; ++i)
+            for (int j = 0; j <= (dim == 3 ? rule.degree - i : 0); ++j) {
+                double q = 0.0;
+                for (int p : byFacet[f]) {
+                    const auto l = barycentric(facet.vertices, terms.points()[p].xyz);
+                    q += terms.points()[p].weight * std::pow(l[0], i) * std::pow(l[1], j);
+                }
+                // Segment: L i! / (i + 1)!; triangle: 2 A i! j! / (i + j + 2)!.
+                const double exact = dim == 2 ? facet.measure / (i + 1)
+                                              : 2.0 * facet.measure * factorial(i) * factorial(j) / factorial(i + j + 2);
+                EXPECT_NEAR(q, exact, 1e-12 * facet.measure) << what << " l1^" << i << " l2^" << j;
+            }
+        if (rule.family == "NOEU") {
+            for (size_t k = 0; k < byFacet[f].size(); ++k)
+                for (int c = 0; c < 3; ++c)
+                    EXPECT_EQ(terms.points()[byFacet[f][k]].xyz[c], facet.vertices[k][c]) << what << " vertex " << k;
+        }
+        ++checked;
+    }
+    EXPECT_GT(checked, 0) << what;
+}
+
+}  // namespace
+
+TEST(ContactIntegration, FacetFamiliesAreCodeAsters) {
+    for (const auto& e : kTable) {
+        const ContactIntegration in{e.scheme, e.order};
+        EXPECT_EQ(facetFamily(2, in), e.family2d) << e.scheme << " " << e.order;
+        EXPECT_EQ(facetFamily(3, in), e.family3d) << e.scheme << " " << e.order;
+    }
+    EXPECT_EQ(describe(2, {"NOEUD", 0}), "INTEGRATION='NOEUD' (facet vertices)");
+    EXPECT_EQ(describe(2, {}), "INTEGRATION='GAUSS', ORDRE_INT=6 (SE2 FPG4)");
+    EXPECT_EQ(describe(3, {}), "INTEGRATION='GAUSS', ORDRE_INT=6 (TR3 FPG12)");
+}
+
+TEST(ContactIntegration, FacetPointsIntegrateTheirDegreeAndSumToTheFacetMeasure) {
+    for (CellType type : {CellType::QUAD4, CellType::TRIA3, CellType::TETRA4, CellType::HEXA8}) {
+        const int dim = type == CellType::QUAD4 || type == CellType::TRIA3 ? 2 : 3;
+        for (const auto& e : kTable) {
+            const ContactIntegration in{e.scheme, e.order};
+            const std::string family = dim == 2 ? e.family2d : e.family3d;
+            if (family.empty()) continue;
+            const auto s = contacttest::scene(type, 3, ContactAlgorithm::Nitsche, false, in);
+            expectFacetRule(s, quadratureRule(dim == 2 ? CellType::SEG2 : CellType::TRIA3, family),
+                            cellTypeName(type) + " " + describe(dim, in));
+        }
+    }
+}
+
+TEST(ContactIntegration, EachZoneKeepsItsRule) {
+    auto s = contacttest::scene(CellType::QUAD4, 5, ContactAlgorithm::Nitsche);
+    s.definition->zones[0].integration = {"NOEUD", 0};
+    s.definition->zones[1].integration = {"NCOTES", 8};
+    s.definition->zones[2].integration = {"SIMPSON", 1};
+    s.terms = attachContact(*s.problem, *s.material, s.definition);
+    const int expected[] = {2, 10, 3};  // NOEU, COTES2, SIMP points per segment
+    std::vector<int> perFacet(s.terms->facets().size(), 0);
+    for (const auto& cp : s.terms->points()) ++perFacet[cp.facet];
+    int seen[3] = {0, 0, 0};
+    for (size_t f = 0; f < perFacet.size(); ++f) {
+        const int zone = s.definition->zoneOfCrack(s.terms->facets()[f].crack);
+        EXPECT_EQ(perFacet[f], expected[zone]) << "facet " << f;
+        ++seen[zone];
+    }
+    for (int n : seen) EXPECT_GT(n, 0);
+}
+
+TEST(ContactIntegration, NodalPointsAtTheJunctionUseTheirOwnFacet) {
+    // The junction point (0, 0) is a vertex of facets of the three interfaces: one point per facet
+    // there, each with the unknowns of its own facet's two sides only.
+    const auto s = contacttest::scene(CellType::QUAD4, 5, ContactAlgorithm::Nitsche, false, {"NOEUD", 0});
+    const auto& terms = *s.terms;
+    int atJunction = 0;
+    for (const auto& cp : terms.points()) {
+        if (std::abs(cp.xyz[0]) > 1e-12 || std::abs(cp.xyz[1]) > 1e-12) continue;
+        ++atJunction;
+        const auto& facet = terms.facets()[cp.facet];
+        const auto& num = s.problem->numbering();
+        const Mesh& mesh = *s.model->mesh;
+        std::vector<int> allowed;
+        for (int cell : {facet.minus.cell, facet.plus.cell})
+            for (int node : mesh.cellNodes(cell))
+                for (int k = 0; k < 8; ++k)
+                    for (int c = 0; c < 2; ++c)
+                        if (const int d = num.dof(node, k, c); d >= 0) allowed.push_back(d);
+        for (int d : cp.dofs) EXPECT_NE(std::find(allowed.begin(), allowed.end(), d), allowed.end());
+    }
+    // FISS1 on both sides of x = 0 (2 pieces), FISS2 above and FISS3 below: 4 facets end there.
+    EXPECT_EQ(atJunction, 4);
+}
+
+namespace {
+
+// Per facet and unknown: the rule's value of int_facet g(v) for v = that unknown's shape function (the
+// traction term of a unit normal stress, which the exact uniform-stress solution needs exactly).
+std::map<std::pair<int, int>, double> tractionTerms(const ContactTerms& terms) {
+    std::map<std::pair<int, int>, double> out;
+    for (const auto& cp : terms.points())
+        for (size_t i = 0; i < cp.dofs.size(); ++i) out[{cp.facet, cp.dofs[i]}] += cp.weight * cp.gap[i];
+    return out;
+}
+
+// Largest difference between two rules' traction terms, relative to the largest term.
+double tractionDifference(CellType type, const ContactIntegration& a, const ContactIntegration& b) {
+    const auto sa = contacttest::scene(type, 5, ContactAlgorithm::Nitsche, false, a);
+    const auto sb = contacttest::scene(type, 5, ContactAlgorithm::Nitsche, false, b);
+    const auto ta = tractionTerms(*sa.terms), tb = tractionTerms(*sb.terms);
+    double scale = 0.0, diff = 0.0;
+    for (const auto& [key, v] : tb) {
+        scale = std::max(scale, std::abs(v));
+        const auto it = ta.find(key);
+        diff = std::max(diff, std::abs(v - (it == ta.end() ? 0.0 : it->second)));
+    }
+    return diff / scale;
+}
+
+}  // namespace
+
+TEST(ContactIntegration, DegreeOneRulesAreExactOnLinearFacetTracesOnly) {
+    // The exact uniform-stress answer needs int sigma_n g(v) exactly for every test function v: the
+    // traces of v on the facets are linear for TRIA3, TETRA4 and QUAD4 cut along a grid line, which
+    // the vertex rule integrates exactly; on the triangular facets of a HEXA8 cut by x = 0 they are
+    // bilinear (y z), which needs degree 2 (FPG3) and which NOEU and SIMP miss.
+    const ContactIntegration noeud{"NOEUD", 0}, reference{"GAUSS", 6};
+    for (CellType type : {CellType::QUAD4, CellType::TRIA3, CellType::TETRA4})
+        EXPECT_LT(tractionDifference(type, noeud, reference), 1e-13) << cellTypeName(type);
+    EXPECT_LT(tractionDifference(CellType::TETRA4, {"SIMPSON", 1}, reference), 1e-13);
+    EXPECT_LT(tractionDifference(CellType::HEXA8, {"GAUSS", 1}, reference), 1e-13);
+    EXPECT_GT(tractionDifference(CellType::HEXA8, noeud, reference), 1e-2);
+    EXPECT_GT(tractionDifference(CellType::HEXA8, {"SIMPSON", 1}, reference), 1e-2);
+}
+
+namespace {
+
+using namespace ma::test;
+
+const std::string kMesh2d = std::string("--mesh '") + MINIASTER_SHARED_DIR + "/astest/ssnv511a.mmed'";
+const std::string kMesh3d = std::string("--mesh '") + MINIASTER_SOURCE_DIR + "/astest/contact_tetra4_n5.mmed'";
+
+// DEFI_CONTACT on the ssnv511 interfaces with `zone` in every ZONE (2D D_PLAN or 3D), then FIN.
+std::string definition(bool threeD, const std::string& zone) {
+    const std::string para = threeD ? "['X', 'Y', 'Z']" : "['X', 'Y']";
+    return std::string("DEBUT()\n"
+                       "MA = LIRE_MAILLAGE(FORMAT='MED')\n") +
+           (threeD ? "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(GROUP_MA='VOLU', PHENOMENE='MECANIQUE', "
+                     "MODELISATION='3D'))\n"
+                   : "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(GROUP_MA='SURF', PHENOMENE='MECANIQUE', "
+                     "MODELISATION='D_PLAN'))\n") +
+           "LN1 = FORMULE(VALE='Y', NOM_PARA=" + para + ")\n"
+           "LN2 = FORMULE(VALE='X', NOM_PARA=" + para + ")\n"
+           "F1 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN1))\n"
+           "F2 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2), "
+           "JONCTION=_F(FISSURE=F1, POINT=(0, 5" + (threeD ? ", 0" : "") + ")))\n"
+           "F3 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2), "
+           "JONCTION=_F(FISSURE=F1, POINT=(0, -5" + (threeD ? ", 0" : "") + ")))\n"
+           "MX = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(F1, F2, F3), CONTACT='STANDARD')\n"
+           "CT = DEFI_CONTACT(MODELE=MX, FORMULATION='XFEM',\n"
+           "                  ZONE=(_F(FISS_MAIT=F1, " + zone + "), _F(FISS_MAIT=F2), _F(FISS_MAIT=F3, " + zone + ")))\n"
+           "FIN()\n";
+}
+
+}  // namespace
+
+TEST(ContactIntegration, EachZoneIsLoggedWithItsRule) {
+    const auto r = runComm(definition(false, "INTEGRATION='NOEUD'"), kMesh2d);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("contact zone on F1: ALGO_CONT='STANDARD'"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("INTEGRATION='NOEUD' (facet vertices)"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("INTEGRATION='GAUSS', ORDRE_INT=6 (SE2 FPG4)"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("ZONE[1]/INTEGRATION ("), std::string::npos) << r.output;  // not in the ignored list
+    const auto n = runComm(definition(false, "INTEGRATION='NCOTES', ORDRE_INT=5"), kMesh2d);
+    ASSERT_EQ(n.status, 0) << n.output;
+    EXPECT_NE(n.output.find("INTEGRATION='NCOTES', ORDRE_INT=5 (SE2 COTES1)"), std::string::npos) << n.output;
+    const auto t = runComm(definition(true, "INTEGRATION='GAUSS', ORDRE_INT=2"), kMesh3d);
+    ASSERT_EQ(t.status, 0) << t.output;
+    EXPECT_NE(t.output.find("INTEGRATION='GAUSS', ORDRE_INT=2 (TR3 FPG3)"), std::string::npos) << t.output;
+    EXPECT_NE(t.output.find("INTEGRATION='GAUSS', ORDRE_INT=6 (TR3 FPG12)"), std::string::npos) << t.output;
+}
+
+TEST(ContactIntegration, OrdersOutOfTheCatalogueRangeAreRefused) {
+    const std::pair<const char*, const char*> cases[] = {{"INTEGRATION='GAUSS', ORDRE_INT=7", "[1, 6]"},
+                                                        {"INTEGRATION='GAUSS', ORDRE_INT=0", "[1, 6]"},
+                                                        {"INTEGRATION='SIMPSON', ORDRE_INT=5", "[1, 4]"},
+                                                        {"INTEGRATION='NCOTES', ORDRE_INT=2", "[3, 8]"},
+                                                        {"INTEGRATION='NCOTES', ORDRE_INT=9", "[3, 8]"}};
+    for (const auto& [zone, range] : cases) {
+        const auto r = runComm(definition(false, zone), kMesh2d);
+        EXPECT_EQ(r.status, 1) << zone << "\n" << r.output;
+        EXPECT_NE(r.output.find("ZONE[1]/ORDRE_INT"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find(std::string("out of range ") + range), std::string::npos) << r.output;
+    }
+    // NOEUD has no order.
+    const auto r = runComm(definition(false, "INTEGRATION='NOEUD', ORDRE_INT=2"), kMesh2d);
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("ORDRE_INT"), std::string::npos) << r.output;
+}
+
+TEST(ContactIntegration, SchemesWithoutATriangleRuleAreNotImplementedIn3D) {
+    for (const char* zone : {"INTEGRATION='SIMPSON', ORDRE_INT=2", "INTEGRATION='NCOTES'",
+                             "INTEGRATION='NCOTES', ORDRE_INT=8"}) {
+        const auto r = runComm(definition(true, zone), kMesh3d);
+        EXPECT_NE(r.status, 0) << zone;
+        EXPECT_NE(r.output.find("DEFI_CONTACT (t.comm, line 10): ZONE[1]/INTEGRATION='"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("does not substitute another one"), std::string::npos) << r.output;
+    }
+    // The same schemes are defined on 2D segment facets.
+    const auto r = runComm(definition(false, "INTEGRATION='SIMPSON', ORDRE_INT=2"), kMesh2d);
+    EXPECT_EQ(r.status, 0) << r.output;
+}
