@@ -85,21 +85,13 @@ ConceptPtr defiContact(const KeywordSet& kw, CommandContext& ctx) {
         zone.initiallyActive = z.text("CONTACT_INIT", "NON") == "OUI";
         zone.bilateral = z.text("GLISSIERE", "NON") == "OUI";
         zone.integration.scheme = z.text("INTEGRATION", "GAUSS");
-        if (zone.integration.scheme != "NOEUD") zone.integration.order = static_cast<int>(z.integer("ORDRE_INT"));
-        if (contact::facetFamily(xm->dim(), zone.integration).empty()) {
-            const auto& in = zone.integration;
-            const std::string why =
-                in.scheme == "NCOTES" && in.order > 5
-                    ? "code_aster's X-FEM contact (xminte) selects no integration family for it in 3D"
-                    : fmt::format("code_aster's X-FEM contact (xminte) selects for it the family {}, which is defined "
-                                  "on segment facets only (elraga has no {} for triangles)",
-                                  in.scheme == "SIMPSON" ? "SIMP1" : "COTES", in.scheme == "SIMPSON" ? "SIMP1" : "COTES");
+        zone.integration.order = zone.integration.scheme == "NOEUD" ? 0 : static_cast<int>(z.integer("ORDRE_INT"));
+        if (const std::string why = contact::missingRuleReason(xm->dim(), zone.integration); !why.empty())
             throw NotImplemented(fmt::format(
                 "{}='{}' with {}={} on the triangular facets of a 3D model: {}, so miniaster has no rule to take "
                 "and does not substitute another one; in 3D use INTEGRATION='NOEUD', 'GAUSS' (ORDRE_INT 1 to 6) "
                 "or 'SIMPSON' with ORDRE_INT=1",
-                z.pathOf("INTEGRATION"), in.scheme, z.pathOf("ORDRE_INT"), in.order, why));
-        }
+                z.pathOf("INTEGRATION"), zone.integration.scheme, z.pathOf("ORDRE_INT"), zone.integration.order, why));
         ignore(z, "COEF_CONT", "augmented Lagrangian coefficient; miniaster uses Nitsche");
         ignore(z, "ALGO_LAGR", "multiplier space of code_aster; Nitsche has none");
         ignore(z, "COEF_ECHELLE", "scaling of code_aster's contact equations");

@@ -2,6 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+
+#include "fe/Quadrature.hpp"
+
 namespace ma::contact {
 
 std::string facetFamily(int dim, const ContactIntegration& in) {
@@ -21,6 +26,39 @@ std::string facetFamily(int dim, const ContactIntegration& in) {
     }
     if (in.scheme == "SIMPSON" && n == 1) return "SIMP";
     return {};
+}
+
+std::string missingRuleReason(int dim, const ContactIntegration& in) {
+    if (!facetFamily(dim, in).empty()) return {};
+    if (in.scheme == "NCOTES" && in.order > 5)
+        return "code_aster's X-FEM contact (xminte) selects no integration family for it in 3D";
+    const char* family = in.scheme == "SIMPSON" ? "SIMP1" : "COTES";
+    return fmt::format("code_aster's X-FEM contact (xminte) selects for it the family {}, which is defined on "
+                       "segment facets only (elraga has no {} for triangles)",
+                       family, family);
+}
+
+int facetTraceDegree(CellType parent, const std::vector<std::array<double, 3>>& ref) {
+    if (parent != CellType::QUAD4 && parent != CellType::HEXA8) return 1;
+    const int dim = parent == CellType::QUAD4 ? 2 : 3;
+    // A coordinate that varies by less than this over the facet adds a non-linear part of that
+    // relative size only: round-off of the cut's vertices, not a slanted facet.
+    constexpr double kTolerance = 1e-9;
+    int varying = 0;
+    for (int k = 0; k < dim; ++k) {
+        const auto [lo, hi] = std::minmax_element(ref.begin(), ref.end(),
+                                                  [k](const auto& a, const auto& b) { return a[k] < b[k]; });
+        if ((*hi)[k] - (*lo)[k] > kTolerance) ++varying;
+    }
+    return std::max(varying, 1);
+}
+
+int gaussOrderFor(int dim, int traceDegree) {
+    for (int n = 1; n <= 6; ++n) {
+        const std::string family = facetFamily(dim, {"GAUSS", n});
+        if (quadratureRule(dim == 2 ? CellType::SEG2 : CellType::TRIA3, family).degree >= traceDegree) return n;
+    }
+    return 6;
 }
 
 std::string describe(int dim, const ContactIntegration& in) {

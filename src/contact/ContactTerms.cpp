@@ -67,11 +67,22 @@ ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField
 
     ElementIntegration ei;
     PointGeometry geo;
+    shortfalls_.assign(definition_->zones.size(), {});
     for (size_t f = 0; f < facets_.size(); ++f) {
         const ContactFacet& facet = facets_[f];
         const int zone = definition_->zoneOfCrack(facet.crack);
         if (zone < 0) continue;
         const QuadratureRule& rule = facetRule(dim, definition_->zones[zone]);
+        RuleShortfall& shortfall = shortfalls_[zone];
+        ++shortfall.facets;
+        shortfall.ruleDegree = rule.degree;
+        int traceDegree = 1;
+        for (const FacetSide* side : {&facet.minus, &facet.plus})
+            traceDegree = std::max(traceDegree, facetTraceDegree(mesh.cellTypes[size_t(side->cell)], side->ref));
+        if (traceDegree > rule.degree) {
+            ++shortfall.inexact;
+            shortfall.traceDegree = std::max(shortfall.traceDegree, traceDegree);
+        }
         // Nitsche parameter on the stiffest normal response of the two sides, the P-wave modulus
         // lambda + 2 mu (E (1 - nu) / ((1 + nu)(1 - 2 nu)) in 3D / D_PLAN): sigma_n(v) is bounded by it,
         // not by E. With E the symmetric Nitsche matrix lost positive definiteness near

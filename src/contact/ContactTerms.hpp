@@ -44,6 +44,16 @@ struct ContactPoint {
     double scale = 1.0;
 };
 
+// Facets of a zone whose rule integrates the traces of their parents' shape functions only
+// approximately (rule degree < facetTraceDegree): there the exact solution of a uniform stress per
+// block is no longer a solution of the discrete equations.
+struct RuleShortfall {
+    int facets = 0;       // facets of the zone
+    int inexact = 0;      // of which the rule is too weak for
+    int ruleDegree = 0;
+    int traceDegree = 0;  // largest trace degree among them
+};
+
 struct StatusReport {
     int changed = 0;
     int active = 0;
@@ -73,6 +83,8 @@ public:
     StatusReport inspect(const std::vector<double>& u) const;
 
     const std::vector<ContactPoint>& points() const { return points_; }
+    // Per zone (definition().zones order).
+    const std::vector<RuleShortfall>& ruleShortfalls() const { return shortfalls_; }
     const std::vector<ContactFacet>& facets() const { return facets_; }
     const std::vector<char>& active() const { return active_; }
     const ContactDefinition& definition() const { return *definition_; }
@@ -89,6 +101,7 @@ private:
     std::vector<ContactFacet> facets_;
     std::vector<ContactPoint> points_;
     std::vector<char> active_, everActive_;
+    std::vector<RuleShortfall> shortfalls_;
     int extraUnknowns_ = 0;
 };
 

@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -99,7 +101,12 @@ TEST(ContactIntegration, FacetFamiliesAreCodeAsters) {
         const ContactIntegration in{e.scheme, e.order};
         EXPECT_EQ(facetFamily(2, in), e.family2d) << e.scheme << " " << e.order;
         EXPECT_EQ(facetFamily(3, in), e.family3d) << e.scheme << " " << e.order;
+        EXPECT_TRUE(missingRuleReason(2, in).empty());
+        EXPECT_EQ(missingRuleReason(3, in).empty(), std::string(e.family3d) != "") << e.scheme << " " << e.order;
     }
+    EXPECT_NE(missingRuleReason(3, {"SIMPSON", 2}).find("SIMP1"), std::string::npos);
+    EXPECT_NE(missingRuleReason(3, {"NCOTES", 4}).find("COTES"), std::string::npos);
+    EXPECT_NE(missingRuleReason(3, {"NCOTES", 7}).find("no integration family"), std::string::npos);
     EXPECT_EQ(describe(2, {"NOEUD", 0}), "INTEGRATION='NOEUD' (facet vertices)");
     EXPECT_EQ(describe(2, {}), "INTEGRATION='GAUSS', ORDRE_INT=6 (SE2 FPG4)");
     EXPECT_EQ(describe(3, {}), "INTEGRATION='GAUSS', ORDRE_INT=6 (TR3 FPG12)");
@@ -159,6 +166,37 @@ TEST(ContactIntegration, NodalPointsAtTheJunctionUseTheirOwnFacet) {
     }
     // FISS1 on both sides of x = 0 (2 pieces), FISS2 above and FISS3 below: 4 facets end there.
     EXPECT_EQ(atJunction, 4);
+}
+
+TEST(ContactIntegration, TraceDegreeOfTheParentShapeFunctions) {
+    using P = std::vector<Vec>;
+    EXPECT_EQ(facetTraceDegree(CellType::TRIA3, P{{0.1, 0.2, 0}, {0.7, 0.3, 0}}), 1);
+    EXPECT_EQ(facetTraceDegree(CellType::TETRA4, P{{0.1, 0.2, 0.1}, {0.7, 0.1, 0.2}, {0.1, 0.1, 0.6}}), 1);
+    EXPECT_EQ(facetTraceDegree(CellType::QUAD4, P{{-1, 0.2, 0}, {1, 0.2, 0}}), 1);       // along eta = 0.2
+    EXPECT_EQ(facetTraceDegree(CellType::QUAD4, P{{-1, -1, 0}, {1, 1, 0}}), 2);          // slanted: xi eta
+    EXPECT_EQ(facetTraceDegree(CellType::QUAD4, P{{-1, 0.2, 0}, {1, 0.2 + 1e-12, 0}}), 1);  // round-off
+    EXPECT_EQ(facetTraceDegree(CellType::HEXA8, P{{0.3, -1, -1}, {0.3, 1, -1}, {0.3, 1, 1}}), 2);  // eta zeta
+    EXPECT_EQ(facetTraceDegree(CellType::HEXA8, P{{1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}), 3);
+    EXPECT_EQ(gaussOrderFor(2, 2), 1);  // SE2 FPG2, degree 3
+    EXPECT_EQ(gaussOrderFor(3, 2), 1);  // TR3 FPG3, degree 2
+    EXPECT_EQ(gaussOrderFor(3, 3), 3);  // TR3 FPG4, degree 3
+}
+
+TEST(ContactIntegration, RulesTooWeakForTheTracesAreCounted) {
+    // ssnv511 cut along grid lines: linear traces except on HEXA8 (bilinear on every facet).
+    const auto hexa = contacttest::scene(CellType::HEXA8, 5, ContactAlgorithm::Nitsche, false, {"NOEUD", 0});
+    for (const auto& s : hexa.terms->ruleShortfalls()) {
+        EXPECT_GT(s.facets, 0);
+        EXPECT_EQ(s.inexact, s.facets);
+        EXPECT_EQ(s.ruleDegree, 1);
+        EXPECT_EQ(s.traceDegree, 2);
+    }
+    const auto gauss = contacttest::scene(CellType::HEXA8, 5, ContactAlgorithm::Nitsche, false, {"GAUSS", 1});
+    for (const auto& s : gauss.terms->ruleShortfalls()) EXPECT_EQ(s.inexact, 0);
+    for (CellType type : {CellType::QUAD4, CellType::TRIA3, CellType::TETRA4}) {
+        const auto s = contacttest::scene(type, 5, ContactAlgorithm::Nitsche, false, {"NOEUD", 0});
+        for (const auto& r : s.terms->ruleShortfalls()) EXPECT_EQ(r.inexact, 0) << cellTypeName(type);
+    }
 }
 
 namespace {
@@ -278,4 +316,40 @@ TEST(ContactIntegration, SchemesWithoutATriangleRuleAreNotImplementedIn3D) {
     // The same schemes are defined on 2D segment facets.
     const auto r = runComm(definition(false, "INTEGRATION='SIMPSON', ORDRE_INT=2"), kMesh2d);
     EXPECT_EQ(r.status, 0) << r.output;
+}
+
+namespace {
+
+// contact_compression_3d.comm (exact uniform compression, TEST_TABLEs of the errors to 1e-8 / 1e-10)
+// with `zone` added to every ZONE.
+std::string compression3d(const std::string& zone) {
+    std::ifstream in(std::string(MINIASTER_SOURCE_DIR) + "/astest/contact_compression_3d.comm");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string comm = text.str();
+    const std::string key = "CONTACT_INIT='OUI')";
+    const auto at = comm.find(key);
+    EXPECT_NE(at, std::string::npos);
+    return comm.replace(at, key.size(), "CONTACT_INIT='OUI', " + zone + ")");
+}
+
+}  // namespace
+
+TEST(ContactIntegration, TheVertexRuleOnHexa8IsAnnouncedAndLosesTheExactAnswer) {
+    const std::string hexa = std::string("--mesh '") + MINIASTER_SOURCE_DIR + "/astest/contact_hexa8_n5.mmed'";
+    const auto r = runComm(compression3d("INTEGRATION='NOEUD'"), hexa);
+    EXPECT_EQ(r.status, 2) << r.output;  // the round-off TEST_TABLEs are NOOK
+    EXPECT_NE(r.output.find("<A> <CONTACT_INTEGRATION>"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("FISS"), std::string::npos);
+    EXPECT_NE(r.output.find("INTEGRATION='GAUSS' with ORDRE_INT=1 or more integrates them exactly"), std::string::npos);
+    EXPECT_NE(r.output.find("NOOK"), std::string::npos);
+    // GAUSS 1 (TR3 FPG3, degree 2) integrates the bilinear traces: exact, no alarm.
+    const auto g = runComm(compression3d("INTEGRATION='GAUSS', ORDRE_INT=1"), hexa);
+    EXPECT_EQ(g.status, 0) << g.output;
+    EXPECT_EQ(g.output.find("CONTACT_INTEGRATION"), std::string::npos);
+    // TETRA4: linear traces, the vertex rule is exact and silent.
+    const std::string tetra = std::string("--mesh '") + MINIASTER_SOURCE_DIR + "/astest/contact_tetra4_n5.mmed'";
+    const auto t = runComm(compression3d("INTEGRATION='NOEUD'"), tetra);
+    EXPECT_EQ(t.status, 0) << t.output;
+    EXPECT_EQ(t.output.find("CONTACT_INTEGRATION"), std::string::npos);
 }
