@@ -168,6 +168,20 @@ TEST(ContactIntegration, NodalPointsAtTheJunctionUseTheirOwnFacet) {
     EXPECT_EQ(atJunction, 4);
 }
 
+TEST(ContactIntegration, NodalPenaltyPointsEachCarryTheirPressure) {
+    // PENALISATION with INTEGRATION='NOEUD': two points per segment facet, each with its own pressure
+    // unknown, also where two facets share a vertex (two independent equations lambda = kappa g there).
+    const auto s = contacttest::scene(CellType::QUAD4, 5, ContactAlgorithm::Penalty, false, {"NOEUD", 0});
+    const int facets = int(s.terms->facets().size());
+    EXPECT_EQ(int(s.terms->points().size()), 2 * facets);
+    EXPECT_EQ(s.terms->extraUnknowns(), 2 * facets);
+    std::vector<int> multipliers;
+    for (const auto& cp : s.terms->points()) multipliers.push_back(cp.multiplier);
+    std::sort(multipliers.begin(), multipliers.end());
+    EXPECT_EQ(std::adjacent_find(multipliers.begin(), multipliers.end()), multipliers.end());
+    EXPECT_GE(multipliers.front(), s.problem->numbering().size());
+}
+
 TEST(ContactIntegration, TraceDegreeOfTheParentShapeFunctions) {
     using P = std::vector<Vec>;
     EXPECT_EQ(facetTraceDegree(CellType::TRIA3, P{{0.1, 0.2, 0}, {0.7, 0.3, 0}}), 1);
