@@ -44,14 +44,16 @@ struct ContactPoint {
     double scale = 1.0;
 };
 
-// Facets of a zone whose rule integrates the traces of their parents' shape functions only
-// approximately (rule degree < facetTraceDegree): there the exact solution of a uniform stress per
-// block is no longer a solution of the discrete equations.
+// Facets of a zone whose rule would integrate the traces of their parents' shape functions only
+// approximately (rule degree < facetTraceDegree: the exact solution of a uniform stress per block
+// would no longer solve the discrete equations); those facets are integrated with the lowest Gauss
+// rule exact for their traces instead (docs/contact.md).
 struct RuleShortfall {
     int facets = 0;       // facets of the zone
-    int inexact = 0;      // of which the rule is too weak for
+    int replaced = 0;     // of which the zone's rule is too weak for: integrated with a Gauss rule instead
     int ruleDegree = 0;
-    int traceDegree = 0;  // largest trace degree among them
+    int traceDegree = 0;       // largest trace degree among them
+    int replacementOrder = 0;  // largest ORDRE_INT of INTEGRATION='GAUSS' used instead
 };
 
 struct StatusReport {

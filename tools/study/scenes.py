@@ -212,10 +212,9 @@ def compression_comm(element, algo="STANDARD", coef=None, E=100.0e6, NU=0.3, sol
     Scaling: lengths by `size`, pressures by `pressure` (keep pressure/E fixed to keep the strains)."""
     modelisation, dim = ELEMENTS[element]
     zone = f"ALGO_CONT='{algo}'" + (f", COEF_PENA_CONT={coef!r}" if algo == "PENALISATION" else "")
-    # The vertex rule of ssnv511e-h (INTEGRATION='NOEUD') misses HEXA8's bilinear facet traces and
-    # costs the exact answer there (~1e-3, alarm CONTACT_INTEGRATION, docs/contact.md), which would hide
-    # what the sweeps look for: HEXA8 keeps the default 'GAUSS' (ORDRE_INT=6), exact.
-    integration = "" if element == "hexa8" else "INTEGRATION='NOEUD', "
+    # INTEGRATION='NOEUD' as ssnv511e-h (on HEXA8 miniaster replaces the vertex rule by TR3 FPG3,
+    # exact for the bilinear facet traces, with alarm CONTACT_INTEGRATION: docs/contact.md).
+    integration = "INTEGRATION='NOEUD', "
     shift_coef = coef if (algo == "PENALISATION" and reference == "penalised") else None
     plane_stress = modelisation in ("C_PLAN", "3D")  # 3D slab: free top face
     a = 5.0 * size

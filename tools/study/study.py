@@ -516,7 +516,8 @@ def study_stability(ctx):
         md += ("\n## Uniform compression with contact (ssnv511e-h)\n\nScene: tools/study/scenes.py `compression_comm` "
                "(pressures p = 1e-2 E and 2p on the top and right sides by halves, rollers on the left and bottom "
                "sides, DEFI_CONTACT FORMULATION='XFEM' on the three interfaces, CONTACT_INIT='OUI', INTEGRATION='NOEUD' "
-               "except HEXA8 (default 'GAUSS': the vertex rule is not exact on HEXA8, docs/contact.md), STAT_NON_LINE "
+               "(on HEXA8 replaced by TR3 FPG3, exact for the bilinear facet traces: alarm CONTACT_INTEGRATION, "
+               "docs/contact.md), STAT_NON_LINE "
                "INFO=2 with code_aster's default RESI_GLOB_RELA = 1e-6; 3D: the one-layer slab z in [0, size], "
                "DZ = 0 on the bottom, free top). Exact answer: uniform stresses per block, closed interfaces. Error = "
                "max(L2 relative error of POST_ERREUR DEPL_RELA, energy-norm relative error of ENER_RELA). "
@@ -590,7 +591,7 @@ def study_penalty(ctx):
     md = ctx.header("Exact contact against the penalty (ssnv511e-h compression)")
     md += ("Scene: tools/study/scenes.py `compression_comm` (ssnv511e loading: pressures 1e6/2e6 on LH and LD, "
            "rollers on LG and LB, DEFI_CONTACT FORMULATION='XFEM' on the three interfaces, CONTACT_INIT='OUI', "
-           "INTEGRATION='NOEUD' except HEXA8: default 'GAUSS', the vertex rule is not exact there, docs/contact.md), "
+           "INTEGRATION='NOEUD': on HEXA8 replaced by TR3 FPG3, exact for the bilinear facet traces, docs/contact.md), "
            "STAT_NON_LINE; 3D (HEXA8, TETRA4, ssnv511g/h): the one-layer slab z in [0, 1] of tools/ssnv511_mesh, "
            "same loads on the faces x = 5 and y = 5, DZ = 0 on the bottom face, free top face. The exact answer "
            "has uniform stresses per block and closed interfaces. With "
