@@ -144,6 +144,21 @@ std::vector<std::array<Vec, 3>> triangleIntersection(const std::array<Vec, 3>& a
     return out;
 }
 
+// Part of the reference segment b on the reference segment a (2D: the two sides of an interface split
+// it at different points, one side cut by a branch at the junction, the other not); `negligible` is
+// the smallest reference length kept. On the line of a.
+std::vector<std::vector<Vec>> segmentIntersection(const std::array<Vec, 2>& a, const std::array<Vec, 2>& b,
+                                                  double negligible) {
+    const Vec e = sub(a[1], a[0]);
+    const double ee = dot(e, e);
+    if (!(ee > 0.0)) return {};
+    const double t0 = dot(sub(b[0], a[0]), e) / ee, t1 = dot(sub(b[1], a[0]), e) / ee;
+    const double lo = std::max(0.0, std::min(t0, t1)), hi = std::min(1.0, std::max(t0, t1));
+    if ((hi - lo) * std::sqrt(ee) <= negligible) return {};
+    auto at = [&](double t) { return Vec{a[0][0] + t * e[0], a[0][1] + t * e[1], a[0][2] + t * e[2]}; };
+    return {{at(lo), at(hi)}};
+}
+
 // Face key by physical coordinates (rounded), vertex order independent.
 std::vector<std::array<long long, 3>> coordinateKey(const std::vector<Vec>& pts, double tol) {
     std::vector<std::array<long long, 3>> key;
@@ -188,10 +203,12 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
         for (size_t a = 1; a < nodes.size(); ++a) lref = std::max(lref, norm(sub(mesh.coords[nodes[a]], mesh.coords[nodes[0]])));
     }
     const double keyTol = 1e-9 * std::max(lref, 1e-300);
-    // A cut point is on interface j when its level set is zero up to what CellCut's point merging
-    // (1e-9 of an edge) leaves: at a junction the junction point, found on two edges, can be
-    // merged with a point 1e-10 h off the interface (seen with interfaces 1e-5 h from node rows),
-    // and an exact-zero test then drops every facet ending there.
+    // A cut point is on interface j when its level set is zero up to what CellCut's merging (1e-9
+    // of an edge) leaves: a zero that close to an end of its edge, or to another crack's point on
+    // it, is that point, whose level set is not 0. (When CellCut still merged points of different
+    // edges, the junction point ended 1e-10 h off FISS1 with interfaces 1e-5 h from node rows and an
+    // exact-zero test dropped every facet ending there; with exact cut points 1e-8 h and round-off
+    // give the same facets, measured on the stability sweep's offsets.)
     const double onTol = 1e-8 * std::max(lref, 1e-300);
     auto onCrack = [&](const xfem::CutPoint& point, size_t j) { return std::abs(point.lsn[j]) <= onTol; };
 
@@ -301,9 +318,9 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
         }
     }
     // A face on an interface with no partner: on the boundary of the model (legitimately free), or
-    // inside its cell where no sub-cell of the other side shares it: in 3D the cut drops the other
-    // side's sliver pieces (flat sub-tetrahedra in the interface plane) as degenerate, and the two
-    // sides triangulate that flat region differently, or it drops a corner of the other side whole.
+    // inside its cell where no sub-cell of the other side shares it: the two sides split that part of
+    // the interface differently (a branch joined to it cuts its own side at the junction, the other
+    // side stays whole where no branch cuts it), or the cut dropped a piece flat to round-off there.
     // Those faces are paired below (clipping, block across); faces on a parent face without partner
     // are on the boundary of the model or of the enriched zone.
     std::map<std::pair<int, int>, std::array<std::vector<FaceOnCrack>, 2>> loose;  // (cell, crack) -> -, + faces
@@ -356,16 +373,17 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
     }
     // Faces inside their cell without partner: each - face is paired with each + face of the same
     // cell and interface over their intersection, computed in the parent's reference coordinates
-    // where the sub-cells are flat (2D has none: segments are never triangulated differently).
+    // where the sub-cells are flat (2D: a branch joined to the interface splits the face of its side
+    // at the junction point, the other side's face stays whole when no branch cuts it there).
     // A face no clipped piece touches is paired with the block across it (blockAcross); what stays
     // uncovered has no contact term: counted (alarm CONTACT_SLIVER in ContactLoop). Faces only within onTol of the interface are not counted: a
     // sub-cell face 1e-8 h from the interface (interfaces 1e-4 h from node rows) is no interface face.
     // Intersections below 1e-14 of the reference cell's face scale are round-off (triangles touching
     // along an edge).
     constexpr double kNegligibleReferenceArea = 1e-14;
-    // A face no face of the other side touches: the cut dropped the other side's piece whole (a
-    // corner of relative measure ~eps^3 at a node eps h from the interface, or a sliver next to the
-    // junction). The facet is the face itself, its other side the block just across it: Heaviside
+    // A face no face of the other side touches (a sliver face whose overlaps are all below the
+    // negligible measure, or a flat piece of the other side dropped by the cut). The facet is the
+    // face itself, its other side the block just across it: Heaviside
     // digit of the face's interface flipped, the other interfaces' digits of the face's side of them
     // (or 0, the forbidden side of a branch). That block is looked for among the sub-cells of the
     // face's cell, then of the X-FEM cells around its nodes (the block's field there is a polynomial
@@ -467,7 +485,7 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
         const auto xyz = physicalPoints(mesh, *cut);
         std::array<std::vector<double>, 2> covered{std::vector<double>(sides[0].size(), 0.0),
                                                    std::vector<double>(sides[1].size(), 0.0)};
-        if (dim == 3 && !sides[0].empty() && !sides[1].empty()) {
+        if (!sides[0].empty() && !sides[1].empty()) {
             const auto blocks = blockMeasures(dim, xyz, *cut);
             const int j = sides[0].front().local;
             // Points of a face on another interface of the cell: its vertices there, and the edges
@@ -493,13 +511,19 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
                 for (size_t b = 0; b < sides[1].size(); ++b) {
                     const FaceOnCrack& fm = sides[0][a];
                     const FaceOnCrack& fp = sides[1][b];
-                    auto triangle = [&](const FaceOnCrack& f) {
-                        return std::array<Vec, 3>{cut->points[f.points[0]].ref, cut->points[f.points[1]].ref,
-                                                  cut->points[f.points[2]].ref};
-                    };
+                    auto vertex = [&](const FaceOnCrack& f, int v) { return cut->points[f.points[v]].ref; };
+                    std::vector<std::vector<Vec>> pieces;
+                    if (dim == 2) {
+                        pieces = segmentIntersection({vertex(fm, 0), vertex(fm, 1)}, {vertex(fp, 0), vertex(fp, 1)},
+                                                     kNegligibleReferenceArea);
+                    } else {
+                        for (const auto& t : triangleIntersection({vertex(fm, 0), vertex(fm, 1), vertex(fm, 2)},
+                                                                  {vertex(fp, 0), vertex(fp, 1), vertex(fp, 2)}, kNegligibleReferenceArea))
+                            pieces.emplace_back(t.begin(), t.end());
+                    }
                     const Vec towardsPlus = sub(centroid(xyz, cut->subcells[fp.subcell]), centroid(xyz, cut->subcells[fm.subcell]));
-                    for (const auto& piece : triangleIntersection(triangle(fm), triangle(fp), kNegligibleReferenceArea)) {
-                        const std::vector<Vec> ref(piece.begin(), piece.end());
+                    for (const auto& piece : pieces) {
+                        const std::vector<Vec>& ref = piece;
                         std::vector<Vec> verts;
                         for (const auto& r : ref) verts.push_back(mapToPhysical(cut->type, nodeXyz, r));
                         ContactFacet f;
@@ -525,15 +549,16 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
                 for (int p : f.points) verts.push_back(xyz[p]);
                 ContactFacet probe;
                 if (!finishFacet(probe, verts, Vec{1.0, 0.0, 0.0})) continue;
-                if (dim == 3 && covered[side][a] == 0.0 && blockAcross(f, crack, side == 1)) continue;
+                if (covered[side][a] == 0.0 && blockAcross(f, crack, side == 1)) continue;
                 // Left uncovered, up to round-off and to what the clipping neglects (its threshold in
                 // physical measure: the face's physical / reference measure ratio).
                 double negligible = 1e-9 * probe.measure;
-                if (dim == 3 && covered[side][a] > 0.0) {
+                if (covered[side][a] > 0.0) {
                     const auto& r = cut->points;
-                    const double refArea =
-                        0.5 * norm(cross(sub(r[f.points[1]].ref, r[f.points[0]].ref), sub(r[f.points[2]].ref, r[f.points[0]].ref)));
-                    if (refArea > 0.0) negligible = std::max(negligible, kNegligibleReferenceArea * probe.measure / refArea);
+                    const Vec e1 = sub(r[f.points[1]].ref, r[f.points[0]].ref);
+                    const double refMeasure =
+                        dim == 2 ? norm(e1) : 0.5 * norm(cross(e1, sub(r[f.points[2]].ref, r[f.points[0]].ref)));
+                    if (refMeasure > 0.0) negligible = std::max(negligible, kNegligibleReferenceArea * probe.measure / refMeasure);
                 }
                 const double left = probe.measure - covered[side][a];
                 if (left <= negligible) continue;

@@ -45,10 +45,10 @@ std::shared_ptr<ContactTerms> attachContact(MechanicalProblem& problem, const Ma
                 "faces in a cell differ, {} facing a piece the cut dropped)",
                 stats.facets, stats.atJunction, stats.acrossParentFaces, stats.clipped, stats.acrossDropped);
     // Interface faces that no face of the other side covers, even after ContactFacets' clipping and
-    // block-across pairing (in 3D with interfaces 1e-3 ... 1e-6 h from node planes the cut drops the
-    // other side's pieces of relative measure < 1e-14 as degenerate; those pairings cover every face
-    // measured). No contact term is written on what stays and the weak form misses that piece of
-    // interface: before the pairing the study (docs/study/stability.md) measured relative errors of 1 to
+    // block-across pairing (the two sides split the interface differently at a branch joined to it,
+    // or the cut dropped a flat piece there; those pairings cover every face measured). No contact
+    // term is written on what stays and the weak form misses that piece of interface: when the cut
+    // still dropped real slivers the study (docs/study/stability.md) measured relative errors of 1 to
     // 100 times the missing fraction of the interface, hence the alarm from a fraction of 1e-11 on.
     double smallest = 1.0;
     for (const auto& f : facets)
@@ -64,9 +64,10 @@ std::shared_ptr<ContactTerms> attachContact(MechanicalProblem& problem, const Ma
     if (missing > kMissingFraction)
         msg().alarm("CONTACT_SLIVER",
                     fmt::format("{} sub-cell face(s) on the contact interfaces ({} {:.3e}, {:.1e} of the interfaces) "
-                                "have no sub-cell of the other side: the interfaces cut cells within a tiny distance "
-                                "of their nodes (slivers next to a junction) and the cut of the other side dropped "
-                                "those pieces as degenerate. No contact term is written there, so the answer can lose "
+                                "have no sub-cell of the other side: the two sides of the interface are cut differently "
+                                "there (next to a junction, or where the interfaces pass within round-off of the "
+                                "nodes) and no overlap of their faces was found. No contact term is written there, "
+                                "so the answer can lose "
                                 "precision (relative errors of 1 to 100 times that fraction measured, "
                                 "docs/study/stability.md). Moving the interfaces or the mesh by a fraction of a cell "
                                 "avoids it.",

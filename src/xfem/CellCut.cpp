@@ -15,11 +15,22 @@ namespace {
 
 // code_aster sets the level set of a new point to 0 when |LSN| < 1e-4 L_ref (xdecou); that moves
 // the discrete interface by up to 1e-4 h near junctions and nodes, which the rigid-block answer of
-// ssnv511 cannot afford. miniaster only removes round-off (docs/xfem.md).
-constexpr double kPointSnap = 1e-12;
-constexpr double kMergeDistance = 1e-9;       // points closer than 1e-9 edge length merge (xajpin)
+// ssnv511 cannot afford. miniaster only removes round-off of the interpolation (docs/xfem.md): a
+// point eps^2 h off an interface (interfaces eps h from node rows next to a junction) is not on it.
+constexpr double kPointSnap = 1e-14;
+constexpr double kMergeDistance = 1e-9;       // a zero this close (edge length) to a point of its edge merges
 constexpr double kVertexOnInterface = 1e-9;   // zero closer than this (relative) to a vertex
-constexpr double kDegenerateMeasure = 1e-14;  // relative measure under which a piece is dropped
+// Round-off of reference coordinates (magnitude <= 1), with a margin: the determinant of a piece
+// whose measure is below it times its cofactors is numerically zero.
+constexpr double kMeasureRoundOff = 16 * 2.2e-16;
+
+std::array<double, 3> difference(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+double length(const std::array<double, 3>& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+std::array<double, 3> cross(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
 
 double distance(const std::array<double, 3>& a, const std::array<double, 3>& b) {
     return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
@@ -91,24 +102,34 @@ public:
             }
         }
         const auto ref = at(t);
-        const double tolerance = kMergeDistance * distance(rp, rq);
+        // Merged only with the ends of the segment or a point an earlier crack put on the same
+        // segment (a sub-cell its cut did not reach, e.g. the forbidden side of a branch): a point
+        // of another edge, even 1e-10 h away, is elsewhere. Taking it moved a zero off its edge
+        // (holes of 1e-10 of the cell where the neighbour across the edge kept it) or put the
+        // junction point eps^2 h off the master interface (kinked by 1e-5 rad next to the junction):
+        // energy errors up to 5e-9 with interfaces 1e-5 ... 3e-5 h from node rows (docs/xfem.md).
+        std::vector<int> candidates{p, q};
+        if (auto it = onSegment_.find(key); it != onSegment_.end())
+            candidates.insert(candidates.end(), it->second.begin(), it->second.end());
+        double nearest = kMergeDistance * distance(rp, rq);
         int id = -1;
-        for (size_t i = 0; i < cut_.points.size(); ++i)
-            if (distance(cut_.points[i].ref, ref) <= tolerance) {
-                id = static_cast<int>(i);
-                break;
-            }
+        for (int i : candidates)
+            if (const double d = distance(cut_.points[i].ref, ref); d <= nearest) nearest = d, id = i;
         if (id < 0) {
             CutPoint point;
             point.ref = ref;
             point.lsn.resize(cut_.lsnCracks.size());
             for (size_t j = 0; j < cut_.lsnCracks.size(); ++j) {
+                // A segment lying on interface j (both ends on it) keeps its points on it: the
+                // junction point is on the master exactly, not where the interpolation rounds.
+                if (cut_.points[p].lsn[j] == 0.0 && cut_.points[q].lsn[j] == 0.0) continue;
                 const double v = interpolate(static_cast<int>(j), ref);
                 point.lsn[j] = std::abs(v) < kPointSnap * lref_ ? 0.0 : v;
             }
             point.lsn[k] = 0.0;
             id = static_cast<int>(cut_.points.size());
             cut_.points.push_back(std::move(point));
+            onSegment_[key].push_back(id);
         }
         edgePoints_[key] = id;
         return id;
@@ -157,7 +178,7 @@ public:
             for (auto& piece : pieces) {
                 SubCell out = sub;
                 orient(piece);
-                if (std::abs(measure(piece)) <= kDegenerateMeasure * primaryMeasure_) {
+                if (flat(piece)) {
                     ++cut_.droppedDegenerate;
                     continue;
                 }
@@ -196,8 +217,6 @@ public:
         cut_.subcells.insert(cut_.subcells.end(), appended.begin(), appended.end());
     }
 
-    void setPrimaryMeasure(double m) { primaryMeasure_ = m; }
-
     double measure(const Piece& piece) const {
         std::array<std::array<double, 3>, 4> v{};
         for (size_t i = 0; i < piece.size(); ++i) v[i] = cut_.points[piece[i]].ref;
@@ -206,6 +225,25 @@ public:
     }
 
 private:
+    // Whether a piece is degenerate: its measure is round-off for its own edges (repeated or
+    // aligned vertices). A threshold relative to the parent (formerly 1e-14 of it) also dropped
+    // real slivers, eps^2 h wide next to a junction, and the block of eps^2 of the cell they belong
+    // to then lost a relative part of its volume: its stress was off by that much (1e-5 at
+    // eps = 1e-5 h). The bound is the first-order error of the determinant: round-off of the
+    // coordinates times the cofactors (edge lengths in 2D, edge cross products in 3D).
+    bool flat(const Piece& piece) const {
+        std::array<std::array<double, 3>, 3> e{};
+        for (size_t a = 1; a < piece.size(); ++a) e[a - 1] = difference(cut_.points[piece[a]].ref, cut_.points[piece[0]].ref);
+        double det = 0.0, cofactors = 1.0;
+        if (cut_.dim == 1) det = length(e[0]);
+        if (cut_.dim == 2) det = 2.0 * std::abs(measure(piece)), cofactors = length(e[0]) + length(e[1]);
+        if (cut_.dim == 3) {
+            det = 6.0 * std::abs(measure(piece));
+            cofactors = length(cross(e[0], e[1])) + length(cross(e[1], e[2])) + length(cross(e[0], e[2]));
+        }
+        return det <= kMeasureRoundOff * cofactors;
+    }
+
     void orient(Piece& piece) const {
         if (measure(piece) < 0) std::swap(piece[0], piece[1]);
     }
@@ -319,8 +357,8 @@ private:
     std::span<const int> nodes_;
     bool simplexParent_ = true;
     double lref_ = 1.0;
-    double primaryMeasure_ = 1.0;
-    std::map<std::pair<int, int>, int> edgePoints_;
+    std::map<std::pair<int, int>, int> edgePoints_;                // zero of the current crack per segment
+    std::map<std::pair<int, int>, std::vector<int>> onSegment_;   // points created on a segment, any crack
 };
 
 }  // namespace
@@ -362,10 +400,6 @@ CellCut cutCell(const Mesh& mesh, int cell, const std::vector<const Crack*>& loc
         cut.subcells.push_back(std::move(sub));
     }
     Cutter cutter(mesh, cut);
-    {
-        std::vector<int> first(cut.subcells[0].vertices.begin(), cut.subcells[0].vertices.begin() + cut.vertexCount());
-        cutter.setPrimaryMeasure(std::abs(cutter.measure(first)));
-    }
     for (size_t j = 0; j < local.size(); ++j) cutter.cutBy(static_cast<int>(j), outsideSign);
     return cut;
 }
