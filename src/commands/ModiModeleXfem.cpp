@@ -26,7 +26,7 @@ void logSubcellQuadrature(const xfem::XfemModel& xm) {
     // (skin, several interfaces) -> usage; the dimension is the model's for volume cells
     std::map<std::pair<bool, bool>, Usage> usage;
     std::map<std::pair<bool, bool>, xfem::SubcellKind> kinds;
-    int points = 0, volumePoints = 0, subcells = 0;
+    int points = 0, volumePoints = 0, subcells = 0, volumeCells = 0;
     std::map<CellType, int> belowStrainDegree;  // parent type -> volume X-FEM cells
     for (int c : xm.xfemCells()) {
         const auto kind = xm.subcellKind(c);
@@ -41,7 +41,10 @@ void logSubcellQuadrature(const xfem::XfemModel& xm) {
         u.points += p;
         subcells += n;
         points += p;
-        if (!kind.skin) volumePoints += p;
+        if (!kind.skin) {
+            volumePoints += p;
+            ++volumeCells;
+        }
     }
     const int degree = xm.subcellDegree();
     if (degree == 0)
@@ -65,8 +68,9 @@ void logSubcellQuadrature(const xfem::XfemModel& xm) {
                                         : "override of the catalogue's " + catalogue,
                     u.subcells, u.points);
     }
-    msg().infof("    sub-cell integration points: {} (volume {}, skin {}) on {} sub-cells", points, volumePoints,
-                points - volumePoints, subcells);
+    msg().infof("    sub-cell integration points: {} (volume {} in {} elements, skin {} in {}) on {} sub-cells", points,
+                volumePoints, volumeCells, points - volumePoints, static_cast<int>(xm.xfemCells().size()) - volumeCells,
+                subcells);
     for (const auto& [parent, cells] : belowStrainDegree)
         msg().alarm("XFEM_SUBCELL_RULE",
                     fmt::format("--subcell-quadrature {}: the strains of the {} shape functions are polynomials of "
