@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """miniaster speed/accuracy study (issue 8). Run through the launcher:
 
-    ./miniaster study smooth      [--full]   convergence of the smooth manufactured scene
+    ./miniaster study smooth      [--full]   convergence of the smooth manufactured scene, sub-cell quadrature
+                                             rules (--group quadrature: `miniaster run --subcell-quadrature`)
     ./miniaster study stability   [--full]   extreme inputs on the ssnv511a rigid scene
     ./miniaster study penalty     [--full]   exact contact vs penalty (COEF_PENA_CONT 1e4..1e20), ssnv511e-h (2D and 3D)
     ./miniaster study perf        [--full]   set-up/assembly vs factorisation on ssnv511a (N=1001 with --full),
@@ -11,7 +12,8 @@
     ./miniaster study astest                 regenerates astest/smooth_*.{comm,export,mmed}
 
 Options: --out DIR (tables and plots, default docs/study), --work DIR (runs, default a temporary
-folder), --build DIR (miniaster build, default build/), --elements quad4,tria3,..., --timeout S.
+folder), --build DIR (miniaster build, default build/), --elements quad4,tria3,..., --contact
+all|open|only, --group all|convergence|quadrature (smooth), --timeout S.
 Results: DIR/<study>.csv, DIR/<study>.md and DIR/<study>_*.png; the Markdown file names the
 command that made it. See docs/study.md.
 """
