@@ -21,6 +21,9 @@ struct CommandContext {
     int line = 0;            // .comm line of the call
     Units* units = nullptr;  // logical units of the run (.export F lines)
     int info = 1;            // INFO keyword when present, else 1
+    // Expert run option `--subcell-quadrature` (not a .comm keyword): 0 = the catalogue's X-FEM
+    // sub-cell rules, 1..6 = the polynomial degree of the volume sub-cell rules (MODI_MODELE_XFEM).
+    int subcellDegree = 0;
 };
 
 using CommandFunction = std::function<ConceptPtr(const KeywordSet&, CommandContext&)>;

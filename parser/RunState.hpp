@@ -29,6 +29,7 @@ public:
     std::string commFile;      // path of the command file
     std::string commBaseName;  // for messages: "ssnv511a.comm"
     bool checkOnly = false;    // --check-syntax: validate every call, execute none
+    int subcellDegree = 0;     // --subcell-quadrature: 0 catalogue, else the degree (CommandContext)
     bool debutSeen = false;
     bool finSeen = false;
     bool missingDebutReported = false;

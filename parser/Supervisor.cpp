@@ -23,11 +23,18 @@ namespace ma {
 namespace {
 
 const char* kUsage =
-    "usage: miniaster run CASE.export [--out-dir DIR] [--check-syntax]\n"
-    "       miniaster run CASE.comm [--mesh MESH.med] [--out-dir DIR] [--check-syntax]\n"
+    "usage: miniaster run CASE.export [--out-dir DIR] [--check-syntax] [--subcell-quadrature RULE]\n"
+    "       miniaster run CASE.comm [--mesh MESH.med] [--out-dir DIR] [--check-syntax] [--subcell-quadrature RULE]\n"
     "Runs a code_aster command file. Writes <case>.mess (message log) and <case>.resu (TEST lines,\n"
     "tables) in DIR (default: the current folder). --check-syntax validates every command call\n"
-    "against the catalog without executing any. Exit status: 0 OK, 2 a TEST is NOOK, 1 error.\n";
+    "against the catalog without executing any. --subcell-quadrature (expert option, not a code_aster\n"
+    "keyword): RULE = catalogue (default: the X-FEM sub-cell rules of code_aster's element catalogues)\n"
+    "or a degree 1..6 (every volume sub-cell uses the lowest rule exact for that polynomial degree).\n"
+    "Exit status: 0 OK, 2 a TEST is NOOK, 1 error.\n";
+
+// Highest degree of --subcell-quadrature: xfem::kMaxSubcellDegree (src/xfem/SubcellQuadrature.hpp,
+// not linked into the supervisor; the unit tests check that both agree).
+constexpr int kMaxSubcellDegree = 6;
 
 struct Options {
     std::string input;
@@ -35,6 +42,7 @@ struct Options {
     bool outDirGiven = false;
     std::string mesh;
     bool checkOnly = false;
+    int subcellDegree = 0;  // --subcell-quadrature: 0 catalogue
 };
 
 // Bad command line or .export: reported before the command file starts.
@@ -220,6 +228,17 @@ Options parseArguments(int argc, char** argv) {
             opt.mesh = value();
         } else if (a == "--check-syntax") {
             opt.checkOnly = true;
+        } else if (a == "--subcell-quadrature") {
+            const std::string rule = value();
+            if (rule == "catalogue") {
+                opt.subcellDegree = 0;
+            } else if (rule.size() == 1 && rule[0] >= '1' && rule[0] <= '0' + kMaxSubcellDegree) {
+                opt.subcellDegree = rule[0] - '0';
+            } else {
+                throw SetupError(fmt::format("--subcell-quadrature: '{}' is not a rule (catalogue, or a polynomial "
+                                             "degree 1..{})",
+                                             rule, kMaxSubcellDegree));
+            }
         } else if (!a.empty() && a[0] == '-') {
             throw SetupError("unknown option " + a);
         } else if (opt.input.empty()) {
@@ -250,6 +269,7 @@ int supervisorMain(int argc, char** argv) {
 
     RunState& run = RunState::current();
     run.checkOnly = opt.checkOnly;
+    run.subcellDegree = opt.subcellDegree;
     const bool isExport = fs::path(opt.input).extension() == ".export";
     const std::string caseName = fs::path(opt.input).stem().string();
     std::error_code ec;
@@ -279,8 +299,12 @@ int supervisorMain(int argc, char** argv) {
 
     if (!run.failure) {
         run.commBaseName = fs::path(run.commFile).filename().string();
-        msg().infof("  command file: {}\n  message log : {}\n  result file : {}{}", run.commFile, outputs.mess,
-                    outputs.resu, opt.checkOnly ? "\n  mode        : syntax check only (--check-syntax)" : "");
+        msg().infof("  command file: {}\n  message log : {}\n  result file : {}{}{}", run.commFile, outputs.mess,
+                    outputs.resu, opt.checkOnly ? "\n  mode        : syntax check only (--check-syntax)" : "",
+                    opt.subcellDegree ? fmt::format("\n  X-FEM       : --subcell-quadrature {} (volume sub-cells "
+                                                    "integrated to degree {}, not code_aster's catalogue rules)",
+                                                    opt.subcellDegree, opt.subcellDegree)
+                                      : "");
         // The interpreter lives until the process ends: concepts may hold Python objects (FORMULE).
         py::initialize_interpreter();
         installCrashHandler(outputs.mess);  // after Python, which installs its own handlers

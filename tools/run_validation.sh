@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Runs one .export with the miniaster binary and checks the exit status against the
 # `P expected_diag` line of the .export (default: OK, i.e. exit 0; NOOK_TEST_RESU: exit 2).
-# Usage: run_validation.sh BINARY CASE.export OUTDIR [--allow-nonregression-nook]
+# Usage: run_validation.sh BINARY CASE.export OUTDIR [--allow-nonregression-nook] [-- RUN OPTIONS...]
+#
+# RUN OPTIONS are passed to `miniaster run` (e.g. `-- --subcell-quadrature 1`).
 #
 # --allow-nonregression-nook: for code_aster originals whose NON_REGRESSION values (VALE_CALC) are
 # code_aster's own inexact numbers (ssnv511e-h: miniaster is exact where code_aster is not), exit 2
@@ -9,12 +11,15 @@
 # and at least one reference check; every other outcome is judged as without the option.
 set -u
 bin=$1 export_file=$2 out=$3
+shift 3
 allow_nonreg=0
-if [ "${4:-}" = "--allow-nonregression-nook" ]; then allow_nonreg=1; fi
+if [ "${1:-}" = "--allow-nonregression-nook" ]; then allow_nonreg=1; shift; fi
+if [ "${1:-}" = "--" ]; then shift; fi
+run_options=("$@")
 rm -rf "$out" && mkdir -p "$out"
 expected=0
 if grep -Eq '^P +expected_diag +NOOK_TEST_RESU' "$export_file"; then expected=2; fi
-"$bin" run "$export_file" --out-dir "$out" > "$out/stdout.txt" 2>&1
+"$bin" run "$export_file" --out-dir "$out" "${run_options[@]}" > "$out/stdout.txt" 2>&1
 rc=$?
 tail -n 30 "$out/stdout.txt"
 if [ "$rc" -eq 2 ] && [ "$expected" -eq 0 ] && [ "$allow_nonreg" -eq 1 ]; then

@@ -8,6 +8,7 @@
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "fe/MechanicalLoad.hpp"
+#include "fe/Quadrature.hpp"
 #include "fe/Model.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "xfem/XfemDirichlet.hpp"
@@ -15,6 +16,71 @@
 
 namespace ma {
 namespace {
+
+// Which rule each kind of sub-cell uses, and whether it is the catalogue's or the run option's, so
+// that a .mess always tells how the X-FEM elements were integrated.
+void logSubcellQuadrature(const xfem::XfemModel& xm) {
+    struct Usage {
+        int subcells = 0, points = 0;
+    };
+    // (skin, several interfaces) -> usage; the dimension is the model's for volume cells
+    std::map<std::pair<bool, bool>, Usage> usage;
+    std::map<std::pair<bool, bool>, xfem::SubcellKind> kinds;
+    int points = 0, volumePoints = 0, subcells = 0, volumeCells = 0;
+    std::map<CellType, int> belowStrainDegree;  // parent type -> volume X-FEM cells
+    for (int c : xm.xfemCells()) {
+        const auto kind = xm.subcellKind(c);
+        const CellType parent = xm.cut(c)->type;
+        if (!kind.skin && xm.subcellDegree() > 0 && xm.subcellDegree() < xfem::strainDegree(parent))
+            ++belowStrainDegree[parent];
+        const int n = static_cast<int>(xm.cut(c)->subcells.size());
+        const int p = n * quadratureRule(xfem::subcellType(kind), xm.subcellRule(c)).size();
+        auto& u = usage[{kind.skin, kind.severalCracks}];
+        kinds[{kind.skin, kind.severalCracks}] = kind;
+        u.subcells += n;
+        u.points += p;
+        subcells += n;
+        points += p;
+        if (!kind.skin) {
+            volumePoints += p;
+            ++volumeCells;
+        }
+    }
+    const int degree = xm.subcellDegree();
+    if (degree == 0)
+        msg().info("    sub-cell quadrature: catalogue (the rules of code_aster's X-FEM element catalogues)");
+    else
+        msg().infof("    sub-cell quadrature: degree {} (--subcell-quadrature {}, a miniaster run option, not a "
+                    "code_aster keyword): volume sub-cells use the lowest rule exact to degree {}; skin sub-cells "
+                    "keep the catalogue's rules",
+                    degree, degree, degree);
+    for (const auto& [key, u] : usage) {
+        const auto& kind = kinds.at(key);
+        const std::string used = xfem::subcellRule(kind, degree);
+        const std::string catalogue = xfem::catalogueSubcellRule(kind);
+        const CellType type = xfem::subcellType(kind);
+        msg().infof("      {} sub-cells, {}: {} {} (degree {}, {}), {} sub-cells, {} points",
+                    kind.skin ? "skin" : "volume", kind.severalCracks ? "several interfaces" : "one interface",
+                    cellTypeName(type), used, quadratureRule(type, used).degree,
+                    degree == 0         ? std::string("catalogue")
+                    : kind.skin         ? std::string("catalogue, not overridden")
+                    : used == catalogue ? "override, the same as the catalogue's " + catalogue
+                                        : "override of the catalogue's " + catalogue,
+                    u.subcells, u.points);
+    }
+    msg().infof("    sub-cell integration points: {} (volume {} in {} elements, skin {} in {}) on {} sub-cells", points,
+                volumePoints, volumeCells, points - volumePoints, static_cast<int>(xm.xfemCells().size()) - volumeCells,
+                subcells);
+    for (const auto& [parent, cells] : belowStrainDegree)
+        msg().alarm("XFEM_SUBCELL_RULE",
+                    fmt::format("--subcell-quadrature {}: the strains of the {} shape functions are polynomials of "
+                                "degree {} on the sub-cells, which the rule {} does not integrate exactly: uniform "
+                                "stress states are no longer reproduced on the {} X-FEM {} elements (the patch test "
+                                "fails, the answer carries a quadrature error). Use a degree >= {}.",
+                                degree, cellTypeName(parent), xfem::strainDegree(parent),
+                                xfem::lowestRuleOfDegree(xfem::subcellType({xm.dim(), false, false}), degree), cells,
+                                cellTypeName(parent), xfem::strainDegree(parent)));
+}
 
 ConceptPtr modiModeleXfem(const KeywordSet& kw, CommandContext& ctx) {
     auto in = kw.object<Model>("MODELE_IN");
@@ -37,7 +103,7 @@ ConceptPtr modiModeleXfem(const KeywordSet& kw, CommandContext& ctx) {
     const double criterion = kw.text("PRETRAITEMENTS", "AUTO") == "SANS" ? 1e-4 : 1e-15;
 
     auto out = std::make_shared<Model>(*in);
-    auto xm = std::make_shared<xfem::XfemModel>(*out, cracks, mode, criterion);
+    auto xm = std::make_shared<xfem::XfemModel>(*out, cracks, mode, criterion, ctx.subcellDegree);
     out->enrichment = xm;
 
     std::map<std::pair<int, int>, int> types;  // (cracks seen, slots) -> elements
@@ -62,7 +128,7 @@ ConceptPtr modiModeleXfem(const KeywordSet& kw, CommandContext& ctx) {
     msg().infof("    conditioning: smallest retained enrichment support fraction {:.6e} (criterion {:.1e}), {} "
                 "enrichment(s) dropped",
                 xm->smallestRetainedFraction(), std::pow(criterion, xm->dim()), xm->droppedSlots());
-    (void)ctx;
+    logSubcellQuadrature(*xm);
     return out;
 }
 

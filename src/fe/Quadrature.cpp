@@ -167,6 +167,19 @@ void tetraOrbit6(QuadratureRule& r, double a, double w) {
         r.points.push_back(p);
     r.weights.insert(r.weights.end(), 6, w);
 }
+// The 12 distinct permutations of barycentric (a, a, b, c), c = 1 - 2a - b.
+void tetraOrbit12(QuadratureRule& r, double a, double b, double w) {
+    const double c = 1.0 - 2.0 * a - b;
+    for (int i = 0; i < 4; ++i)      // position of b
+        for (int j = 0; j < 4; ++j) {  // position of c
+            if (j == i) continue;
+            std::array<double, 4> l{a, a, a, a};
+            l[i] = b;
+            l[j] = c;
+            r.points.push_back({l[1], l[2], l[3]});
+        }
+    r.weights.insert(r.weights.end(), 12, w);
+}
 
 QuadratureRule tetrahedron(int n) {
     QuadratureRule r;
@@ -198,6 +211,13 @@ QuadratureRule tetrahedron(int n) {
             tetraOrbit6(r, (5.0 - s) / 20.0, 5.0 / 567);
             break;
         }
+        case 24:  // degree 6, Witherden & Vincent (2015), the values of code_aster's elraga FPG24
+            r.degree = 6;
+            tetraOrbit4(r, 0.040673958534611353, 0.001679535175886774);
+            tetraOrbit4(r, 0.322337890142275510, 0.009226196923942455);
+            tetraOrbit4(r, 0.214602871259152029, 0.006653791709694583);
+            tetraOrbit12(r, 0.063661001875017525, 0.269672331458315808, 9.0 / 1120);
+            break;
         default: throw NotImplemented("tetrahedron rule FPG" + std::to_string(n));
     }
     return r;

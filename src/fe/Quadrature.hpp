@@ -8,7 +8,7 @@
 //   TRIA3  FPG1 (1) FPG3 (2) FPG4 (3, negative centre weight) FPG6 (4) FPG7 (5) FPG12 (6)
 //          SIMP (1: vertices 1/30, edge midpoints 4/30)
 //   QUAD4  FPG1 FPG4 (2x2) FPG9 (3x3)
-//   TETRA4 FPG1 (1) FPG4 (2) FPG5 (3, negative centre weight) FPG15 (5)
+//   TETRA4 FPG1 (1) FPG4 (2) FPG5 (3, negative centre weight) FPG15 (5) FPG24 (6)
 //   HEXA8  FPG1 FPG8 (2x2x2) FPG27 (3x3x3)
 //   every cell: NOEU (1: the vertices, weight = measure / vertex count)
 // (degree of exactness in parentheses; unit-tested on monomials.)

@@ -66,9 +66,15 @@ std::string digits(const std::vector<signed char>& key) {
 }  // namespace
 
 XfemModel::XfemModel(const Model& model, std::vector<std::shared_ptr<const Crack>> cracks, XfemContact contact,
-                     double conditioningCriterion)
-    : mesh_(model.mesh), cracks_(std::move(cracks)), contact_(contact), criterion_(conditioningCriterion) {
+                     double conditioningCriterion, int subcellDegree)
+    : mesh_(model.mesh),
+      cracks_(std::move(cracks)),
+      contact_(contact),
+      criterion_(conditioningCriterion),
+      subcellDegree_(subcellDegree) {
     if (!mesh_) throw UserError("MODELE_IN has no mesh");
+    if (subcellDegree_ < 0 || subcellDegree_ > kMaxSubcellDegree)
+        throw UserError(fmt::format("sub-cell quadrature degree {} is outside 1..{}", subcellDegree_, kMaxSubcellDegree));
     dim_ = model.dim;
     if (cracks_.empty()) throw UserError("FISSURE: at least one crack is needed");
     for (size_t i = 0; i < cracks_.size(); ++i) {
@@ -335,16 +341,12 @@ int XfemModel::referenceCell(int node) const {
     return -1;
 }
 
-std::string XfemModel::subcellRule(int cell) const {
+SubcellKind XfemModel::subcellKind(int cell) const {
     const CellCut& cut = cuts_[cellIndex_[cell]];
-    const bool mono = cut.cracks.size() == 1;
-    if (cut.skin) {
-        if (cut.dim == 1) return mono ? "FPG4" : "FPG2";
-        return "FPG12";
-    }
-    if (cut.dim == 2) return mono ? "FPG12" : "FPG4";
-    return mono ? "FPG15" : "FPG5";
+    return SubcellKind{cut.dim, cut.skin, cut.cracks.size() > 1};
 }
+
+std::string XfemModel::subcellRule(int cell) const { return xfem::subcellRule(subcellKind(cell), subcellDegree_); }
 
 std::vector<std::pair<int, int>> XfemModel::inactiveSlots() const {
     std::vector<std::pair<int, int>> out;

@@ -22,6 +22,7 @@
 #include "fe/Model.hpp"
 #include "xfem/CellCut.hpp"
 #include "xfem/Crack.hpp"
+#include "xfem/SubcellQuadrature.hpp"
 
 namespace ma::xfem {
 
@@ -43,8 +44,10 @@ class XfemModel : public Enrichment {
 public:
     // Builds the enrichment of `model` (the copy made by MODI_MODELE_XFEM) for the cracks in the
     // user's order. UserError on order violations (§2.6), more than 4 slots at a node (XFEM_40).
+    // `subcellDegree`: 0 for the catalogue's sub-cell rules, 1..kMaxSubcellDegree for the expert
+    // override of the volume sub-cell rules (`miniaster run --subcell-quadrature`).
     XfemModel(const Model& model, std::vector<std::shared_ptr<const Crack>> cracks,
-              XfemContact contact = XfemContact::None, double conditioningCriterion = 1e-8);
+              XfemContact contact = XfemContact::None, double conditioningCriterion = 1e-8, int subcellDegree = 0);
 
     // Enrichment interface (src/fe).
     int nodeSlots(int node) const override;
@@ -87,8 +90,12 @@ public:
     // First volume X-FEM cell where the node is enriched (NOXFEM, §4.1), or -1.
     int referenceCell(int node) const;
     // Sub-cell Gauss rule of an X-FEM cell: "FPG12", "FPG4", "FPG15", "FPG5" (volume) or the
-    // segment/face rule of a skin cell (§3.6).
+    // segment/face rule of a skin cell (§3.6), or the override's rule of a volume cell.
     std::string subcellRule(int cell) const;
+    // What decides the rule of an X-FEM cell (dimension, skin, several interfaces).
+    SubcellKind subcellKind(int cell) const;
+    // 0 (catalogue rules) or the override degree.
+    int subcellDegree() const { return subcellDegree_; }
     int droppedSlots() const { return droppedSlots_; }
     // X-FEM cells (volume and skin) containing a node, in increasing cell number.
     std::vector<int> cellsOfNode(int node) const;
@@ -102,6 +109,7 @@ private:
     std::vector<std::shared_ptr<const Crack>> cracks_;
     XfemContact contact_;
     double criterion_;
+    int subcellDegree_ = 0;
     int dim_ = 2;
     std::vector<int> cellIndex_;  // cell -> index in cuts_ or -1
     std::vector<CellCut> cuts_;

@@ -44,7 +44,8 @@ TEST(FeQuadrature, RulesAreExactForTheirDegree) {
         {CellType::TRIA3, "FPG4", 3, 4},   {CellType::TRIA3, "FPG6", 4, 6},   {CellType::TRIA3, "FPG7", 5, 7},
         {CellType::TRIA3, "FPG12", 6, 12}, {CellType::QUAD4, "FPG1", 1, 1},   {CellType::QUAD4, "FPG4", 3, 4},
         {CellType::QUAD4, "FPG9", 5, 9},   {CellType::TETRA4, "FPG1", 1, 1},  {CellType::TETRA4, "FPG4", 2, 4},
-        {CellType::TETRA4, "FPG5", 3, 5},  {CellType::TETRA4, "FPG15", 5, 15}, {CellType::HEXA8, "FPG1", 1, 1},
+        {CellType::TETRA4, "FPG5", 3, 5},  {CellType::TETRA4, "FPG15", 5, 15}, {CellType::TETRA4, "FPG24", 6, 24},
+        {CellType::HEXA8, "FPG1", 1, 1},
         {CellType::HEXA8, "FPG8", 3, 8},   {CellType::HEXA8, "FPG27", 5, 27},
         // code_aster's other families (elraga): vertices, and the X-FEM contact facets' Newton-Cotes.
         {CellType::SEG2, "NOEU", 1, 2},    {CellType::TRIA3, "NOEU", 1, 3},   {CellType::QUAD4, "NOEU", 1, 4},
@@ -80,6 +81,16 @@ TEST(FeQuadrature, NextDegreeIsNotExactForSimplexRules) {
     double sum = 0;
     for (int p = 0; p < fpg1.size(); ++p) sum += fpg1.weights[p] * fpg1.points[p][0] * fpg1.points[p][0];
     EXPECT_GT(std::abs(sum - exactMoment(CellType::TRIA3, 2, 0, 0)), 1e-3);
+    // FPG24 (degree 6, the --subcell-quadrature 6 rule of sub-tetrahedra) is not exact at degree 7.
+    const auto& fpg24 = quadratureRule(CellType::TETRA4, "FPG24");
+    sum = 0;
+    for (int p = 0; p < fpg24.size(); ++p) sum += fpg24.weights[p] * std::pow(fpg24.points[p][0], 7);
+    EXPECT_GT(std::abs(sum - exactMoment(CellType::TETRA4, 7, 0, 0)), 1e-7);
+    for (int p = 0; p < fpg24.size(); ++p) {  // interior points, positive weights
+        EXPECT_GT(fpg24.weights[p], 0.0);
+        EXPECT_GT(1.0 - fpg24.points[p][0] - fpg24.points[p][1] - fpg24.points[p][2], 0.0);
+        for (int j = 0; j < 3; ++j) EXPECT_GT(fpg24.points[p][j], 0.0);
+    }
 }
 
 TEST(FeQuadrature, NamedFamiliesStopAtTheirDegree) {

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "parser_run.hpp"
+#include "xfem/SubcellQuadrature.hpp"
 
 using namespace ma::test;
 
@@ -160,4 +161,38 @@ TEST(ParserSupervisor, ExportUnitsReachTheCommands) {
     EXPECT_TRUE(r.exists("out/u.rmed")) << r.output;
     EXPECT_TRUE(r.exists("out/u.mess"));
     EXPECT_TRUE(r.exists("out/u.resu"));
+}
+
+// --subcell-quadrature RULE (expert run option, not a .comm keyword): catalogue or 1..6, anything
+// else is a usage error (exit 1) before the command file starts.
+TEST(ParserSupervisor, SubcellQuadratureOption) {
+    const std::string comm = "DEBUT()\nFIN()\n";
+    auto r = runComm(comm, "--subcell-quadrature catalogue");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(r.output.find("--subcell-quadrature"), std::string::npos) << "the default is not announced";
+    for (int d : {1, 3, ma::xfem::kMaxSubcellDegree}) {
+        r = runComm(comm, "--subcell-quadrature " + std::to_string(d));
+        EXPECT_EQ(r.status, 0) << r.output;
+        const std::string line = "  X-FEM       : --subcell-quadrature " + std::to_string(d) +
+                                 " (volume sub-cells integrated to degree " + std::to_string(d) +
+                                 ", not code_aster's catalogue rules)\n";
+        EXPECT_NE(r.file("out/t.mess").find(line), std::string::npos) << r.output;
+    }
+    const std::vector<std::string> bads{"0", std::to_string(ma::xfem::kMaxSubcellDegree + 1), "seven", "2.5", "02",
+                                        "-1", "CATALOGUE", "''"};
+    for (const std::string& bad : bads) {
+        r = runComm(comm, "--subcell-quadrature " + bad);
+        EXPECT_EQ(r.status, 1) << bad << "\n" << r.output;
+        const std::string shown = bad == "''" ? "" : bad;
+        EXPECT_NE(r.output.find("miniaster: --subcell-quadrature: '" + shown +
+                                "' is not a rule (catalogue, or a polynomial degree 1..6)\nusage: miniaster run"),
+                  std::string::npos)
+            << r.output;
+        EXPECT_FALSE(r.exists("out/t.mess")) << "nothing runs";
+    }
+    auto dir = freshDir();
+    writeText(dir / "t.comm", comm);
+    r = runMiniaster(dir, "t.comm", "--subcell-quadrature");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.output.find("miniaster: --subcell-quadrature needs a value"), std::string::npos) << r.output;
 }

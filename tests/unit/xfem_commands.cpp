@@ -1,8 +1,11 @@
 // The X-FEM commands through the supervisor on ssnv511a's mesh: the log counts of DEFI_FISS_XFEM
 // and MODI_MODELE_XFEM, and the user errors (order of FISSURE, POINT on the master interface,
-// unsupported TYPE_DISCONTINUITE).
+// unsupported TYPE_DISCONTINUITE), the sub-cell rules in the log (with --subcell-quadrature).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <map>
+#include <regex>
 #include <string>
 
 #include "parser_run.hpp"
@@ -82,4 +85,109 @@ TEST(XfemCommands, OutsideAndUnsupported) {
                 kMesh);
     EXPECT_NE(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("TYPE_DISCONTINUITE='FISSURE'"), std::string::npos) << r.output;
+}
+
+// The .mess of MODI_MODELE_XFEM tells which rule each kind of sub-cell uses and whether it comes
+// from the catalogue or from `--subcell-quadrature` (the skin keeps the catalogue's rule).
+TEST(XfemCommands, SubcellQuadratureInTheLog) {
+    const std::string comm =
+        "DEBUT()\n"
+        "MA = LIRE_MAILLAGE(FORMAT='MED')\n"
+        "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(GROUP_MA=('SURF', 'LH', 'LD'), PHENOMENE='MECANIQUE', "
+        "MODELISATION='D_PLAN'))\n"
+        "LN1 = FORMULE(VALE='Y', NOM_PARA=['X', 'Y'])\n"
+        "LN2 = FORMULE(VALE='X', NOM_PARA=['X', 'Y'])\n"
+        "FISS1 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN1))\n"
+        "FISS2 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', "
+        "DEFI_FISS=_F(FONC_LN=LN2), JONCTION=_F(FISSURE=FISS1, POINT=(0, 5)))\n"
+        "FISS3 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', "
+        "DEFI_FISS=_F(FONC_LN=LN2), JONCTION=_F(FISSURE=FISS1, POINT=(0, -5)))\n"
+        "MX = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(FISS1, FISS2, FISS3))\n"
+        "FIN()\n";
+    // Sub-cells per kind, read from the catalogue run and checked against the rule sizes.
+    const std::regex line(R"(      (volume|skin) sub-cells, (one interface|several interfaces): (SEG2|TRIA3) (FPG\d+) )"
+                          R"(\(degree (\d), ([^)]*)\), (\d+) sub-cells, (\d+) points)");
+    struct Kind {
+        std::string type, rule, origin;
+        int degree = 0, subcells = 0, points = 0;
+    };
+    auto kinds = [&](const std::string& out) {
+        std::map<std::string, Kind> k;
+        for (std::sregex_iterator it(out.begin(), out.end(), line), end; it != end; ++it) {
+            const auto& m = *it;
+            k[m[1].str() + ", " + m[2].str()] = {m[3], m[4], m[6], std::stoi(m[5]), std::stoi(m[7]), std::stoi(m[8])};
+        }
+        return k;
+    };
+
+    const auto r0 = runComm(comm, kMesh);
+    ASSERT_EQ(r0.status, 0) << r0.output;
+    const std::string mess = r0.file("out/t.mess");
+    EXPECT_NE(mess.find("    sub-cell quadrature: catalogue (the rules of code_aster's X-FEM element catalogues)\n"),
+              std::string::npos)
+        << mess;
+    const auto k0 = kinds(mess);
+    ASSERT_EQ(k0.size(), 3u) << mess;  // volume with one and several interfaces, skin with one (LH, LD)
+    const auto& mono = k0.at("volume, one interface");
+    const auto& multi = k0.at("volume, several interfaces");
+    EXPECT_EQ(mono.type + " " + mono.rule + " " + mono.origin, "TRIA3 FPG12 catalogue");
+    EXPECT_EQ(multi.type + " " + multi.rule + " " + multi.origin, "TRIA3 FPG4 catalogue");
+    EXPECT_EQ(k0.at("skin, one interface").type + " " + k0.at("skin, one interface").rule, "SEG2 FPG4");
+    EXPECT_EQ(mono.subcells + multi.subcells, 84);  // the 84 sub-cells of XfemCommands.CountsInTheLog
+    EXPECT_EQ(mono.points, 12 * mono.subcells);
+    EXPECT_EQ(multi.points, 4 * multi.subcells);
+    const int skinPoints = k0.at("skin, one interface").points;
+    EXPECT_EQ(skinPoints, 4 * k0.at("skin, one interface").subcells);
+    // 21 volume X-FEM elements (XfemCommands.CountsInTheLog), 6 skin ones (27 X-FEM elements in all)
+    EXPECT_NE(mess.find(fmt::format("    sub-cell integration points: {} (volume {} in 21 elements, skin {} in 6) on 92 "
+                                    "sub-cells\n",
+                                    mono.points + multi.points + skinPoints, mono.points + multi.points, skinPoints)),
+              std::string::npos)
+        << mess;
+
+    const auto r2 = runComm(comm, kMesh + " --subcell-quadrature 2");
+    ASSERT_EQ(r2.status, 0) << r2.output;
+    const std::string mess2 = r2.file("out/t.mess");
+    EXPECT_NE(mess2.find("    sub-cell quadrature: degree 2 (--subcell-quadrature 2, a miniaster run option, not a "
+                         "code_aster keyword)"),
+              std::string::npos)
+        << mess2;
+    const auto k2 = kinds(mess2);
+    ASSERT_EQ(k2.size(), 3u);
+    EXPECT_EQ(k2.at("volume, one interface").rule + " " + k2.at("volume, one interface").origin,
+              "FPG3 override of the catalogue's FPG12");
+    EXPECT_EQ(k2.at("volume, several interfaces").rule + " " + k2.at("volume, several interfaces").origin,
+              "FPG3 override of the catalogue's FPG4");
+    EXPECT_EQ(k2.at("volume, one interface").degree, 2);
+    EXPECT_EQ(k2.at("volume, one interface").points + k2.at("volume, several interfaces").points, 3 * 84);
+    EXPECT_EQ(k2.at("skin, one interface").rule + " " + k2.at("skin, one interface").origin,
+              "FPG4 catalogue, not overridden");
+    EXPECT_EQ(k2.at("skin, one interface").points, k0.at("skin, one interface").points);
+
+    const auto r6 = runComm(comm, kMesh + " --subcell-quadrature 6");
+    ASSERT_EQ(r6.status, 0) << r6.output;
+    const auto k6 = kinds(r6.file("out/t.mess"));
+    EXPECT_EQ(k6.at("volume, one interface").origin, "override, the same as the catalogue's FPG12");
+    EXPECT_EQ(k6.at("volume, several interfaces").rule, "FPG12");
+    EXPECT_EQ(k6.at("volume, several interfaces").points, 12 * multi.subcells);
+}
+
+// HEXA8 parents with degree 1 on their sub-tetrahedra: the trilinear strains are not integrated
+// exactly, the uniform stress with contact of astest/contact_hexa8_n5 is lost (its TEST_TABLEs are
+// NOOK) and the .mess says why (alarm XFEM_SUBCELL_RULE); degree 2 keeps the exact answer.
+TEST(XfemCommands, Hexa8AtDegreeOneIsAlarmed) {
+    auto dir = freshDir();
+    const std::string exportFile = std::string(MINIASTER_SOURCE_DIR) + "/astest/contact_hexa8_n5.export";
+    auto r = runMiniaster(dir, exportFile, "--subcell-quadrature 1");
+    EXPECT_EQ(r.status, 2) << r.output;
+    const std::string mess = r.file("out/contact_hexa8_n5.mess");
+    EXPECT_NE(mess.find("! <A> <XFEM_SUBCELL_RULE>"), std::string::npos) << mess;
+    EXPECT_NE(mess.find("--subcell-quadrature 1: the strains of the HEXA8 shape functions are polynomials of degree 2 "
+                        "on the sub-cells, which the rule FPG1 does not integrate exactly"),
+              std::string::npos)
+        << mess;
+    EXPECT_NE(mess.find("--- DIAGNOSTIC JOB : NOOK_TEST_RESU"), std::string::npos);
+    r = runMiniaster(freshDir(), exportFile, "--subcell-quadrature 2");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(r.file("out/contact_hexa8_n5.mess").find("XFEM_SUBCELL_RULE"), std::string::npos);
 }

@@ -41,6 +41,8 @@ def fmt(v, kind=None):
         return f"{v:.2e}"
     if kind == "f":
         return f"{v:.2f}"
+    if kind == "f3":  # ratios close to 1
+        return f"{v:.4f}"
     if isinstance(v, float):
         return f"{v:.3g}"
     return str(v)
@@ -166,4 +168,55 @@ def plot_sweep(path, title, xlabel, series, threshold=1e-9, logx=True,
     ax.set_title(title + "\n(o = alarm in the .mess, x = none; dashed line: 1e-9)", fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
+    _save(fig, path)
+
+
+QUADRATURE_MARKERS = {"degree 1": "v", "degree 2": "^", "degree 3": "s", "degree 4": "D", "degree 5": "P",
+                      "degree 6": "*", "catalogue": "o"}
+
+
+def _quadrature_style(element, rule):
+    return {"color": COLORS.get(element), "marker": QUADRATURE_MARKERS.get(rule, "x"),
+            "linestyle": {"degree 1": ":", "degree 2": "-.", "catalogue": "-"}.get(rule, "--"),
+            "markerfacecolor": "none" if rule == "catalogue" else None}
+
+
+def plot_quadrature_ratio(path, series):
+    """series: {(element, contact, rule): [(dofs, l2_ratio, energy_ratio), ...]}: error of each rule divided
+    by the catalogue rule's on the same mesh; columns open / contact, rows energy / L2."""
+    contacts = sorted({k[1] for k in series}, key=lambda c: (c != "open", c))
+    fig, axes = plt.subplots(2, max(1, len(contacts)), figsize=(6.5 * max(1, len(contacts)), 9), squeeze=False)
+    for col, contact in enumerate(contacts):
+        for row, idx, name in ((0, 2, "energy norm"), (1, 1, "L2 norm")):
+            ax = axes[row][col]
+            for (element, c, rule), pts in series.items():
+                pts = sorted(p for p in pts if c == contact and p[idx])
+                if pts:
+                    ax.semilogx([p[0] for p in pts], [p[idx] for p in pts], label=f"{element} {rule}",
+                                **_quadrature_style(element, rule))
+            ax.axhline(1.0, color="k", linewidth=0.8)
+            ax.set_xlabel("DOFs")
+            ax.set_ylabel(f"error / error with the catalogue rule ({name})")
+            ax.set_title(f"{contact}: {name}")
+            ax.grid(True, which="both", alpha=0.3)
+            ax.legend(fontsize=7, ncol=2)
+    _save(fig, path)
+
+
+def plot_quadrature_error(path, series):
+    """series: {(element, contact, rule): [(dofs, l2, energy), ...]}: error vs DOFs per rule."""
+    fig, axes = plt.subplots(1, 2, figsize=(12, 5.5))
+    for ax, idx, name in ((axes[0], 2, "energy norm"), (axes[1], 1, "L2 norm")):
+        for (element, contact, rule), pts in series.items():
+            pts = sorted(p for p in pts if p[idx])
+            if pts:
+                kw = _quadrature_style(element, rule)
+                if contact != "open":
+                    kw["alpha"] = 0.55
+                ax.loglog([p[0] for p in pts], [p[idx] for p in pts], label=f"{element} {contact} {rule}", **kw)
+        ax.set_xlabel("DOFs")
+        ax.set_ylabel(f"relative error, {name}")
+        ax.set_title(f"{name} per sub-cell rule")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7, ncol=2)
     _save(fig, path)

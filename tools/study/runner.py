@@ -2,8 +2,9 @@
 
 Everything is parsed from the documented log lines (docs/fe.md, docs/xfem.md, docs/supervisor.md):
 the per-command TIMING SUMMARY, the engine's phase lines (numbering, matrix pattern, assembly,
-factorisation, solve, Newton), MUMPS condition estimates (INFO=2), the X-FEM conditioning line of
-MODI_MODELE_XFEM, alarms, and the POST_ERREUR tables printed by IMPR_TABLE.
+factorisation, solve, Newton), MUMPS condition estimates (INFO=2), the X-FEM conditioning and
+sub-cell quadrature lines of MODI_MODELE_XFEM, alarms, and the POST_ERREUR tables printed by
+IMPR_TABLE.
 """
 import math
 import os
@@ -86,6 +87,16 @@ def parse_mess(text):
     if m:
         r["min_fraction"] = _f(m.group(1))
         r["dropped"] = int(m.group(3))
+    # sub-cell rules of MODI_MODELE_XFEM (catalogue or --subcell-quadrature) and their points
+    m = re.search(r"sub-cell quadrature: (catalogue|degree \d+)", text)
+    if m:
+        r["quadrature"] = m.group(1)
+    m = re.search(r"sub-cell integration points: (\d+) \(volume (\d+) in (\d+) elements, skin (\d+) in (\d+)\)",
+                  text)
+    if m:
+        r["subcell_points"] = int(m.group(2))
+        r["xfem_volume_cells"] = int(m.group(3))
+        r["skin_points"] = int(m.group(4))
     m = re.findall(r"(\d+) level-set values adjusted", text)
     if m:
         r["snapped"] = sum(int(x) for x in m)
@@ -204,17 +215,18 @@ def run_comm_file(binary, comm, mesh, workdir, timeout=900):
     return rec
 
 
-def run_case(binary, comm_text, mesh, workdir, name, timeout=900):
-    """Runs `miniaster run name.comm --mesh mesh` in workdir; returns the parsed record (exit
-    status, wall time seen from outside, everything from the .mess and the error tables)."""
+def run_case(binary, comm_text, mesh, workdir, name, timeout=900, options=()):
+    """Runs `miniaster run name.comm --mesh mesh [options]` in workdir; returns the parsed record
+    (exit status, wall time seen from outside, everything from the .mess and the error tables).
+    `options`: extra run options, e.g. ("--subcell-quadrature", "2")."""
     os.makedirs(workdir, exist_ok=True)
     comm = os.path.join(workdir, name + ".comm")
     with open(comm, "w") as f:
         f.write(comm_text)
     t0 = time.monotonic()
     try:
-        proc = subprocess.run([binary, "run", comm, "--mesh", mesh, "--out-dir", workdir], stdout=subprocess.DEVNULL,
-                              stderr=subprocess.DEVNULL, timeout=timeout)
+        proc = subprocess.run([binary, "run", comm, "--mesh", mesh, "--out-dir", workdir, *options],
+                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=timeout)
         rc = proc.returncode
     except subprocess.TimeoutExpired:
         rc = "timeout"

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """miniaster speed/accuracy study (issue 8). Run through the launcher:
 
-    ./miniaster study smooth      [--full]   convergence of the smooth manufactured scene
+    ./miniaster study smooth      [--full]   convergence of the smooth manufactured scene, sub-cell quadrature
+                                             rules (--group quadrature: `miniaster run --subcell-quadrature`)
     ./miniaster study stability   [--full]   extreme inputs on the ssnv511a rigid scene
     ./miniaster study penalty     [--full]   exact contact vs penalty (COEF_PENA_CONT 1e4..1e20), ssnv511e-h (2D and 3D)
     ./miniaster study perf        [--full]   set-up/assembly vs factorisation on ssnv511a (N=1001 with --full),
@@ -11,7 +12,8 @@
     ./miniaster study astest                 regenerates astest/smooth_*.{comm,export,mmed}
 
 Options: --out DIR (tables and plots, default docs/study), --work DIR (runs, default a temporary
-folder), --build DIR (miniaster build, default build/), --elements quad4,tria3,..., --timeout S.
+folder), --build DIR (miniaster build, default build/), --elements quad4,tria3,..., --contact
+all|open|only, --group all|convergence|quadrature (smooth), --timeout S.
 Results: DIR/<study>.csv, DIR/<study>.md and DIR/<study>_*.png; the Markdown file names the
 command that made it. See docs/study.md.
 """
@@ -59,8 +61,9 @@ class Context:
                 shown.append(a)
         self.command = "./miniaster study " + " ".join(shown)
 
-    def run(self, tag, comm, mesh):
-        return runner.run_case(self.binary, comm, mesh, os.path.join(self.work, tag), "case", self.args.timeout)
+    def run(self, tag, comm, mesh, options=()):
+        return runner.run_case(self.binary, comm, mesh, os.path.join(self.work, tag), "case", self.args.timeout,
+                               options)
 
     def mesh(self, element, n, **kw):
         key = f"{element}_n{n}_" + "_".join(f"{k}{v}" for k, v in sorted(kw.items()))
@@ -109,11 +112,17 @@ SMOOTH_COLUMNS = ["element", "modelisation", "contact", "N", "h", "solver", "ord
                   "t_factorisation", "t_solve", "t_analysis_other", "t_analysis", "t_post", "t_commands", "wall",
                   "peak_mb", "solver_peak_mb", "factor_entries", "newton", "contact_iterations", "factorisations",
                   "penetration", "residual", "l2_rel", "energy_rel", "l2_ref", "l2_ref_exact", "energy_ref",
-                  "energy_ref_exact", "min_fraction", "alarms", "diagnostic", "exit", "command", "git"]
+                  "energy_ref_exact", "min_fraction", "group", "quadrature", "subcell_points", "xfem_volume_cells", "skin_points",
+                  "all_points", "alarms",
+                  "diagnostic", "exit", "failure", "command", "git"]
 # COEF_PENA_CONT of the penalised rows (QUAD4): with E = 1e8 and normal tractions 2e5..5e5 Pa the
 # interpenetration p/kappa is 5e-5 and 5e-7 (the displacements are ~0.03)
 SMOOTH_PENALTIES = [1e10, 1e12]
 SMOOTH_PARTS = {"all": ("open", "contact"), "open": ("open",), "only": ("contact",)}
+# groups of rows of smooth.csv (--group): the convergence grid with the solver rows, and the sub-cell
+# quadrature rows (`miniaster run --subcell-quadrature DEGREE`)
+SMOOTH_GROUPS = {"all": ("convergence", "quadrature"), "convergence": ("convergence",),
+                 "quadrature": ("quadrature",)}
 
 
 def smooth_grid(full):
@@ -122,6 +131,36 @@ def smooth_grid(full):
     solver_points = [("quad4", 321), ("hexa8", 161)] if full else [("quad4", 161), ("hexa8", 41)]
     solvers = ["MUMPS:AMD", "MUMPS:AMF", "MUMPS:PORD", "MUMPS:SCOTCH", "MUMPS:QAMD", "MULT_FRONT", "LDLT"]
     return n2, n3, solver_points, solvers
+
+
+def quadrature_grid(full):
+    """Sub-cell rules (None = the catalogue) and meshes of the quadrature group: 2D, 3D."""
+    rules = [1, 2, 3, None] + ([4, 6] if full else [])
+    n2 = [11, 21, 41, 81, 161] + ([321, 641] if full else [])
+    n3 = [5, 11, 21, 41] + ([81] if full else [])
+    return rules, n2, n3
+
+
+# volume cells per N^2 of the generated meshes (tools/ssnv511_mesh; 3D: one layer) and points of the
+# classical rule of each (fe/Quadrature.hpp stiffnessRule)
+VOLUME_CELLS = {"quad4": (1, 4), "tria3": (2, 1), "hexa8": (1, 8), "tetra4": (6, 1)}
+
+
+def all_points(rec):
+    """Integration points of the whole model: classical cells on their rule plus the volume sub-cells."""
+    if rec.get("subcell_points") is None or rec.get("xfem_volume_cells") is None:
+        return None
+    per_n2, points = VOLUME_CELLS[rec["element"]]
+    return (per_n2 * rec["N"] ** 2 - rec["xfem_volume_cells"]) * points + rec["subcell_points"]
+
+
+def quadrature_label(degree):
+    """Label of a sub-cell rule as MODI_MODELE_XFEM logs it."""
+    return "catalogue" if degree is None else f"degree {degree}"
+
+
+def quadrature_rank(label):
+    return (1, 0) if label == "catalogue" else (0, int(label.split()[-1]))
 
 
 def smooth_contacts(element, parts):
@@ -143,17 +182,26 @@ def contact_rank(label):
     return (2, float(label.split()[-1]))
 
 
-def smooth_case(ctx, element, n, solver="MUMPS", contact=None):
+def smooth_case(ctx, element, n, solver="MUMPS", contact=None, group="convergence", degree=None):
+    """One run of the smooth scene; `degree`: --subcell-quadrature (None: the catalogue's rules)."""
     modelisation, dim = scenes.ELEMENTS[element]
     h = 10.0 / n
     thickness = h if dim == 3 else 1.0
     mesh = ctx.mesh(element, n, zbounds=(0.0, h)) if dim == 3 else ctx.mesh(element, n)
     comm = scenes.smooth_comm(element, solver=solver, contact=contact) + "FIN()\n"
     label = scenes.contact_label(contact)
-    rec = ctx.run(f"smooth_{element}_{n}_{solver.replace(':', '_')}_{label.replace(' ', '_')}", comm, mesh)
+    options = ("--subcell-quadrature", str(degree)) if degree else ()
+    tag = f"smooth_{element}_{n}_{solver.replace(':', '_')}_{label.replace(' ', '_')}_{group}_{degree or 'cat'}"
+    rec = ctx.run(tag, comm, mesh, options)
     l2, energy, _, _ = smooth_field.exact_norms(modelisation, thickness=thickness, contact=contact is not None)
+    logged = rec.get("quadrature")
+    if logged is not None and logged != quadrature_label(degree):
+        sys.exit(f"study: {tag}: MODI_MODELE_XFEM logged the sub-cell rule '{logged}', asked "
+                 f"'{quadrature_label(degree)}'")
     rec.update(element=element, modelisation=modelisation, contact=label, N=n, h=h, solver=solver, l2_ref_exact=l2,
-               energy_ref_exact=energy, command=ctx.command, git=git_head())
+               energy_ref_exact=energy, group=group, quadrature=quadrature_label(degree), command=ctx.command,
+               git=git_head())
+    rec["all_points"] = all_points(rec)
     return rec
 
 
@@ -177,12 +225,15 @@ def read_records(path, default_command=""):
                         r[k] = v
             r.setdefault("contact", "open")
             r.setdefault("command", default_command)
+            r.setdefault("group", "convergence")
+            r.setdefault("quadrature", "catalogue")
             out.append(r)
     return out
 
 
-def previous_smooth_rows(ctx, parts):
-    """Rows of the existing smooth.csv that this run does not redo (partial runs: --contact, --elements)."""
+def previous_smooth_rows(ctx, parts, groups):
+    """Rows of the existing smooth.csv that this run does not redo (partial runs: --contact, --elements,
+    --group)."""
     path = os.path.join(ctx.out, "smooth.csv")
     if not os.path.exists(path):
         return []
@@ -192,7 +243,8 @@ def previous_smooth_rows(ctx, parts):
         with open(md) as f:
             m = re.search(r"Made by `([^`]*)`", f.read())
             made_by = m.group(1) if m else ""
-    redone = lambda r: r["element"] in ctx.elements and ("open" if r["contact"] == "open" else "contact") in parts
+    redone = lambda r: (r["group"] in groups and r["element"] in ctx.elements
+                        and ("open" if r["contact"] == "open" else "contact") in parts)
     return [r for r in read_records(path, made_by) if not redone(r)]
 
 
@@ -225,11 +277,12 @@ def smooth_rates(base, groups):
 def study_smooth(ctx):
     n2, n3, solver_points, solvers = smooth_grid(ctx.args.full)
     parts = SMOOTH_PARTS[ctx.args.contact]
-    partial = ctx.args.contact != "all" or ctx.args.elements
-    kept = previous_smooth_rows(ctx, parts) if partial else []
+    groups_run = SMOOTH_GROUPS[ctx.args.group]
+    partial = ctx.args.contact != "all" or ctx.args.elements or ctx.args.group != "all"
+    kept = previous_smooth_rows(ctx, parts, groups_run) if partial else []
     records = []
     csv_path = os.path.join(ctx.out, "smooth.csv")
-    for element in ctx.elements:
+    for element in ctx.elements if "convergence" in groups_run else []:
         ns = n2 if scenes.ELEMENTS[element][1] == 2 else n3
         for contact in smooth_contacts(element, parts):
             for n in ns:
@@ -240,7 +293,22 @@ def study_smooth(ctx):
                     f"L2 {rec.get('l2_rel', float('nan')):.3e}, energy {rec.get('energy_rel', float('nan')):.3e}, "
                     f"contact it. {rec.get('contact_iterations')}, Newton {rec.get('newton')}, {rec['wall']:.1f} s, "
                     f"{rec.get('diagnostic')} {rec.get('failure', '')}")
-    if "open" in parts:
+    if "quadrature" in groups_run:
+        rules, q2, q3 = quadrature_grid(ctx.args.full)
+        for element in ctx.elements:
+            ns = q2 if scenes.ELEMENTS[element][1] == 2 else q3
+            for contact in [c for c in (None, "STANDARD") if ("open" if c is None else "contact") in parts]:
+                for n in ns:
+                    for degree in rules:  # the rules of one mesh back to back: comparable machine load
+                        rec = smooth_case(ctx, element, n, contact=contact, group="quadrature", degree=degree)
+                        records.append(rec)
+                        report.write_csv(csv_path, kept + records, SMOOTH_COLUMNS)  # progress
+                        log(f"smooth quadrature {element} {rec['contact']} N={n} {rec['quadrature']}: "
+                            f"{rec.get('subcell_points')} sub-cell points, assembly {rec.get('t_assembly')} s, "
+                            f"L2 {rec.get('l2_rel', float('nan')):.3e}, "
+                            f"energy {rec.get('energy_rel', float('nan')):.3e}, {rec.get('diagnostic')} "
+                            f"{rec.get('failure', '')}")
+    if "open" in parts and "convergence" in groups_run:
         for element, n in solver_points:
             if element not in ctx.elements:
                 continue
@@ -251,10 +319,11 @@ def study_smooth(ctx):
                     f"energy {rec.get('energy_rel', float('nan')):.3e}, {rec.get('diagnostic')}")
     records = kept + records
     order = {e: i for i, e in enumerate(ALL_ELEMENTS)}
-    records.sort(key=lambda r: (r["solver"] != "MUMPS", order.get(r["element"], 9), contact_rank(r["contact"]),
-                                r["N"]))
+    records.sort(key=lambda r: (r["group"] == "quadrature", r["solver"] != "MUMPS", order.get(r["element"], 9),
+                                contact_rank(r["contact"]), r["N"], quadrature_rank(r["quadrature"])))
     report.write_csv(csv_path, records, SMOOTH_COLUMNS)
-    base = [r for r in records if r["solver"] == "MUMPS"]
+    base = [r for r in records if r["solver"] == "MUMPS" and r["group"] == "convergence"]
+    quad = [r for r in records if r["group"] == "quadrature"]
     groups = []
     for r in base:
         if (r["element"], r["contact"]) not in groups:
@@ -282,7 +351,8 @@ def study_smooth(ctx):
     commands = {}
     for r in records:
         commands.setdefault(r.get("command") or "unknown", set()).add(
-            f"{r['element']} {'open' if r['contact'] == 'open' else 'contact'}")
+            f"{r['element']} {'open' if r['contact'] == 'open' else 'contact'}"
+            + (" (sub-cell quadrature rows)" if r["group"] == "quadrature" else ""))
     if len(commands) > 1 or partial:
         md += "Rows by command (a partial run keeps the other rows of the previous smooth.csv):\n\n"
         for c, what in commands.items():
@@ -325,7 +395,7 @@ def study_smooth(ctx):
             ("energy_ref_q", "ref. quad.", "e"), ("alarms", "alarms", None), ("diagnostic", "diagnostic", None)]
     md += "## Mesh refinement (MUMPS, RENUM='AUTO')\n\nTimes in seconds.\n\n"
     md += report.markdown_table(base, cols)
-    others = [r for r in records if r["solver"] != "MUMPS"]
+    others = [r for r in records if r["solver"] != "MUMPS" and r["group"] == "convergence"]
     if others:
         md += "\n## Linear solvers (open scene)\n\n"
         md += report.markdown_table(others, [("element", "element", None), ("N", "N", None), ("dofs", "DOFs", None),
@@ -334,10 +404,100 @@ def study_smooth(ctx):
                                              ("t_factorisation", "factor. (s)", "t"), ("t_solve", "solve (s)", "t"),
                                              ("solver_peak_mb", "solver MB", None), ("peak_mb", "peak MB", "t"),
                                              ("residual", "rel. residual", "e"), ("energy_rel", "energy err.", "e")])
-    md += ("\nSub-cell quadrature is not a user choice in miniaster (docs/xfem.md: fixed families per element "
-           "type, as code_aster's catalogues), so it is not a dimension of this grid.\n")
+    if quad:
+        md += smooth_quadrature_section(ctx, quad)
     write_text(os.path.join(ctx.out, "smooth.md"), md)
     return records
+
+
+def smooth_quadrature_section(ctx, quad):
+    """Markdown, rates and plots of the sub-cell quadrature rows (--subcell-quadrature)."""
+    order = {e: i for i, e in enumerate(ALL_ELEMENTS)}
+    catalogue = {(r["element"], r["contact"], r["N"]): r for r in quad if r["quadrature"] == "catalogue"}
+    for r in quad:
+        c = catalogue.get((r["element"], r["contact"], r["N"]))
+        if r.get("l2_ref") and r.get("l2_ref_exact"):
+            r["l2_ref_q"] = abs(r["l2_ref"] - r["l2_ref_exact"]) / r["l2_ref_exact"]
+        if r.get("energy_ref") and r.get("energy_ref_exact"):
+            r["energy_ref_q"] = abs(r["energy_ref"] - r["energy_ref_exact"]) / r["energy_ref_exact"]
+        if not c:
+            continue
+        if r.get("all_points") and r.get("subcell_points") is not None:
+            r["subcell_share"] = r["subcell_points"] / r["all_points"]
+        for key in ("l2_rel", "energy_rel", "t_assembly", "subcell_points", "all_points", "t_analysis_other",
+                    "t_post"):
+            if r.get(key) and c.get(key):
+                r[f"{key}_ratio"] = r[key] / c[key]
+    groups = []
+    for r in quad:
+        if (r["element"], r["contact"], r["quadrature"]) not in groups:
+            groups.append((r["element"], r["contact"], r["quadrature"]))
+    rates = []
+    for element, contact, rule in groups:
+        rows = sorted((r for r in quad if (r["element"], r["contact"], r["quadrature"]) == (element, contact, rule)
+                       and r.get("l2_rel")), key=lambda r: -r["h"])
+        tail = rows[-4:]
+        failed = [r for r in quad if (r["element"], r["contact"], r["quadrature"]) == (element, contact, rule)
+                  and r.get("exit") != 0]
+        rates.append({
+            "element": element, "contact": contact, "quadrature": rule,
+            "points": f"N = {tail[0]['N']}..{tail[-1]['N']}" if tail else "",
+            "energy_rate": report.fit_rate([r["h"] for r in tail], [r["energy_rel"] for r in tail]),
+            "l2_rate": report.fit_rate([r["h"] for r in tail], [r["l2_rel"] for r in tail]),
+            "energy_finest": tail[-1]["energy_rel"] if tail else None,
+            "l2_finest": tail[-1]["l2_rel"] if tail else None,
+            "energy_ratio_finest": tail[-1].get("energy_rel_ratio") if tail else None,
+            "l2_ratio_finest": tail[-1].get("l2_rel_ratio") if tail else None,
+            "failed": ", ".join(f"N={r['N']}: {r.get('diagnostic')}" for r in failed),
+        })
+    report.plot_quadrature_ratio(os.path.join(ctx.out, "smooth_quadrature_ratio.png"),
+                                 {(e, c, q): [(r["dofs"], r.get("l2_rel_ratio"), r.get("energy_rel_ratio"))
+                                              for r in quad if (r["element"], r["contact"], r["quadrature"]) == (e, c, q)
+                                              and r.get("dofs")]
+                                  for e, c, q in groups if q != "catalogue"})
+    report.plot_quadrature_error(os.path.join(ctx.out, "smooth_quadrature_error.png"),
+                                 {(e, c, q): [(r["dofs"], r.get("l2_rel"), r.get("energy_rel")) for r in quad
+                                              if (r["element"], r["contact"], r["quadrature"]) == (e, c, q)
+                                              and r.get("dofs")]
+                                  for e, c, q in groups if e in ("quad4", "tetra4")})
+    rules, q2, q3 = quadrature_grid(ctx.args.full)
+    md = ("\n## Sub-cell quadrature (`miniaster run --subcell-quadrature DEGREE`)\n\n"
+          "The same scene with the rule of the X-FEM volume sub-cells forced to the lowest code_aster family of "
+          "at least that polynomial degree (TRIA3: 1 FPG1, 2 FPG3, 3 FPG4, 4 FPG6, 5 FPG7, 6 FPG12; TETRA4: 1 FPG1, "
+          "2 FPG4, 3 FPG5, 4-5 FPG15, 6 FPG24) instead of the catalogue's (TRIA3 FPG12 with one interface, FPG4 "
+          "with several; TETRA4 FPG15 / FPG5); skin sub-cells keep the catalogue's rule (docs/xfem.md). The rule "
+          "enters the stiffness, the body force, SIEF_ELGA and POST_ERREUR's own integration on the X-FEM "
+          "elements only (classical cells keep their rule). The rules of one mesh ran back to back. "
+          "`sub-cell points` = integration points on the volume sub-cells (MODI_MODELE_XFEM's log), `share` = "
+          "their fraction of all the model's integration points (classical cells on their own rule); `x cat.` = "
+          "ratio to the catalogue row of the same mesh; `ref. quad.` = relative error of POST_ERREUR's REFERENCE "
+          "(the exact field's energy norm integrated on the same points) against the analytic norm: the "
+          "measurement's own quadrature error.\n\n")
+    md += "### Rates per rule (least squares in h on the four finest points)\n\n"
+    md += report.markdown_table(rates, [("element", "element", None), ("contact", "contact", None),
+                                        ("quadrature", "rule", None), ("points", "fit on", None),
+                                        ("energy_rate", "energy rate", "f"), ("l2_rate", "L2 rate", "f"),
+                                        ("energy_finest", "energy err. finest", "e"),
+                                        ("energy_ratio_finest", "x cat.", "f3"),
+                                        ("l2_finest", "L2 err. finest", "e"), ("l2_ratio_finest", "x cat.", "f3"),
+                                        ("failed", "failed runs", None)])
+    md += "\n![error ratio to the catalogue rule](smooth_quadrature_ratio.png)\n\n"
+    md += "![error vs DOFs per rule](smooth_quadrature_error.png)\n\n"
+    md += "### Every run\n\nTimes in seconds.\n\n"
+    rows = sorted(quad, key=lambda r: (order.get(r["element"], 9), contact_rank(r["contact"]), r["N"],
+                                      quadrature_rank(r["quadrature"])))
+    md += report.markdown_table(rows, [
+        ("element", "element", None), ("contact", "contact", None), ("N", "N", None), ("quadrature", "rule", None),
+        ("dofs", "DOFs", None), ("subcell_points", "sub-cell points", None), ("subcell_share", "share", "f3"),
+        ("t_xfem", "X-FEM set-up", "t"), ("t_assembly", "assembly", "t"), ("t_assembly_ratio", "x cat.", "f"),
+        ("t_factorisation", "factor.", "t"), ("t_analysis_other", "forces+stresses", "t"),
+        ("t_analysis_other_ratio", "x cat.", "f"), ("t_post", "post", "t"), ("t_post_ratio", "x cat.", "f"),
+        ("t_commands", "total", "t"),
+        ("peak_mb", "peak MB", "t"), ("contact_iterations", "contact it.", None), ("newton", "Newton it.", None),
+        ("l2_rel", "L2 err.", "e"), ("l2_rel_ratio", "x cat.", "f3"), ("energy_rel", "energy err.", "e"),
+        ("energy_rel_ratio", "x cat.", "f3"), ("energy_ref_q", "ref. quad.", "e"), ("alarms", "alarms", None),
+        ("diagnostic", "diagnostic", None), ("failure", "failure", None)])
+    return md
 
 
 # ----------------------------------------------------------------------------------------------
@@ -709,7 +869,7 @@ def study_astest(ctx):
     if not os.path.exists(table):
         sys.exit(f"study astest: {table} is missing (run `./miniaster study smooth` first: the error bounds of "
                  "the cases come from the convergence fit)")
-    rows = [r for r in read_records(table) if r["solver"] == "MUMPS" and r.get("l2_rel")]
+    rows = [r for r in read_records(table) if r["solver"] == "MUMPS" and r["group"] == "convergence" and r.get("l2_rel")]
     n2, n3, _, _ = smooth_grid(False)
     for element in ctx.elements:
         modelisation, dim = scenes.ELEMENTS[element]
@@ -821,6 +981,9 @@ def main():
     ap.add_argument("--contact", default="all", choices=sorted(SMOOTH_PARTS),
                     help="smooth/astest: all rows, only the open scene (open) or only the rows with contact "
                          "(only); a partial run keeps the other rows of the existing smooth.csv")
+    ap.add_argument("--group", default="all", choices=sorted(SMOOTH_GROUPS),
+                    help="smooth: all rows, only the convergence grid and solvers (convergence) or only the "
+                         "sub-cell quadrature rows (quadrature); a partial run keeps the other rows of smooth.csv")
     ap.add_argument("--timeout", type=float, default=1800.0, help="seconds per run")
     args = ap.parse_args()
     if args.name == "check-field":
