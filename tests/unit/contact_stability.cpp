@@ -164,9 +164,9 @@ TEST(ContactStability, InterfacesNextToNodeRowsKeepTheExactAnswer) {
                 if (algo == "PENALISATION") {
                     // The stresses stay exact with the penalty; the blocks shift rigidly by
                     // p/COEF_PENA_CONT, so the file's L2 check (against the exact field) goes.
-                    const std::string zone = "CONTACT_INIT='OUI')";
+                    const std::string zone = "CONTACT_INIT='OUI'";
                     ASSERT_NE(c.find(zone), std::string::npos);
-                    c.replace(c.find(zone), zone.size(), "CONTACT_INIT='OUI', ALGO_CONT='PENALISATION', COEF_PENA_CONT=1.0e12)");
+                    c.replace(c.find(zone), zone.size(), "CONTACT_INIT='OUI', ALGO_CONT='PENALISATION', COEF_PENA_CONT=1.0e12");
                     const auto l2Check = c.find("TEST_TABLE(TABLE=TL");
                     ASSERT_NE(l2Check, std::string::npos);
                     c.erase(l2Check, c.find("FIN()", l2Check) - l2Check);
