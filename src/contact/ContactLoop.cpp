@@ -74,6 +74,10 @@ std::shared_ptr<ContactTerms> attachContact(MechanicalProblem& problem, const Ma
                                 stats.unmatched, xm.dim() == 2 ? "total length" : "total area", stats.unmatchedMeasure,
                                 missing));
     auto terms = std::make_shared<ContactTerms>(problem, material, definition, std::move(facets));
+    if (terms->mergedPenaltyPoints() > 0)
+        msg().infof("    penalised contact: {} contact points ({} merged with a point of the same gap at a shared facet "
+                    "vertex), one pressure unknown each",
+                    terms->points().size(), terms->mergedPenaltyPoints());
     // A rule of lower degree than the traces of the shape functions on the facets (the vertex rule
     // on HEXA8 cells, or on QUAD4 cells cut off their grid lines) would integrate the contact terms
     // only approximately: consistent point by point, but a solution the elements represent exactly

@@ -164,14 +164,50 @@ ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField
                 }
             }
             if (definition_->zones[zone].algorithm == ContactAlgorithm::Penalty) {
-                cp.multiplier = numbering.size() + extraUnknowns_++;
                 cp.scale = youngMax;
+                if (mergePenaltyPoint(cp)) continue;
+                cp.multiplier = numbering.size() + extraUnknowns_++;
             }
             points_.push_back(std::move(cp));
         }
     }
     active_.assign(points_.size(), 0);
     everActive_.assign(points_.size(), 0);
+}
+
+bool ContactTerms::mergePenaltyPoint(const ContactPoint& cp) {
+    // Points of the vertex rule (INTEGRATION='NOEUD') at a vertex shared by facets of one zone whose
+    // two sides are the same blocks have the same gap g(u): with one pressure unknown each, their
+    // equations lambda_i = kappa g(u) are dependent in the limit kappa -> infinity and MUMPS met null
+    // pivots from COEF_PENA_CONT * h / E ~ 1e13 (TETRA4, 1e22). Such points are one point with the sum
+    // of the weights: the same discrete problem, one pressure unknown.
+    std::vector<std::pair<int, double>> key;
+    double scale = 0.0;
+    for (size_t i = 0; i < cp.dofs.size(); ++i)
+        if (cp.gap[i] != 0.0) {
+            key.emplace_back(cp.dofs[i], cp.gap[i]);
+            scale = std::max(scale, std::abs(cp.gap[i]));
+        }
+    std::sort(key.begin(), key.end());
+    auto& candidates = penaltyPointsByDofs_[{cp.zone, key.empty() ? -1 : key.front().first}];
+    for (int p : candidates) {
+        ContactPoint& other = points_[size_t(p)];
+        std::vector<std::pair<int, double>> otherKey;
+        for (size_t i = 0; i < other.dofs.size(); ++i)
+            if (other.gap[i] != 0.0) otherKey.emplace_back(other.dofs[i], other.gap[i]);
+        std::sort(otherKey.begin(), otherKey.end());
+        if (otherKey.size() != key.size()) continue;
+        bool same = true;
+        for (size_t i = 0; same && i < key.size(); ++i)
+            same = otherKey[i].first == key[i].first && std::abs(otherKey[i].second - key[i].second) <= 1e-12 * scale;
+        if (!same) continue;
+        other.weight += cp.weight;
+        other.scale = std::max(other.scale, cp.scale);
+        ++mergedPenaltyPoints_;
+        return true;
+    }
+    candidates.push_back(static_cast<int>(points_.size()));
+    return false;
 }
 
 double ContactTerms::gap(int p, const std::vector<double>& u) const {

@@ -171,18 +171,37 @@ TEST(ContactIntegration, NodalPointsAtTheJunctionUseTheirOwnFacet) {
     EXPECT_EQ(atJunction, 4);
 }
 
-TEST(ContactIntegration, NodalPenaltyPointsEachCarryTheirPressure) {
-    // PENALISATION with INTEGRATION='NOEUD': two points per segment facet, each with its own pressure
-    // unknown, also where two facets share a vertex (two independent equations lambda = kappa g there).
+TEST(ContactIntegration, NodalPenaltyPointsAtASharedVertexShareTheirPressure) {
+    // PENALISATION with INTEGRATION='NOEUD': two points per segment facet, but the two points that
+    // neighbouring facets of one interface and one pair of blocks put at their shared vertex have the
+    // same gap: they are one point (summed weight, one pressure unknown), else their equations
+    // lambda = kappa g become dependent for large COEF_PENA_CONT. QUAD4 N = 5 (facets are sub-cell
+    // segments, two per cut cell): FISS1 is two chains of 5 facets (x < 0 and x > 0 of the junction),
+    // FISS2 and FISS3 one chain of 6 each: 22 facets, 44 vertex points, 26 distinct ones (facets + 1 per
+    // chain).
     const auto s = contacttest::scene(CellType::QUAD4, 5, ContactAlgorithm::Penalty, false, {"NOEUD", 0});
     const int facets = int(s.terms->facets().size());
-    EXPECT_EQ(int(s.terms->points().size()), 2 * facets);
-    EXPECT_EQ(s.terms->extraUnknowns(), 2 * facets);
+    EXPECT_EQ(facets, 22);
+    EXPECT_EQ(int(s.terms->points().size()), 26);
+    EXPECT_EQ(s.terms->mergedPenaltyPoints(), 18);
+    EXPECT_EQ(s.terms->extraUnknowns(), 26);
     std::vector<int> multipliers;
-    for (const auto& cp : s.terms->points()) multipliers.push_back(cp.multiplier);
+    std::map<int, double> weightByZone, measureByZone;
+    for (const auto& cp : s.terms->points()) {
+        multipliers.push_back(cp.multiplier);
+        weightByZone[cp.zone] += cp.weight;
+    }
+    for (const auto& f : s.terms->facets()) measureByZone[s.definition->zoneOfCrack(f.crack)] += f.measure;
+    for (const auto& [zone, w] : weightByZone) EXPECT_NEAR(w, measureByZone[zone], 1e-14 * w) << zone;
     std::sort(multipliers.begin(), multipliers.end());
     EXPECT_EQ(std::adjacent_find(multipliers.begin(), multipliers.end()), multipliers.end());
-    EXPECT_GE(multipliers.front(), s.problem->numbering().size());
+    EXPECT_EQ(multipliers.front(), s.problem->numbering().size());
+    EXPECT_EQ(multipliers.back(), s.problem->numbering().size() + 25);
+    // With the vertex points kept apart the 3D slab was singular from COEF_PENA_CONT = 1e22 (TETRA4);
+    // Nitsche points are never merged (each carries its own facet's stresses).
+    const auto n = contacttest::scene(CellType::QUAD4, 5, ContactAlgorithm::Nitsche, false, {"NOEUD", 0});
+    EXPECT_EQ(int(n.terms->points().size()), 2 * int(n.terms->facets().size()));
+    EXPECT_EQ(n.terms->mergedPenaltyPoints(), 0);
 }
 
 TEST(ContactIntegration, TraceDegreeOfTheParentShapeFunctions) {
