@@ -171,6 +171,49 @@ def plot_sweep(path, title, xlabel, series, threshold=1e-9, logx=True,
     _save(fig, path)
 
 
+def plot_penalty(path, records):
+    """Penalty sweep: L2 (left) and energy (right) relative errors against COEF_PENA_CONT, one line per
+    element and N, the analytic L2 error p/k dashed; a run that stopped with an error (a singular
+    system or a Newton failure, its cause named in the .mess) is a red triangle on the top edge."""
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.8))
+    keys = sorted({(r["element"], r["N"]) for r in records if r.get("algo") == "PENALISATION"},
+                  key=lambda k: (list(COLORS).index(k[0]) if k[0] in COLORS else 9, k[1]))
+    styles = ["-", "--", ":", "-."]
+    for ax, column, name in ((axes[0], "l2_rel", "L2 norm"), (axes[1], "energy_rel", "energy norm")):
+        top, labelled = 3e1, False
+        for element, n in keys:
+            rows = sorted((r for r in records if r.get("algo") == "PENALISATION" and r["element"] == element
+                           and r["N"] == n), key=lambda r: r["coef"])
+            ok = [(r["coef"], max(r[column], 1e-18)) for r in rows if r.get(column) is not None]
+            style = styles[[m for e, m in keys if e == element].index(n) % len(styles)]
+            if ok:
+                ax.plot([x for x, _ in ok], [y for _, y in ok], style, marker="o", markersize=4,
+                        color=COLORS.get(element), label=f"{element} N={n}")
+            stopped = [r["coef"] for r in rows if r.get(column) is None]
+            if stopped:
+                ax.plot(stopped, [top] * len(stopped), "^", color="red", markersize=8,
+                        label=None if labelled else "run stopped with an error naming its cause")
+                labelled = True
+        if column == "l2_rel" and keys:
+            # p/k of the first element (the analytic error is proportional to 1/k): over every coefficient
+            first = [r for r in records if r.get("expected_l2") and (r["element"], r["N"]) == keys[0]]
+            if first:
+                c = first[0]["expected_l2"] * first[0]["coef"]
+                coefs = sorted({r["coef"] for r in records if r.get("algo") == "PENALISATION"})
+                ax.plot(coefs, [c / x for x in coefs], "k--", linewidth=1,
+                        label=f"analytic p/k ({keys[0][0]} N={keys[0][1]})")
+        ax.axhline(1e-9, color="grey", linestyle=":", linewidth=0.8)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_ylim(1e-16, 1e2)
+        ax.set_xlabel("COEF_PENA_CONT")
+        ax.set_ylabel(f"relative error, {name}")
+        ax.set_title(f"PENALISATION: {name}")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
+    _save(fig, path)
+
+
 QUADRATURE_MARKERS = {"degree 1": "v", "degree 2": "^", "degree 3": "s", "degree 4": "D", "degree 5": "P",
                       "degree 6": "*", "catalogue": "o"}
 
