@@ -113,11 +113,9 @@ std::shared_ptr<ContactTerms> attachContact(MechanicalProblem& problem, const Ma
 
 namespace {
 
-// Cause of a singular system with penalised contact: the pressure unknowns (one per contact point)
-// are regularised by 1/COEF_PENA_CONT only; when the coefficient is huge next to E/h the points of
-// one facet act as exact constraints, more of them than the gap can follow, and their pressures
-// become numerically dependent (measured: 3D slab h = 2, E = 1e8: 1e18 solves, 1e20 is singular).
-std::string penaltySingularHint(const ContactTerms& terms) {
+// Largest COEF_PENA_CONT of the contact points and largest COEF_PENA_CONT x facet size / E (how far
+// the penalty is from the stiffness: beyond ~1e12 its equations near double precision).
+std::pair<double, double> penaltyStrength(const ContactTerms& terms) {
     const int dim = terms.definition().xfemModel().dim();
     double kappa = 0.0, ratio = 0.0;
     for (const auto& cp : terms.points()) {
@@ -127,6 +125,16 @@ std::string penaltySingularHint(const ContactTerms& terms) {
         kappa = std::max(kappa, k);
         ratio = std::max(ratio, k * h / cp.scale);
     }
+    return {kappa, ratio};
+}
+
+// Cause of a singular system with penalised contact: the pressure unknowns (one per contact point)
+// are regularised by 1/COEF_PENA_CONT only; when the coefficient is huge next to E/h the points of
+// one facet act as exact constraints, more of them than the gap can follow, and their pressures
+// become numerically dependent (measured on the 3D slab h = 2, E = 1e8: HEXA8 singular from 1e22,
+// TETRA4 and 2D at 1e24, docs/contact.md).
+std::string penaltySingularHint(const ContactTerms& terms) {
+    const auto [kappa, ratio] = penaltyStrength(terms);
     if (kappa == 0.0) return {};
     return fmt::format("The contact uses ALGO_CONT='PENALISATION' with COEF_PENA_CONT up to {:.3e} (COEF_PENA_CONT x "
                        "facet size / E up to {:.1e}): the contact pressures are regularised by 1/COEF_PENA_CONT only, "
@@ -180,9 +188,25 @@ ContactIncrementReport solveIncrementWithContact(MechanicalProblem& problem, Con
         }
         problem.invalidateMatrix();
     }
-    throw NumericalError(fmt::format("contact did not converge at INST {} in {} contact iterations (ITER_CONT_MAXI): "
-                                     "{} status change(s) at the last one, {} active points, contact residual {:.3e}",
-                                     inst, maxIter, out.last.changed, out.last.active, out.last.contactResidual));
+    std::string message = fmt::format("contact did not converge at INST {} in {} contact iterations (ITER_CONT_MAXI): "
+                                      "{} status change(s) at the last one, {} active points, contact residual {:.3e}",
+                                      inst, maxIter, out.last.changed, out.last.active, out.last.contactResidual);
+    // With a huge penalty the interpenetration of the active points, pressure / COEF_PENA_CONT, can
+    // sink below the round-off of the displacements: their gaps then change sign by round-off and the
+    // statuses cannot settle (measured: TRIA3 N = 41 at COEF_PENA_CONT = 1e24, p/k = 2e-18 m against
+    // displacements of 0.16 m).
+    const auto [kappa, ratio] = penaltyStrength(terms);
+    double umax = 0.0;
+    for (double v : problem.u) umax = std::max(umax, std::abs(v));
+    if (kappa > 0.0 && out.last.maxPressure / kappa < 1e-12 * umax)
+        message += fmt::format("\nPossible cause: ALGO_CONT='PENALISATION' with COEF_PENA_CONT up to {:.3e} "
+                               "(COEF_PENA_CONT x facet size / E up to {:.1e}): the interpenetration of the active "
+                               "points, contact pressure / COEF_PENA_CONT (at most {:.1e}), is below the round-off of "
+                               "the displacements (largest {:.3e}), so their gaps change sign by round-off and the "
+                               "contact statuses cannot settle. Lower COEF_PENA_CONT or use ALGO_CONT='STANDARD' "
+                               "(exact contact).",
+                               kappa, ratio, out.last.maxPressure / kappa, umax);
+    throw NumericalError(message);
 }
 
 }  // namespace ma::contact
