@@ -11,6 +11,7 @@
 
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
+#include "core/MallocHugePages.hpp"
 #include "core/Messages.hpp"
 #include "core/TestReport.hpp"
 #include "parser/RunState.hpp"
@@ -299,8 +300,9 @@ int supervisorMain(int argc, char** argv) {
 
     if (!run.failure) {
         run.commBaseName = fs::path(run.commFile).filename().string();
-        msg().infof("  command file: {}\n  message log : {}\n  result file : {}{}{}", run.commFile, outputs.mess,
-                    outputs.resu, opt.checkOnly ? "\n  mode        : syntax check only (--check-syntax)" : "",
+        msg().infof("  command file: {}\n  message log : {}\n  result file : {}\n  memory      : {}{}{}", run.commFile,
+                    outputs.mess, outputs.resu, mallocHugePagesState(),
+                    opt.checkOnly ? "\n  mode        : syntax check only (--check-syntax)" : "",
                     opt.subcellDegree ? fmt::format("\n  X-FEM       : --subcell-quadrature {} (volume sub-cells "
                                                     "integrated to degree {}, not code_aster's catalogue rules)",
                                                     opt.subcellDegree, opt.subcellDegree)
