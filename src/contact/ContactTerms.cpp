@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "core/Error.hpp"
 #include "fe/ElementKinematics.hpp"
@@ -52,6 +54,39 @@ Vec levelSetNormal(const xfem::CellCut& cut, const ContactFacet& facet, int node
     return g;
 }
 
+// Penalty points of the constructor by gap functional: (zone, first unknown) -> (point, sorted
+// nonzero gap coefficients), so that a point with the same gap as an earlier one is found.
+class PenaltyPointIndex {
+public:
+    using Key = std::vector<std::pair<int, double>>;
+
+    // The earlier point of `points` with cp's zone and gap (coefficients equal to 1e-12 of the
+    // largest), or nullptr; then cp is recorded as the next point appended to `points`.
+    ContactPoint* find(const ContactPoint& cp, std::vector<ContactPoint>& points) {
+        Key key;
+        double scale = 0.0;
+        for (size_t i = 0; i < cp.dofs.size(); ++i)
+            if (cp.gap[i] != 0.0) {
+                key.emplace_back(cp.dofs[i], cp.gap[i]);
+                scale = std::max(scale, std::abs(cp.gap[i]));
+            }
+        std::sort(key.begin(), key.end());
+        auto& candidates = byFirstDof_[{cp.zone, key.empty() ? -1 : key.front().first}];
+        for (const auto& [p, other] : candidates) {
+            if (other.size() != key.size()) continue;
+            bool same = true;
+            for (size_t i = 0; same && i < key.size(); ++i)
+                same = other[i].first == key[i].first && std::abs(other[i].second - key[i].second) <= 1e-12 * scale;
+            if (same) return &points[p];
+        }
+        candidates.emplace_back(points.size(), std::move(key));
+        return nullptr;
+    }
+
+private:
+    std::map<std::pair<int, int>, std::vector<std::pair<size_t, Key>>> byFirstDof_;
+};
+
 }  // namespace
 
 ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField& material,
@@ -67,6 +102,7 @@ ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField
 
     ElementIntegration ei;
     PointGeometry geo;
+    PenaltyPointIndex penaltyPoints;
     shortfalls_.assign(definition_->zones.size(), {});
     for (size_t f = 0; f < facets_.size(); ++f) {
         const ContactFacet& facet = facets_[f];
@@ -84,10 +120,11 @@ ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField
             // solutions the elements represent exactly (ssnv511g with the vertex rule: energy error
             // 5.8e-4): the facet takes the lowest Gauss rule exact for its traces instead, announced by
             // the alarm CONTACT_INTEGRATION (ContactLoop).
+            const int order = gaussOrderFor(dim, traceDegree);
             ++shortfall.replaced;
             shortfall.traceDegree = std::max(shortfall.traceDegree, traceDegree);
-            shortfall.replacementOrder = std::max(shortfall.replacementOrder, gaussOrderFor(dim, traceDegree));
-            rule = &facetRule(dim, ContactIntegration{"GAUSS", gaussOrderFor(dim, traceDegree)});
+            shortfall.replacementOrder = std::max(shortfall.replacementOrder, order);
+            rule = &facetRule(dim, ContactIntegration{"GAUSS", order});
         }
         // Nitsche parameter on the stiffest normal response of the two sides, the P-wave modulus
         // lambda + 2 mu (E (1 - nu) / ((1 + nu)(1 - 2 nu)) in 3D / D_PLAN): sigma_n(v) is bounded by it,
@@ -165,7 +202,17 @@ ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField
             }
             if (definition_->zones[zone].algorithm == ContactAlgorithm::Penalty) {
                 cp.scale = youngMax;
-                if (mergePenaltyPoint(cp)) continue;
+                if (ContactPoint* same = penaltyPoints.find(cp, points_)) {
+                    // Same gap as an earlier point (a facet vertex shared by facets between the same
+                    // blocks, INTEGRATION='NOEUD'): with one pressure unknown each their equations
+                    // lambda_i = kappa g(u) are dependent as kappa grows (MUMPS null pivots from
+                    // COEF_PENA_CONT * h / E ~ 1e13, TETRA4 at 1e22); one point with the summed weight
+                    // is the same discrete problem.
+                    same->weight += cp.weight;
+                    same->scale = std::max(same->scale, cp.scale);
+                    ++mergedPenaltyPoints_;
+                    continue;
+                }
                 cp.multiplier = numbering.size() + extraUnknowns_++;
             }
             points_.push_back(std::move(cp));
@@ -173,41 +220,6 @@ ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField
     }
     active_.assign(points_.size(), 0);
     everActive_.assign(points_.size(), 0);
-}
-
-bool ContactTerms::mergePenaltyPoint(const ContactPoint& cp) {
-    // Points of the vertex rule (INTEGRATION='NOEUD') at a vertex shared by facets of one zone whose
-    // two sides are the same blocks have the same gap g(u): with one pressure unknown each, their
-    // equations lambda_i = kappa g(u) are dependent in the limit kappa -> infinity and MUMPS met null
-    // pivots from COEF_PENA_CONT * h / E ~ 1e13 (TETRA4, 1e22). Such points are one point with the sum
-    // of the weights: the same discrete problem, one pressure unknown.
-    std::vector<std::pair<int, double>> key;
-    double scale = 0.0;
-    for (size_t i = 0; i < cp.dofs.size(); ++i)
-        if (cp.gap[i] != 0.0) {
-            key.emplace_back(cp.dofs[i], cp.gap[i]);
-            scale = std::max(scale, std::abs(cp.gap[i]));
-        }
-    std::sort(key.begin(), key.end());
-    auto& candidates = penaltyPointsByDofs_[{cp.zone, key.empty() ? -1 : key.front().first}];
-    for (int p : candidates) {
-        ContactPoint& other = points_[size_t(p)];
-        std::vector<std::pair<int, double>> otherKey;
-        for (size_t i = 0; i < other.dofs.size(); ++i)
-            if (other.gap[i] != 0.0) otherKey.emplace_back(other.dofs[i], other.gap[i]);
-        std::sort(otherKey.begin(), otherKey.end());
-        if (otherKey.size() != key.size()) continue;
-        bool same = true;
-        for (size_t i = 0; same && i < key.size(); ++i)
-            same = otherKey[i].first == key[i].first && std::abs(otherKey[i].second - key[i].second) <= 1e-12 * scale;
-        if (!same) continue;
-        other.weight += cp.weight;
-        other.scale = std::max(other.scale, cp.scale);
-        ++mergedPenaltyPoints_;
-        return true;
-    }
-    candidates.push_back(static_cast<int>(points_.size()));
-    return false;
 }
 
 double ContactTerms::gap(int p, const std::vector<double>& u) const {

@@ -19,7 +19,6 @@
 // vertex shared by several facets (the junction point among them) carries one point per facet,
 // each with the stresses of its own facet's two sides.
 #include <array>
-#include <map>
 #include <memory>
 #include <vector>
 
@@ -77,7 +76,7 @@ public:
     void tangent(const std::vector<double>& u, const std::function<void(int, int, double)>& add) const override;
     void residual(const std::vector<double>& u, std::vector<double>& R) const override;
     int extraUnknowns() const override { return extraUnknowns_; }
-    // Penalty points merged into an earlier point with the same gap (mergePenaltyPoint).
+    // Penalty points merged into an earlier point with the same gap (a shared facet vertex).
     int mergedPenaltyPoints() const { return mergedPenaltyPoints_; }
 
     // Initial statuses: CONTACT_INIT='OUI' zones all active, others inactive.
@@ -101,9 +100,6 @@ public:
 private:
     bool nitsche(int p) const { return definition_->zones[points_[p].zone].algorithm == ContactAlgorithm::Nitsche; }
     bool wantsActive(int p, const std::vector<double>& u) const;
-    // Adds cp's weight to an earlier penalty point of its zone with the same gap functional, if any
-    // (then cp is not kept).
-    bool mergePenaltyPoint(const ContactPoint& cp);
 
     std::shared_ptr<const ContactDefinition> definition_;
     std::vector<ContactFacet> facets_;
@@ -112,7 +108,6 @@ private:
     std::vector<RuleShortfall> shortfalls_;
     int extraUnknowns_ = 0;
     int mergedPenaltyPoints_ = 0;
-    std::map<std::pair<int, int>, std::vector<int>> penaltyPointsByDofs_;  // (zone, first dof) -> points
 };
 
 }  // namespace ma::contact
