@@ -15,6 +15,7 @@
 #include "core/Messages.hpp"
 #include "core/TestReport.hpp"
 #include "parser/RunState.hpp"
+#include "xfem/SubcellQuadrature.hpp"
 
 namespace py = pybind11;
 namespace fs = std::filesystem;
@@ -33,9 +34,8 @@ const char* kUsage =
     "or a degree 1..6 (every volume sub-cell uses the lowest rule exact for that polynomial degree).\n"
     "Exit status: 0 OK, 2 a TEST is NOOK, 1 error.\n";
 
-// Highest degree of --subcell-quadrature: xfem::kMaxSubcellDegree (src/xfem/SubcellQuadrature.hpp,
-// not linked into the supervisor; the unit tests check that both agree).
-constexpr int kMaxSubcellDegree = 6;
+// Highest degree of --subcell-quadrature: the range XfemModel accepts.
+using xfem::kMaxSubcellDegree;
 
 struct Options {
     std::string input;

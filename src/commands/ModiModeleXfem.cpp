@@ -21,11 +21,11 @@ namespace {
 // that a .mess always tells how the X-FEM elements were integrated.
 void logSubcellQuadrature(const xfem::XfemModel& xm) {
     struct Usage {
+        xfem::SubcellKind kind;
         int subcells = 0, points = 0;
     };
     // (skin, several interfaces) -> usage; the dimension is the model's for volume cells
     std::map<std::pair<bool, bool>, Usage> usage;
-    std::map<std::pair<bool, bool>, xfem::SubcellKind> kinds;
     int points = 0, volumePoints = 0, subcells = 0, volumeCells = 0;
     std::map<CellType, int> belowStrainDegree;  // parent type -> volume X-FEM cells
     for (int c : xm.xfemCells()) {
@@ -36,7 +36,7 @@ void logSubcellQuadrature(const xfem::XfemModel& xm) {
         const int n = static_cast<int>(xm.cut(c)->subcells.size());
         const int p = n * quadratureRule(xfem::subcellType(kind), xm.subcellRule(c)).size();
         auto& u = usage[{kind.skin, kind.severalCracks}];
-        kinds[{kind.skin, kind.severalCracks}] = kind;
+        u.kind = kind;
         u.subcells += n;
         u.points += p;
         subcells += n;
@@ -55,7 +55,7 @@ void logSubcellQuadrature(const xfem::XfemModel& xm) {
                     "keep the catalogue's rules",
                     degree, degree, degree);
     for (const auto& [key, u] : usage) {
-        const auto& kind = kinds.at(key);
+        const auto& kind = u.kind;
         const std::string used = xfem::subcellRule(kind, degree);
         const std::string catalogue = xfem::catalogueSubcellRule(kind);
         const CellType type = xfem::subcellType(kind);

@@ -33,7 +33,7 @@ std::array<double, 3> cross(const std::array<double, 3>& a, const std::array<dou
 }
 
 double distance(const std::array<double, 3>& a, const std::array<double, 3>& b) {
-    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+    return length(difference(a, b));
 }
 
 // Characteristic length of the parent (loncar).

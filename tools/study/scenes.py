@@ -212,9 +212,6 @@ def compression_comm(element, algo="STANDARD", coef=None, E=100.0e6, NU=0.3, sol
     Scaling: lengths by `size`, pressures by `pressure` (keep pressure/E fixed to keep the strains)."""
     modelisation, dim = ELEMENTS[element]
     zone = f"ALGO_CONT='{algo}'" + (f", COEF_PENA_CONT={coef!r}" if algo == "PENALISATION" else "")
-    # INTEGRATION='NOEUD' as ssnv511e-h (on HEXA8 miniaster replaces the vertex rule by TR3 FPG3,
-    # exact for the bilinear facet traces, with alarm CONTACT_INTEGRATION: docs/contact.md).
-    integration = "INTEGRATION='NOEUD', "
     shift_coef = coef if (algo == "PENALISATION" and reference == "penalised") else None
     plane_stress = modelisation in ("C_PLAN", "3D")  # 3D slab: free top face
     a = 5.0 * size
@@ -255,7 +252,9 @@ def compression_comm(element, algo="STANDARD", coef=None, E=100.0e6, NU=0.3, sol
     add(f"                       JONCTION=_F(FISSURE=FISS1, POINT={pt(-a)}))")
     add("MODELEK = MODI_MODELE_XFEM(MODELE_IN=MODELEIN, FISSURE=(FISS1, FISS2, FISS3), CONTACT='STANDARD')")
     add("CTXFEM = DEFI_CONTACT(MODELE=MODELEK, FORMULATION='XFEM', ITER_CONT_MAXI=10,")
-    add(f"                      ZONE=[_F({integration}CONTACT_INIT='OUI', GLISSIERE='NON', FISS_MAIT=F, {zone})")
+    # INTEGRATION='NOEUD' as ssnv511e-h (on HEXA8 miniaster replaces the vertex rule by TR3 FPG3,
+    # exact for the bilinear facet traces, with alarm CONTACT_INTEGRATION: docs/contact.md).
+    add(f"                      ZONE=[_F(INTEGRATION='NOEUD', CONTACT_INIT='OUI', GLISSIERE='NON', FISS_MAIT=F, {zone})")
     add("                            for F in (FISS1, FISS2, FISS3)])")
     add("ACIER = DEFI_MATERIAU(ELAS=_F(E=E, NU=NU))")
     add("CHAMPMAT = AFFE_MATERIAU(MAILLAGE=MAILLAG, MODELE=MODELEK, AFFE=_F(TOUT='OUI', MATER=ACIER))")
