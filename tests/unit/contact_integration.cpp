@@ -363,7 +363,8 @@ TEST(ContactIntegration, SchemesWithoutATriangleRuleAreNotImplementedIn3D) {
     for (const char* zone : {"INTEGRATION='SIMPSON', ORDRE_INT=2", "INTEGRATION='NCOTES'",
                              "INTEGRATION='NCOTES', ORDRE_INT=8"}) {
         const auto r = runComm(definition(true, zone), kMesh3d);
-        EXPECT_NE(r.status, 0) << zone;
+        EXPECT_EQ(r.status, 1) << zone;
+        EXPECT_FALSE(r.exists("out/t.resu")) << "no result file after an error";
         EXPECT_NE(r.output.find("DEFI_CONTACT (t.comm, line 10): ZONE[1]/INTEGRATION='"), std::string::npos) << r.output;
         EXPECT_NE(r.output.find("does not substitute another one"), std::string::npos) << r.output;
     }
