@@ -4,6 +4,8 @@
 // and the contact loop is logged.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "parser_run.hpp"
@@ -84,8 +86,8 @@ TEST(ContactCommands, PulledApartReleasesEveryPointAndLogsTheLoop) {
     EXPECT_NE(r.output.find("ELIM_ARETE"), std::string::npos);
     EXPECT_NE(r.output.find("ZONE[1]/ALGO_LAGR"), std::string::npos);
     // INTEGRATION='NOEUD': one point at each end of the 22 facets.
-    EXPECT_NE(r.output.find("contact iteration 1: 44 status change(s), 0 active"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("contact iteration 2: 0 status change(s), 0 active"), std::string::npos);
+    EXPECT_NE(r.output.find("contact iteration 1: 44 status change(s) (0 activated, 44 released), 0 active"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("contact iteration 2: 0 status change(s) (0 activated, 0 released), 0 active"), std::string::npos);
 }
 
 TEST(ContactCommands, IterContMaxiReachedIsAnError) {
@@ -94,4 +96,26 @@ TEST(ContactCommands, IterContMaxiReachedIsAnError) {
     EXPECT_NE(r.output.find("contact did not converge at INST 1 in 1 contact iterations (ITER_CONT_MAXI)"),
               std::string::npos)
         << r.output;
+}
+
+TEST(ContactCommands, AContactLoopThatCannotConvergeNamesThePointsThatKeepChanging) {
+    // ssnv513g (3D HEXA8, the inclined interface of the F junction) stopped after 2 contact iterations:
+    // its active set is still settling (555 -> 541 -> 534 -> 528 points), the error names the points
+    // that changed, where they are and their gap and contact function.
+    std::ifstream in(std::string(MINIASTER_SHARED_DIR) + "/astest/ssnv513g.comm");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string comm = text.str();
+    const auto at = comm.find("ITER_CONT_MAXI = 10");
+    ASSERT_NE(at, std::string::npos);
+    comm.replace(at, std::string("ITER_CONT_MAXI = 10").size(), "ITER_CONT_MAXI = 2");
+    const auto r = runComm(comm, std::string("--mesh '") + MINIASTER_SHARED_DIR + "/astest/ssnv511g.mmed'");
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("contact did not converge at INST 1 in 2 contact iterations (ITER_CONT_MAXI): 7 status "
+                            "change(s) at the last one, 534 active points"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("Points whose status changed at the last update:\n  FISS1 point at ("), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("facet in cell M"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("1 status change(s), now inactive, gap "), std::string::npos) << r.output;
 }
