@@ -119,3 +119,79 @@ TEST(ContactCommands, AContactLoopThatCannotConvergeNamesThePointsThatKeepChangi
     EXPECT_NE(r.output.find("facet in cell M"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("1 status change(s), now inactive, gap "), std::string::npos) << r.output;
 }
+
+namespace {
+
+// The pressed scene of the 2013 syntax: the contact CT given as the load CHC
+// (AFFE_CHAR_MECA(LIAISON_XFEM='OUI', CONTACT_XFEM=CT)); `solve` completes the STAT_NON_LINE call.
+std::string legacy(const std::string& extra, const std::string& solve) {
+    return scene("MX = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(F1, F2, F3), CONTACT='P1P1')\n"
+                 "CT = DEFI_CONTACT(MODELE=MX, FORMULATION='XFEM', "
+                 "ZONE=[_F(FISS_MAIT=F, CONTACT_INIT='OUI', INTEGRATION='NOEUD') for F in (F1, F2, F3)])\n"
+                 "MAT = DEFI_MATERIAU(ELAS=_F(E=1.0e8, NU=0.3))\n"
+                 "CM = AFFE_MATERIAU(MAILLAGE=MA, AFFE=_F(TOUT='OUI', MATER=MAT))\n"
+                 "CH = AFFE_CHAR_MECA(MODELE=MX, DDL_IMPO=(_F(GROUP_MA='LG', DX=0., H1X=0.), "
+                 "_F(GROUP_MA='LB', DY=0., H1Y=0.), _F(GROUP_MA='LD', DX=-0.01, H1X=0.), "
+                 "_F(GROUP_MA='LH', DY=-0.01, H1Y=0.)))\n"
+                 "CHC = AFFE_CHAR_MECA(MODELE=MX, LIAISON_XFEM='OUI', CONTACT_XFEM=CT)\n"
+                 "LI = DEFI_LIST_REEL(DEBUT=0., INTERVALLE=_F(JUSQU_A=1., NOMBRE=1))\n" +
+                 extra + "R = STAT_NON_LINE(MODELE=MX, CHAM_MATER=CM, COMP_ELAS=_F(RELATION='ELAS'), " + solve +
+                 "INCREMENT=_F(LIST_INST=LI))\nFIN()\n");
+}
+
+}  // namespace
+
+TEST(ContactCommands, TheContactLoadOf2013IsTheContactOfTheSolve) {
+    const auto r = runComm(legacy("", "EXCIT=(_F(CHARGE=CH), _F(CHARGE=CHC)), "), kMesh);
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("MODI_MODELE_XFEM: CONTACT='P1P1' (an older code_aster syntax) is read as CONTACT='STANDARD'"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("LIAISON_XFEM='OUI' (code_aster <= 2013): the X-FEM relations it added were those between "
+                            "the contact multipliers"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("EXCIT[2]/CHARGE=CHC (CONTACT_XFEM=CT): the contact of this solve, as with CONTACT=CT"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("contact iteration 1: 0 status change(s)"), std::string::npos) << r.output;
+    // Given both ways, it is the same contact.
+    const auto both = runComm(legacy("", "CONTACT=CT, EXCIT=(_F(CHARGE=CH), _F(CHARGE=CHC)), "), kMesh);
+    EXPECT_EQ(both.status, 0) << both.output;
+    EXPECT_NE(both.output.find("EXCIT[2]/CHARGE=CHC (CONTACT_XFEM=CT): the same contact as CONTACT"), std::string::npos)
+        << both.output;
+}
+
+TEST(ContactCommands, TheContactLoadOf2013IsRefusedOnlyWhereItConflicts) {
+    const std::string other = "CT2 = DEFI_CONTACT(MODELE=MX, FORMULATION='XFEM', ZONE=_F(FISS_MAIT=F1))\n";
+    const auto two = runComm(legacy(other, "CONTACT=CT2, EXCIT=(_F(CHARGE=CH), _F(CHARGE=CHC)), "), kMesh);
+    EXPECT_EQ(two.status, 1) << two.output;
+    EXPECT_NE(two.output.find("STAT_NON_LINE (t.comm, line 17): two contact definitions for one solve: "
+                              "CONTACT gives CT2, EXCIT[2]/CHARGE=CHC (CONTACT_XFEM=CT) gives CT."),
+              std::string::npos)
+        << two.output;
+    // The contact of another model.
+    const std::string model2 = "MX2 = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(F1, F2, F3), CONTACT='STANDARD')\n"
+                               "CH2 = AFFE_CHAR_MECA(MODELE=MX2, LIAISON_XFEM='OUI', CONTACT_XFEM=CT)\n";
+    const auto across = runComm(legacy(model2, "EXCIT=_F(CHARGE=CH), "), kMesh);
+    EXPECT_EQ(across.status, 1) << across.output;
+    EXPECT_NE(across.output.find("CONTACT_XFEM: CT was defined on the model MX, this load on MODELE MX2 (code_aster "
+                                 "XFEM2_11"),
+              std::string::npos)
+        << across.output;
+    // LIAISON_XFEM on a model without X-FEM.
+    const auto classical = runComm(legacy("CH3 = AFFE_CHAR_MECA(MODELE=MO, LIAISON_XFEM='OUI')\n", "EXCIT=_F(CHARGE=CH), "),
+                                   kMesh);
+    EXPECT_EQ(classical.status, 1) << classical.output;
+    EXPECT_NE(classical.output.find("LIAISON_XFEM='OUI': the model MO is not an X-FEM model"), std::string::npos)
+        << classical.output;
+    // MECA_STATIQUE solves no contact.
+    const auto linear = runComm(
+        legacy("RL = MECA_STATIQUE(MODELE=MX, CHAM_MATER=CM, EXCIT=(_F(CHARGE=CH), _F(CHARGE=CHC)))\n", "EXCIT=_F(CHARGE=CH), "),
+        kMesh);
+    EXPECT_EQ(linear.status, 1) << linear.output;
+    EXPECT_NE(linear.output.find("): EXCIT[2]/CHARGE=CHC carries the X-FEM contact CT "
+                                 "(AFFE_CHAR_MECA/CONTACT_XFEM); MECA_STATIQUE solves no contact: use STAT_NON_LINE"),
+              std::string::npos)
+        << linear.output;
+}
