@@ -963,7 +963,8 @@ def check_field(_ctx=None):
 def main():
     ap = argparse.ArgumentParser(prog="miniaster study", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("name", choices=["smooth", "stability", "penalty", "perf", "all", "check-field", "astest"])
+    ap.add_argument("name", choices=["smooth", "stability", "penalty", "perf", "all", "check-field", "astest",
+                                     "ssnv513e"])
     ap.add_argument("--full", action="store_true", help="the big grid (2D up to N=1001, perf at N=1001)")
     ap.add_argument("--out", default=os.path.join(ROOT, "docs", "study"))
     ap.add_argument("--work", default=None, help="keep the runs in this folder (default: temporary, removed)")
@@ -979,6 +980,9 @@ def main():
     args = ap.parse_args()
     if args.name == "check-field":
         return check_field()
+    if args.name == "ssnv513e":  # refinement study of the family file (docs/family.md)
+        import ssnv513e_refinement
+        return ssnv513e_refinement.main(["--build", args.build, "--out", args.out])
     ctx = Context(args)
     if not os.path.exists(ctx.binary):
         sys.exit(f"study: {ctx.binary} not found (build first)")
