@@ -139,6 +139,13 @@ std::string legacy(const std::string& extra, const std::string& solve) {
                  "INCREMENT=_F(LIST_INST=LI))\nFIN()\n");
 }
 
+// legacy(extra, solve) stops with exit 1 and an error containing `message`.
+void expectLegacyRefused(const std::string& extra, const std::string& solve, const std::string& message) {
+    const auto r = runComm(legacy(extra, solve), kMesh);
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
+}
+
 }  // namespace
 
 TEST(ContactCommands, TheContactLoadOf2013IsTheContactOfTheSolve) {
@@ -163,35 +170,21 @@ TEST(ContactCommands, TheContactLoadOf2013IsTheContactOfTheSolve) {
 }
 
 TEST(ContactCommands, TheContactLoadOf2013IsRefusedOnlyWhereItConflicts) {
-    const std::string other = "CT2 = DEFI_CONTACT(MODELE=MX, FORMULATION='XFEM', ZONE=_F(FISS_MAIT=F1))\n";
-    const auto two = runComm(legacy(other, "CONTACT=CT2, EXCIT=(_F(CHARGE=CH), _F(CHARGE=CHC)), "), kMesh);
-    EXPECT_EQ(two.status, 1) << two.output;
-    EXPECT_NE(two.output.find("STAT_NON_LINE (t.comm, line 17): two contact definitions for one solve: "
-                              "CONTACT gives CT2, EXCIT[2]/CHARGE=CHC (CONTACT_XFEM=CT) gives CT."),
-              std::string::npos)
-        << two.output;
+    expectLegacyRefused("CT2 = DEFI_CONTACT(MODELE=MX, FORMULATION='XFEM', ZONE=_F(FISS_MAIT=F1))\n",
+                        "CONTACT=CT2, EXCIT=(_F(CHARGE=CH), _F(CHARGE=CHC)), ",
+                        "STAT_NON_LINE (t.comm, line 17): two contact definitions for one solve: CONTACT gives CT2, "
+                        "EXCIT[2]/CHARGE=CHC (CONTACT_XFEM=CT) gives CT.");
     // The contact of another model.
-    const std::string model2 = "MX2 = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(F1, F2, F3), CONTACT='STANDARD')\n"
-                               "CH2 = AFFE_CHAR_MECA(MODELE=MX2, LIAISON_XFEM='OUI', CONTACT_XFEM=CT)\n";
-    const auto across = runComm(legacy(model2, "EXCIT=_F(CHARGE=CH), "), kMesh);
-    EXPECT_EQ(across.status, 1) << across.output;
-    EXPECT_NE(across.output.find("CONTACT_XFEM: CT was defined on the model MX, this load on MODELE MX2 (code_aster "
-                                 "XFEM2_11"),
-              std::string::npos)
-        << across.output;
+    expectLegacyRefused("MX2 = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(F1, F2, F3), CONTACT='STANDARD')\n"
+                        "CH2 = AFFE_CHAR_MECA(MODELE=MX2, LIAISON_XFEM='OUI', CONTACT_XFEM=CT)\n",
+                        "EXCIT=_F(CHARGE=CH), ",
+                        "CONTACT_XFEM: CT was defined on the model MX, this load on MODELE MX2 (code_aster XFEM2_11");
     // LIAISON_XFEM on a model without X-FEM.
-    const auto classical = runComm(legacy("CH3 = AFFE_CHAR_MECA(MODELE=MO, LIAISON_XFEM='OUI')\n", "EXCIT=_F(CHARGE=CH), "),
-                                   kMesh);
-    EXPECT_EQ(classical.status, 1) << classical.output;
-    EXPECT_NE(classical.output.find("LIAISON_XFEM='OUI': the model MO is not an X-FEM model"), std::string::npos)
-        << classical.output;
+    expectLegacyRefused("CH3 = AFFE_CHAR_MECA(MODELE=MO, LIAISON_XFEM='OUI')\n", "EXCIT=_F(CHARGE=CH), ",
+                        "LIAISON_XFEM='OUI': the model MO is not an X-FEM model");
     // MECA_STATIQUE solves no contact.
-    const auto linear = runComm(
-        legacy("RL = MECA_STATIQUE(MODELE=MX, CHAM_MATER=CM, EXCIT=(_F(CHARGE=CH), _F(CHARGE=CHC)))\n", "EXCIT=_F(CHARGE=CH), "),
-        kMesh);
-    EXPECT_EQ(linear.status, 1) << linear.output;
-    EXPECT_NE(linear.output.find("): EXCIT[2]/CHARGE=CHC carries the X-FEM contact CT "
-                                 "(AFFE_CHAR_MECA/CONTACT_XFEM); MECA_STATIQUE solves no contact: use STAT_NON_LINE"),
-              std::string::npos)
-        << linear.output;
+    expectLegacyRefused("RL = MECA_STATIQUE(MODELE=MX, CHAM_MATER=CM, EXCIT=(_F(CHARGE=CH), _F(CHARGE=CHC)))\n",
+                        "EXCIT=_F(CHARGE=CH), ",
+                        "): EXCIT[2]/CHARGE=CHC carries the X-FEM contact CT (AFFE_CHAR_MECA/CONTACT_XFEM); "
+                        "MECA_STATIQUE solves no contact: use STAT_NON_LINE");
 }
