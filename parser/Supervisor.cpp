@@ -120,7 +120,7 @@ std::string banner() {
     return fmt::format(
         "\n {0}\n  -- CODE_ASTER -- VERSION : miniaster {1} (runs code_aster command files)\n"
         "  Embedded Python {2}\n {0}\n",
-        std::string(78, '='), "0.1", PY_VERSION);
+        std::string(78, '='), MINIASTER_VERSION, PY_VERSION);
 }
 
 std::string timingSummary(const RunState& run) {

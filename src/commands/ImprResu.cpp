@@ -10,6 +10,7 @@
 #include "core/Messages.hpp"
 #include "core/Units.hpp"
 #include "fields/Fields.hpp"
+#include "commands/ImprResuGmsh.hpp"
 #include "med_io/MedWriter.hpp"
 #include "parser/CommandRegistry.hpp"
 
@@ -118,7 +119,12 @@ void printField(med::MedWriter& w, const ConceptPtr& field, const KeywordSet& oc
 
 ConceptPtr imprResu(const KeywordSet& kw, CommandContext& ctx) {
     const std::string format = kw.text("FORMAT", "MED");
-    if (format != "MED") throw NotImplemented("IMPR_RESU: FORMAT='" + format + "' is not supported; use FORMAT='MED'");
+    if (format == "GMSH") return imprResuGmsh(kw, ctx);
+    if (format != "MED")
+        throw NotImplemented("IMPR_RESU: FORMAT='" + format + "' is not supported; use FORMAT='MED' or 'GMSH'");
+    for (const auto& occ : kw.factor("RESU"))  // keywords of the GMSH output only
+        for (const char* k : {"TYPE_CHAM", "GROUP_MA", "MAILLE"})
+            if (occ.has(k)) throw NotImplemented(occ.pathOf(k) + " is not supported by miniaster's MED output");
     if (!ctx.units) throw UserError("IMPR_RESU: no logical units are defined for this run");
     const int unit = int(kw.integer("UNITE", 80));
     const std::string path = ctx.units->output(unit);
