@@ -15,6 +15,7 @@
 #include "core/Messages.hpp"
 #include "core/TestReport.hpp"
 #include "parser/RunState.hpp"
+#include "parser/StaticCheck.hpp"
 #include "xfem/SubcellQuadrature.hpp"
 
 namespace py = pybind11;
@@ -169,6 +170,7 @@ void executeCommandFile(RunState& run) {
         run.fail("SYNTAX_ERROR", "", line, text);
         return;
     }
+    if (!checkCommandFileStatically(source, run)) return;  // every visible problem at once, nothing run
     py::dict globals;
     globals["__builtins__"] = builtins;
     globals["__name__"] = "__main__";
