@@ -43,13 +43,13 @@ std::vector<int> selectedCells(const Mesh& mesh, const KeywordSet& occ) {
         return all;
     }
     std::vector<char> keep(size_t(mesh.cellCount()), 0);
-    for (const auto& g : occ.texts("GROUP_MA")) {
+    for (const auto& g : occ.has("GROUP_MA") ? occ.texts("GROUP_MA") : std::vector<std::string>{}) {
         if (!mesh.cellGroups.has(g))
             throw UserError(fmt::format("{}: the cell group '{}' does not exist in mesh {}", occ.pathOf("GROUP_MA"), g,
                                         mesh.name));
         for (int c : mesh.cellGroups.get(g)) keep[size_t(c)] = 1;
     }
-    for (const auto& m : occ.texts("MAILLE")) {
+    for (const auto& m : occ.has("MAILLE") ? occ.texts("MAILLE") : std::vector<std::string>{}) {
         const int c = mesh.findCell(m);
         if (c < 0) throw UserError(fmt::format("{}: the cell '{}' does not exist in mesh {}", occ.pathOf("MAILLE"), m, mesh.name));
         keep[size_t(c)] = 1;

@@ -123,8 +123,9 @@ def interface_nodes(grid):
     return set(np.nonzero(decode(element))[0]) if element is not None else set()
 
 
-def surface_pieces(grid):
-    """(corner lists, cell index) of what is drawn: 2D cells, or the faces of the 3D skin."""
+def surface_pieces(grid, interface):
+    """(corner lists, cell index) of what is drawn: 2D cells, or the faces of the 3D skin without
+    the lips of the interfaces (their nodes are all interface nodes)."""
     top = max(CELLS.get(t, (0, 0))[0] for t, _ in grid.cells)
     if top < 3:
         return [(list(c[:CELLS[t][1]]), k) for k, (t, c) in enumerate(grid.cells) if CELLS.get(t, (0,))[0] == 2]
@@ -138,16 +139,23 @@ def surface_pieces(grid):
             key = tuple(sorted(nodes))
             count[key] = count.get(key, 0) + 1
             faces[key] = (nodes, k)
-    return [faces[key] for key, n in count.items() if n == 1]
+    return [faces[key] for key, n in count.items() if n == 1 and not set(key) <= interface]
 
 
-def edges_of(pieces, nodes_wanted=None):
-    edges = set()
+def edge_counts(pieces):
+    counts = {}
     for corners, _ in pieces:
         for a, b in zip(corners, corners[1:] + corners[:1]):
-            if nodes_wanted is None or (a in nodes_wanted and b in nodes_wanted):
-                edges.add((min(a, b), max(a, b)))
-    return sorted(edges)
+            key = (min(a, b), max(a, b))
+            counts[key] = counts.get(key, 0) + 1
+    return counts
+
+
+def interface_edges(grid, counts, interface):
+    """2D: the border edges of the pieces between interface nodes (the lips; an edge inside a
+    block is shared by two pieces). 3D: the skin's edges between interface nodes (the traces)."""
+    return sorted(e for e, n in counts.items() if e[0] in interface and e[1] in interface
+                  and (grid.dim == 3 or n == 1))
 
 
 def piece_values(pieces, values, on_points):
@@ -159,7 +167,8 @@ def piece_values(pieces, values, on_points):
 def draw(grid, args):
     values, on_points, label = colour_values(grid, args)
     xyz = displaced(grid, args)
-    pieces = surface_pieces(grid)
+    interface = interface_nodes(grid)
+    pieces = surface_pieces(grid, interface)
     if not pieces:
         sys.exit(f"miniaster plot: {args.source} has no 2D cells or volumes to draw")
     colours = piece_values(pieces, values, on_points)
@@ -171,8 +180,8 @@ def draw(grid, args):
     cmap = plt.get_cmap("viridis").copy()
     cmap.set_bad("lightgrey")
     face_colours = cmap(norm(np.ma.masked_invalid(colours)))
-    interface = interface_nodes(grid)
-    mesh_edges, cut_edges = edges_of(pieces), edges_of(pieces, interface)
+    counts = edge_counts(pieces)
+    mesh_edges, cut_edges = sorted(counts), interface_edges(grid, counts, interface)
     fig = plt.figure(figsize=(8, 6.5), dpi=args.dpi)
     if grid.dim == 2:
         ax = fig.add_subplot(111)
