@@ -91,10 +91,24 @@ def check_png(path, width, height):
 
 
 def check_meshio(path):
+    """meshio reads the file (MED, or the VTU of `miniaster convert`); for a MED file its nodal
+    values are compared with h5py's, step by step (meshio names step i of F `F[i] - t`)."""
     import meshio
-    mesh = meshio.read(path, file_format="med")
+    is_med = not path.endswith(".vtu")
+    mesh = meshio.read(path, file_format="med") if is_med else meshio.read(path)
     fields = sorted(k for k in list(mesh.point_data) + list(mesh.cell_data) if not k.endswith("_tags"))
-    print(f"meshio: OK {len(mesh.points)} points, {sum(len(c.data) for c in mesh.cells)} cells, fields {fields}")
+    compared = 0
+    if is_med:
+        expected = list(med_nodal_fields(path).values())
+        got = [mesh.point_data[k] for k in mesh.point_data if k != "point_tags"]
+        if len(got) != len(expected):
+            sys.exit(f"meshio: {len(got)} nodal arrays, the MED file has {len(expected)}")
+        for (comps, values), array in zip(expected, got):
+            if not np.array_equal(array.reshape(values.shape), values, equal_nan=True):
+                sys.exit(f"meshio: values differ from the MED file's ({comps})")
+            compared += values.size
+    print(f"meshio: OK {len(mesh.points)} points, {sum(len(c.data) for c in mesh.cells)} cells, "
+          f"{compared} nodal values equal to h5py's, fields {fields}")
 
 
 def main():
