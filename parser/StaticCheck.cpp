@@ -62,7 +62,7 @@ def _check_call(call, command, level, context_keywords, f_is_ours, problems):
             continue  # **kwargs: seen by the run
         if kw.arg not in level:
             if not context_keywords:
-                problems.append((kw.value.lineno, command, _unknown_keyword(kw.arg, command, "", level)))
+                problems.append((call.lineno, command, _unknown_keyword(kw.arg, command, "", level)))
             continue
         sub = level[kw.arg][1]
         if sub is None or not f_is_ours:
@@ -71,7 +71,7 @@ def _check_call(call, command, level, context_keywords, f_is_ours, problems):
             where = "%s[%d]" % (kw.arg, i)
             for fkw in occurrence.keywords:
                 if fkw.arg is not None and fkw.arg not in sub:
-                    problems.append((fkw.value.lineno, command,
+                    problems.append((call.lineno, command,
                                      _unknown_keyword(where + "/" + fkw.arg, command, " in " + where, sub)))
 
 def check(source, catalog, unsupported):

@@ -265,8 +265,8 @@ ConceptPtr imprResuGmsh(const KeywordSet& kw, CommandContext& ctx) {
             std::vector<CellType> skipped;
             text += gmsh::view(*mesh, v, version, &skipped);
             if (!skipped.empty())
-                msg().alarm("ALGELINE_64", fmt::format("{}: view {}: {} cells of type {} are not written (the GMSH "
-                                                       "format holds linear cells; this type is not split)",
+                msg().alarm("ALGELINE_64", fmt::format("{}: view {}: {} cells of type {} are not written (code_aster's GMSH "
+                                                       "output does not split this type into linear cells)",
                                                        occ.path(), v.name, skipped.size(), cellTypeName(skipped.front())));
             msg().infof("    view {} ({} steps, {} cells)", v.name, v.times.size(), v.cells.size());
             ++written;

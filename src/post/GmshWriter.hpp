@@ -27,8 +27,8 @@ struct View {
 // The file header ($PostFormat), once per file; version 1 (= 1.0) or 2 (= 1.2).
 std::string header(int version);
 
-// One $View block. Cells of types the format cannot hold (PYRA13, and the quadratic prisms and
-// hexahedra whose split tables miniaster does not have) are left out and listed in `skipped`.
+// One $View block. Cells of the types code_aster does not write (PYRA13) are left out and listed
+// in `skipped`; quadratic cells are split into linear ones as code_aster's irgmtb does.
 std::string view(const Mesh& mesh, const View& v, int version, std::vector<CellType>* skipped = nullptr);
 
 // code_aster's number format E15.7E3 (" 1.0000000E+000"); |v| <= 1e-99 is written as 0.
