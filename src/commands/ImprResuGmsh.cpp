@@ -165,21 +165,8 @@ std::vector<View> gaussViews(const FieldSteps& f, const ViewRequest& r, const st
     return out;
 }
 
-std::vector<const ResultStep*> selectedSteps(const Result& result, const KeywordSet& occ) {
-    std::vector<const ResultStep*> steps;
-    if (occ.has("NUME_ORDRE")) {
-        for (auto order : occ.integers("NUME_ORDRE")) steps.push_back(&result.step(int(order)));
-    } else if (occ.has("INST")) {
-        const bool relative = occ.text("CRITERE") == "RELATIF";
-        for (double inst : occ.reals("INST")) steps.push_back(&result.stepAtInst(inst, occ.real("PRECISION"), relative));
-    } else {
-        for (const auto& s : result.steps) steps.push_back(&s);
-    }
-    return steps;
-}
-
 std::vector<View> resultViews(const Result& result, const KeywordSet& occ, const ViewRequest& r, const Mesh& mesh) {
-    const auto steps = selectedSteps(result, occ);
+    const auto steps = selectedResultSteps(result, occ);
     std::vector<std::string> names;
     if (occ.has("NOM_CHAM")) {
         names = occ.texts("NOM_CHAM");
