@@ -10,6 +10,7 @@
     ./miniaster study all         [--full]   the three above
     ./miniaster study check-field            checks of the manufactured field (derivatives, tractions)
     ./miniaster study astest                 regenerates astest/smooth_*.{comm,export,mmed}
+    ./miniaster study ssnv513e               ssnv513e (the family file, unmodified) refined N = 5 ... 81 (docs/family.md)
 
 Options: --out DIR (tables and plots, default a fresh folder miniaster-study-<name>-<time> here;
 --out docs/study updates the committed figures; astest reads docs/study by default), --work DIR (runs, default a temporary
