@@ -71,3 +71,13 @@ endforeach()
 add_test(NAME astest_subcell_degree2.contact_hexa8_n5
          COMMAND ${_run} $<TARGET_FILE:miniaster-bin> ${CMAKE_SOURCE_DIR}/astest/contact_hexa8_n5.export
                  ${CMAKE_BINARY_DIR}/astest-out/subcell_degree2_contact_hexa8_n5 -- --subcell-quadrature 2)
+
+# Invariants of the 3D F-junction cases read from their four runs' .mess (tests/fjunction_check.py):
+# no interpenetration where the answer is exact, the penetration of the stepped loads below 2e-3 m and
+# shrinking from N = 7 to 13, every contact solve converged within ITER_CONT_MAXI = 10.
+set(_fjunction_runs astest.fjunction_hexa8_n7 astest.fjunction_hexa8_n13 astest.fjunction_tetra4_n7
+    astest.fjunction_tetra4_n13)
+set_tests_properties(${_fjunction_runs} PROPERTIES FIXTURES_SETUP fjunction)
+add_test(NAME astest.fjunction_invariants
+         COMMAND ${Python_EXECUTABLE} ${CMAKE_SOURCE_DIR}/tests/fjunction_check.py ${CMAKE_BINARY_DIR}/astest-out)
+set_tests_properties(astest.fjunction_invariants PROPERTIES FIXTURES_REQUIRED fjunction)
