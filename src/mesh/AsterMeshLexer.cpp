@@ -1,7 +1,7 @@
 #include "mesh/AsterMeshLexer.hpp"
 
 #include <cctype>
-#include <cstdlib>
+#include <charconv>
 #include <cstring>
 
 #include "core/Error.hpp"
@@ -52,7 +52,7 @@ bool AsterLexer::moreOnLine() const {
 AsterToken AsterLexer::next() {
     peek();
     peeked_ = false;
-    return peek_;
+    return std::move(peek_);
 }
 
 void AsterLexer::restartAt(int line) {
@@ -86,7 +86,7 @@ AsterToken AsterLexer::scan() {
             tok.kind = AsterToken::Kind::Name;
             tok.text = s.substr(start, col_ - start);
         } else if (isDigit(c) || c == '.' || c == '+' || c == '-') {
-            scanNumber(s.substr(0, limit), col_, tok);
+            scanNumber(s, limit, col_, tok);
         } else if (c == '\'' || c == '"') {
             fail(tok.line, "quoted text where a name or a number is expected");
         } else {
@@ -103,40 +103,42 @@ AsterToken AsterLexer::scan() {
 
 // [+-]digits, or [+-]digits.digits / [+-].digits with an optional E|D exponent (blanks allowed
 // after the letter, as code_aster's lexer does); "1E5" without a decimal point is refused.
-void AsterLexer::scanNumber(const std::string& s, size_t& col, AsterToken& tok) const {
+void AsterLexer::scanNumber(const std::string& s, size_t limit, size_t& col, AsterToken& tok) const {
     const size_t start = col;
-    std::string normalised;
+    // The number in from_chars' syntax: no '+', 'E' for the exponent, no blank (at most 80 columns).
+    char normalised[kColumns + 1];
+    size_t length = 0;
     auto take = [&](bool keep) {
-        if (keep) normalised += s[col];
+        if (keep && s[col] != '+') normalised[length++] = s[col];
         ++col;
     };
     if (s[col] == '+' || s[col] == '-') take(true);
     size_t digits = 0;
-    while (col < s.size() && isDigit(s[col])) take(true), ++digits;
+    while (col < limit && isDigit(s[col])) take(true), ++digits;
     bool real = false;
-    if (col < s.size() && s[col] == '.') {
+    if (col < limit && s[col] == '.') {
         real = true;
         take(true);
-        while (col < s.size() && isDigit(s[col])) take(true), ++digits;
+        while (col < limit && isDigit(s[col])) take(true), ++digits;
     }
     if (digits == 0) fail(tok.line, "'" + s.substr(start, col - start + 1) + "' is not a number");
-    if (col < s.size() && std::strchr("EeDd", s[col]) != nullptr) {
+    if (col < limit && std::strchr("EeDd", s[col]) != nullptr) {
         if (!real)
             fail(tok.line, "'" + s.substr(start, col - start + 2) +
                                "...': a number with an exponent needs a decimal point (write 1.E5, not 1E5)");
-        normalised += 'E';
+        normalised[length++] = 'E';
         ++col;
-        while (col < s.size() && (s[col] == ' ' || s[col] == '\t')) ++col;
-        if (col < s.size() && (s[col] == '+' || s[col] == '-')) take(true);
+        while (col < limit && (s[col] == ' ' || s[col] == '\t')) ++col;
+        if (col < limit && (s[col] == '+' || s[col] == '-')) take(true);
         size_t expDigits = 0;
-        while (col < s.size() && isDigit(s[col])) take(true), ++expDigits;
+        while (col < limit && isDigit(s[col])) take(true), ++expDigits;
         if (expDigits == 0) fail(tok.line, "'" + s.substr(start, col - start) + "': exponent without digits");
     }
-    if (col < s.size() && (isLetter(s[col]) || s[col] == '_' || s[col] == '.'))
+    if (col < limit && (isLetter(s[col]) || s[col] == '_' || s[col] == '.'))
         fail(tok.line, "malformed number '" + s.substr(start, col - start + 1) + "'");
     tok.kind = real ? AsterToken::Kind::Real : AsterToken::Kind::Integer;
     tok.text = s.substr(start, col - start);
-    tok.value = std::strtod(normalised.c_str(), nullptr);
+    std::from_chars(normalised, normalised + length, tok.value);
 }
 
 }  // namespace ma

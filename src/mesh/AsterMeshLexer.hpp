@@ -42,7 +42,8 @@ public:
 
 private:
     AsterToken scan();
-    void scanNumber(const std::string& s, size_t& col, AsterToken& tok) const;
+    // Number starting at s[col] (columns before `limit` only).
+    void scanNumber(const std::string& s, size_t limit, size_t& col, AsterToken& tok) const;
 
     std::string source_;
     std::vector<std::string> lines_;

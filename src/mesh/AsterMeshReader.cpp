@@ -1,7 +1,6 @@
 #include "mesh/AsterMeshReader.hpp"
 
 #include <fstream>
-#include <set>
 #include <unordered_map>
 
 #include "core/Error.hpp"
@@ -51,7 +50,9 @@ private:
     BlockHeader readHeader(const AsterToken& keyword);
     bool atBlockEnd(const AsterToken& keyword);
     AsterToken recordName(const char* what, const AsterToken& keyword);
-    AsterToken recordItem(const AsterToken& record, const std::string& what);
+    // `what` names the item in an error message; called only when there is one.
+    template <class What>
+    AsterToken recordItem(const AsterToken& record, const What& what);
     std::string groupName(const AsterToken& tok, const std::string& name);
 
     std::shared_ptr<Mesh> build(int finLine);
@@ -145,11 +146,12 @@ AsterToken AsterMeshParser::recordName(const char* what, const AsterToken& keywo
 }
 
 // The next item of the record begun by `record`; records may wrap onto the following lines.
-AsterToken AsterMeshParser::recordItem(const AsterToken& record, const std::string& what) {
+template <class What>
+AsterToken AsterMeshParser::recordItem(const AsterToken& record, const What& what) {
     AsterToken tok = lex_.next();
     if (tok.kind == AsterToken::Kind::End || tok.is("FINSF") || tok.is("FIN"))
         lex_.fail(tok.line, "the record of '" + record.text + "' begun at line " + std::to_string(record.line) +
-                                " ends before its " + what + " (" +
+                                " ends before its " + what() + " (" +
                                 (tok.kind == AsterToken::Kind::End ? "end of file" : tok.text) + " found)");
     return tok;
 }
@@ -179,10 +181,10 @@ void AsterMeshParser::readCoordinates(const AsterToken& keyword, int dim) {
         const AsterToken name = recordName("node", keyword);
         NodeRecord node{name.text, {}, name.line};
         for (int k = 0; k < dim; ++k) {
-            const std::string what = "coordinate " + std::string(1, "XYZ"[k]);
+            auto what = [k] { return "coordinate " + std::string(1, "XYZ"[k]); };
             const AsterToken value = recordItem(name, what);
             if (!value.isNumber())
-                lex_.fail(value.line, "'" + value.text + "' where the " + what + " of node " + name.text +
+                lex_.fail(value.line, "'" + value.text + "' where the " + what() + " of node " + name.text +
                                           " is expected (" + keyword.text + ": " + std::to_string(dim) +
                                           " numbers per node)");
             node.xyz[size_t(k)] = value.value;
@@ -198,12 +200,14 @@ void AsterMeshParser::readCells(const AsterToken& keyword, CellType type) {
         const AsterToken name = recordName("cell", keyword);
         CellRecord cell{type, name.text, {}, name.line};
         for (int k = 1; k <= count; ++k) {
-            const std::string what = "node " + std::to_string(k) + " of " + std::to_string(count) + " (" + keyword.text + ")";
-            const AsterToken node = recordItem(name, what);
+            auto what = [&, k] {
+                return "node " + std::to_string(k) + " of " + std::to_string(count) + " (" + keyword.text + ")";
+            };
+            AsterToken node = recordItem(name, what);
             if (node.kind != AsterToken::Kind::Name)
-                lex_.fail(node.line, "'" + node.text + "' where " + what + " of cell " + name.text +
+                lex_.fail(node.line, "'" + node.text + "' where " + what() + " of cell " + name.text +
                                          " is expected (a node name)");
-            cell.nodes.push_back(node.text);
+            cell.nodes.push_back(std::move(node.text));
         }
         cells_.push_back(std::move(cell));
     }
@@ -263,13 +267,13 @@ void AsterMeshParser::addGroups(const std::vector<GroupRecord>& records,
         if (out.has(group.name))
             lex_.fail(group.line, kind + std::string(" '") + group.name + "' is defined twice");
         std::vector<int> members;
-        std::set<int> seen;
+        std::vector<char> seen(index.size(), 0);
         for (const auto& [name, line] : group.members) {
             auto it = index.find(name);
             if (it == index.end())
                 lex_.fail(line, kind + std::string(" '") + group.name + "' names " + (ofNodes ? "node" : "cell") +
                                     " '" + name + "', which the file does not define");
-            if (seen.insert(it->second).second)
+            if (!seen[size_t(it->second)]++)
                 members.push_back(it->second);
             else
                 report_.alarms.emplace_back(ofNodes ? "MODELISA5_6" : "MODELISA5_8",
