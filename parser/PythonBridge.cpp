@@ -291,7 +291,7 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
         ctx.commFile = run.commFile;
         ctx.line = line;
         ctx.units = &run.units;
-        ctx.subcellDegree = run.subcellDegree;
+        ctx.runOptions = run.runOptions;
         if (kw.simpleKeywords().count("INFO")) ctx.info = static_cast<int>(kw.integer("INFO"));
 
         // Echo in code_aster's style.

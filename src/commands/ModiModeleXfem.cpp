@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
@@ -11,11 +12,40 @@
 #include "fe/Quadrature.hpp"
 #include "fe/Model.hpp"
 #include "parser/CommandRegistry.hpp"
+#include "parser/RunOptions.hpp"
+#include "xfem/SubcellQuadrature.hpp"
 #include "xfem/XfemDirichlet.hpp"
 #include "xfem/XfemModel.hpp"
 
 namespace ma {
 namespace {
+
+// Expert run option `--subcell-quadrature RULE` (not a .comm keyword): 'catalogue' (0: the X-FEM
+// sub-cell rules of code_aster's element catalogues) or a polynomial degree 1..kMaxSubcellDegree
+// of the volume sub-cell rules. nullopt: not a rule.
+std::optional<int> subcellDegreeOf(const std::string& rule) {
+    if (rule == "catalogue") return 0;
+    if (rule.size() == 1 && rule[0] >= '1' && rule[0] <= '0' + xfem::kMaxSubcellDegree) return rule[0] - '0';
+    return std::nullopt;
+}
+
+const RunOptionRegistration subcellQuadratureOption(RunOption{
+    "subcell-quadrature", "RULE",
+    "--subcell-quadrature (expert option, not a code_aster keyword): RULE = catalogue (default: the X-FEM\n"
+    "sub-cell rules of code_aster's element catalogues) or a degree 1..6 (every volume sub-cell uses the\n"
+    "lowest rule exact for that polynomial degree).",
+    [](const std::string& rule) {
+        return subcellDegreeOf(rule) ? std::string()
+                                     : fmt::format("'{}' is not a rule (catalogue, or a polynomial degree 1..{})", rule,
+                                                   xfem::kMaxSubcellDegree);
+    },
+    [](const std::string& rule) {
+        const int degree = *subcellDegreeOf(rule);
+        return degree ? fmt::format("X-FEM       : --subcell-quadrature {} (volume sub-cells integrated to degree {}, "
+                                    "not code_aster's catalogue rules)",
+                                    degree, degree)
+                      : std::string();
+    }});
 
 // Which rule each kind of sub-cell uses, and whether it is the catalogue's or the run option's, so
 // that a .mess always tells how the X-FEM elements were integrated.
@@ -103,7 +133,9 @@ ConceptPtr modiModeleXfem(const KeywordSet& kw, CommandContext& ctx) {
     const double criterion = kw.text("PRETRAITEMENTS", "AUTO") == "SANS" ? 1e-4 : 1e-15;
 
     auto out = std::make_shared<Model>(*in);
-    auto xm = std::make_shared<xfem::XfemModel>(*out, cracks, mode, criterion, ctx.subcellDegree);
+    const auto rule = ctx.runOptions.find("subcell-quadrature");
+    const int degree = rule == ctx.runOptions.end() ? 0 : *subcellDegreeOf(rule->second);
+    auto xm = std::make_shared<xfem::XfemModel>(*out, cracks, mode, criterion, degree);
     out->enrichment = xm;
 
     std::map<std::pair<int, int>, int> types;  // (cracks seen, slots) -> elements
