@@ -31,7 +31,7 @@ ConceptPtr buildMechanicalLoad(const KeywordSet& kw, bool functions) {
     const Mesh& mesh = *model->mesh;
     auto load = std::make_shared<MechanicalLoad>();
     load->model = model;
-    if (kw.text("LIAISON_XFEM", "NON") == "OUI")
+    if (kw.has("LIAISON_XFEM") && kw.text("LIAISON_XFEM") == "OUI")
         throw NotImplemented("AFFE_CHAR_MECA/LIAISON_XFEM='OUI' (legacy X-FEM syntax) is not supported");
     if (kw.has("CONTACT_XFEM"))
         throw NotImplemented("AFFE_CHAR_MECA/CONTACT_XFEM (legacy X-FEM contact as a load) is not supported; "

@@ -11,13 +11,13 @@ namespace ma {
 namespace {
 
 ConceptPtr lireMaillage(const KeywordSet& kw, CommandContext& ctx) {
-    const std::string format = kw.text("FORMAT", "MED");
+    const std::string format = kw.text("FORMAT");
     if (format != "MED")
         throw NotImplemented("LIRE_MAILLAGE: FORMAT='" + format + "' is not supported; convert the mesh to MED");
     if (!ctx.units) throw UserError("LIRE_MAILLAGE: no logical units are defined for this run");
-    const int unit = int(kw.integer("UNITE", 20));
+    const int unit = int(kw.integer("UNITE"));
     const std::string path = ctx.units->input(unit);
-    const std::string nomMed = kw.text("NOM_MED", "");
+    const std::string nomMed = kw.has("NOM_MED") ? kw.text("NOM_MED") : std::string();  // "": the first mesh
 
     med::MeshReadReport report;
     auto mesh = med::readMesh(path, nomMed, &report);
@@ -28,7 +28,7 @@ ConceptPtr lireMaillage(const KeywordSet& kw, CommandContext& ctx) {
                                      " meshes; the first one, '" + report.meshName + "', is read (use NOM_MED to choose)");
 
     bool check = true;
-    for (const auto& occ : kw.factor("VERI_MAIL")) check = occ.text("VERIF", "OUI") == "OUI";
+    for (const auto& occ : kw.factor("VERI_MAIL")) check = occ.text("VERIF") == "OUI";
     if (check)
         for (const auto& defect : meshDefects(*mesh)) msg().alarm("MODELISA_VERI_MAIL", "mesh " + path + ": " + defect);
 

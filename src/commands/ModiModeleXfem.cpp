@@ -119,7 +119,7 @@ ConceptPtr modiModeleXfem(const KeywordSet& kw, CommandContext& ctx) {
                         " is already an X-FEM model; give the classical model made by AFFE_MODELE");
     std::vector<std::shared_ptr<const xfem::Crack>> cracks;
     for (const auto& c : kw.objects<xfem::Crack>("FISSURE")) cracks.push_back(c);
-    const std::string contact = kw.text("CONTACT", "SANS");
+    const std::string contact = kw.text("CONTACT");
     const xfem::XfemContact mode = contact == "SANS" ? xfem::XfemContact::None : xfem::XfemContact::Standard;
     if (contact != "SANS" && contact != "STANDARD" && contact != "P1P1" && contact != "OUI")
         throw NotImplemented(kw.pathOf("CONTACT") + "='" + contact + "' is not supported (SANS, STANDARD)");
@@ -130,7 +130,7 @@ ConceptPtr modiModeleXfem(const KeywordSet& kw, CommandContext& ctx) {
     // region from the discrete space and breaks the exact rigid-block answer (5e-13 at a fraction
     // of 3e-17, interfaces 1e-4 h off a node row near a junction; docs/xfem.md). So 'AUTO'/'FORCE'
     // only drop domains whose linear size is round-off of the cell's (1e-15); 'SANS' keeps 1e-4.
-    const double criterion = kw.text("PRETRAITEMENTS", "AUTO") == "SANS" ? 1e-4 : 1e-15;
+    const double criterion = kw.text("PRETRAITEMENTS") == "SANS" ? 1e-4 : 1e-15;
 
     auto out = std::make_shared<Model>(*in);
     const auto rule = ctx.runOptions.find("subcell-quadrature");
