@@ -234,6 +234,93 @@ ConceptPtr makeFormula(const KeywordSet& kw, const py::dict& context, const py::
     return std::make_shared<Formula>(kw.text("VALE"), kw.texts("NOM_PARA"), context, globals, run.commFile, line);
 }
 
+// reuse= (reentrant commands only): the object it names, taken out of the keywords; null without.
+ConceptPtr takeReused(const cata::Command& command, py::dict keywords, const std::string& resultName) {
+    const std::string& name = command.name;
+    ConceptPtr reused;
+    if (keywords.contains("reuse")) {
+        py::object r = keywords["reuse"];
+        PyDict_DelItemString(keywords.ptr(), "reuse");
+        if (command.reentrant == cata::Reuse::No)
+            throw UserError(fmt::format("reuse= is not allowed: {} is not a reentrant command", name));
+        if (!py::isinstance<ConceptHandle>(r))
+            throw UserError(fmt::format("reuse= expects a concept, got {}", toCallValue(r).describe()));
+        reused = r.cast<ConceptHandle&>().object;
+        if (!resultName.empty() && !reused->name.empty() && reused->name != resultName)
+            throw UserError(fmt::format("reuse={} but the result is assigned to {}: a reentrant command "
+                                        "modifies the object given by reuse=, assign the result to it",
+                                        reused->name, resultName));
+    }
+    if (!reused && command.reentrant == cata::Reuse::Mandatory)
+        throw UserError(fmt::format("{0} modifies its input in place: reuse= is mandatory (write X = {0}(reuse=X, "
+                                    "...) with the object it modifies)",
+                                    name));
+    return reused;
+}
+
+// The echo of the call in code_aster's style (and the alarm of a file that does not start with DEBUT).
+void echoCommand(const CommandContext& ctx, const KeywordSet& kw, const py::dict& context, const std::string& resultType) {
+    auto& run = RunState::current();
+    const std::string& name = ctx.command;
+    ++run.commandCount;
+    std::string extra;
+    for (auto [k, v] : context) {
+        // Functions by name (their repr holds an address, which would make logs differ run to run).
+        const std::string shown = py::hasattr(v, "__name__") && !py::isinstance<ConceptHandle>(v)
+                                      ? v.attr("__name__").cast<std::string>()
+                                      : py::repr(v).cast<std::string>();
+        extra += fmt::format("    {}={},\n", py::str(k).cast<std::string>(), shown);
+    }
+    msg().info(fmt::format("\n # {}\n # Command #{:04d} from {}, line {}{}\n{}\n", std::string(78, '-'),
+                           run.commandCount, run.commBaseName, ctx.line,
+                           resultType.empty() ? "" : ", result of type " + resultType,
+                           echoCall(ctx.resultName, name, kw, extra)));
+    if (!run.debutSeen && name != "DEBUT" && !run.missingDebutReported) {
+        run.missingDebutReported = true;
+        msg().alarm("SUPERVIS_1", "The command file does not start with DEBUT().");
+    }
+}
+
+// Runs the validated call: DEBUT, FIN, FORMULE and PRE_GIBI here, the others through the registry
+// (or not at all with --check-syntax). Checks the result's type against the catalog.
+ConceptPtr execute(CommandContext& ctx, const KeywordSet& kw, const py::dict& context, py::object frame,
+                   const std::string& resultType) {
+    auto& run = RunState::current();
+    const std::string& name = ctx.command;
+    ConceptPtr result;
+    if (name == "DEBUT") {
+        if (run.debutSeen) throw UserError("DEBUT is called twice");
+        run.debutSeen = true;
+    } else if (name == "FIN") {
+        run.finSeen = true;
+        run.recordTiming(name, 0.0);
+        throw EndOfRun{};
+    } else if (name == "FORMULE") {
+        result = makeFormula(kw, context, frame.attr("f_globals").cast<py::dict>(), ctx.line);
+    } else if (name == "PRE_GIBI") {
+        msg().info("    PRE_GIBI is a no-op in miniaster: LIRE_MAILLAGE reads the MED mesh of unit " +
+                   std::to_string(kw.integer("UNITE_MAILLAGE")) + " instead of a converted GIBI mesh");
+    } else if (run.checkOnly) {
+        if (!resultType.empty()) result = std::make_shared<SyntaxPlaceholder>(resultType);
+        msg().info("    syntax checked; not executed (--check-syntax)");
+    } else {
+        const CommandFunction* fn = CommandRegistry::instance().find(name);
+        if (isDisabledForTests(name)) fn = nullptr;
+        if (!fn) throw NotImplemented(name + " is not implemented yet in miniaster");
+        {
+            // Commands run without the GIL: they may use threads; formulas re-acquire it.
+            py::gil_scoped_release noGil;
+            result = (*fn)(kw, ctx);
+        }
+        if (!result && !resultType.empty())
+            throw InternalError(fmt::format("{} returned no {}", name, resultType));
+        if (result && !resultType.empty() && result->typeName() != resultType)
+            throw InternalError(fmt::format("{} returned a concept of type {}, the catalog says {}", name,
+                                            result->typeName(), resultType));
+    }
+    return result;
+}
+
 py::object runCommand(const std::string& name, py::object frame, py::tuple args, py::dict keywords) {
     auto& run = RunState::current();
     if (run.failure) throw AbortRun{};
@@ -250,26 +337,7 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
             throw UserError(fmt::format("{} takes keyword arguments only (got {} positional argument{})", name,
                                         args.size(), args.size() > 1 ? "s" : ""));
 
-        // reuse= (reentrant commands only).
-        ConceptPtr reused;
-        if (keywords.contains("reuse")) {
-            py::object r = keywords["reuse"];
-            PyDict_DelItemString(keywords.ptr(), "reuse");
-            if (command->reentrant == cata::Reuse::No)
-                throw UserError(fmt::format("reuse= is not allowed: {} is not a reentrant command", name));
-            if (!py::isinstance<ConceptHandle>(r))
-                throw UserError(fmt::format("reuse= expects a concept, got {}", toCallValue(r).describe()));
-            reused = r.cast<ConceptHandle&>().object;
-            if (!resultName.empty() && !reused->name.empty() && reused->name != resultName)
-                throw UserError(fmt::format("reuse={} but the result is assigned to {}: a reentrant command "
-                                            "modifies the object given by reuse=, assign the result to it",
-                                            reused->name, resultName));
-        }
-
-        if (!reused && command->reentrant == cata::Reuse::Mandatory)
-            throw UserError(fmt::format("{0} modifies its input in place: reuse= is mandatory (write X = {0}(reuse=X, "
-                                        "...) with the object it modifies)",
-                                        name));
+        const ConceptPtr reused = takeReused(*command, keywords, resultName);
 
         // Python arguments -> checked keyword tree. FORMULE keeps its extra keywords as Python objects.
         CallArguments callArgs;
@@ -291,62 +359,15 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
         ctx.commFile = run.commFile;
         ctx.line = line;
         ctx.units = &run.units;
-        ctx.subcellDegree = run.subcellDegree;
+        ctx.runOptions = run.runOptions;
         if (kw.simpleKeywords().count("INFO")) ctx.info = static_cast<int>(kw.integer("INFO"));
 
-        // Echo in code_aster's style.
-        ++run.commandCount;
-        std::string extra;
-        for (auto [k, v] : context) {
-            // Functions by name (their repr holds an address, which would make logs differ run to run).
-            const std::string shown = py::hasattr(v, "__name__") && !py::isinstance<ConceptHandle>(v)
-                                          ? v.attr("__name__").cast<std::string>()
-                                          : py::repr(v).cast<std::string>();
-            extra += fmt::format("    {}={},\n", py::str(k).cast<std::string>(), shown);
-        }
         const std::string resultType = command->resultType(kw);
-        msg().info(fmt::format("\n # {}\n # Command #{:04d} from {}, line {}{}\n{}\n", std::string(78, '-'),
-                               run.commandCount, run.commBaseName, line,
-                               resultType.empty() ? "" : ", result of type " + resultType,
-                               echoCall(resultName, name, kw, extra)));
-        if (!run.debutSeen && name != "DEBUT" && !run.missingDebutReported) {
-            run.missingDebutReported = true;
-            msg().alarm("SUPERVIS_1", "The command file does not start with DEBUT().");
-        }
+        echoCommand(ctx, kw, context, resultType);
 
-        ConceptPtr result;
         std::snprintf(run.runningCommand, sizeof(run.runningCommand), "%s", name.c_str());
         run.runningLine = line;
-        if (name == "DEBUT") {
-            if (run.debutSeen) throw UserError("DEBUT is called twice");
-            run.debutSeen = true;
-        } else if (name == "FIN") {
-            run.finSeen = true;
-            run.recordTiming(name, 0.0);
-            throw EndOfRun{};
-        } else if (name == "FORMULE") {
-            result = makeFormula(kw, context, frame.attr("f_globals").cast<py::dict>(), line);
-        } else if (name == "PRE_GIBI") {
-            msg().info("    PRE_GIBI is a no-op in miniaster: LIRE_MAILLAGE reads the MED mesh of unit " +
-                       std::to_string(kw.integer("UNITE_MAILLAGE")) + " instead of a converted GIBI mesh");
-        } else if (run.checkOnly) {
-            if (!resultType.empty()) result = std::make_shared<SyntaxPlaceholder>(resultType);
-            msg().info("    syntax checked; not executed (--check-syntax)");
-        } else {
-            const CommandFunction* fn = CommandRegistry::instance().find(name);
-            if (isDisabledForTests(name)) fn = nullptr;
-            if (!fn) throw NotImplemented(name + " is not implemented yet in miniaster");
-            {
-                // Commands run without the GIL: they may use threads; formulas re-acquire it.
-                py::gil_scoped_release noGil;
-                result = (*fn)(kw, ctx);
-            }
-            if (!result && !resultType.empty())
-                throw UserError(fmt::format("internal error: {} returned no {}", name, resultType));
-            if (result && !resultType.empty() && result->typeName() != resultType)
-                throw UserError(fmt::format("internal error: {} returned a concept of type {}, the catalog says {}",
-                                            name, result->typeName(), resultType));
-        }
+        const ConceptPtr result = execute(ctx, kw, context, frame, resultType);
         // The result takes the variable's name, unless it is one of the call's input objects returned
         // as is (it keeps its name; with reuse= the names are the same).
         if (result && !resultName.empty() && (result == reused || !isInput(callArgs, result))) result->name = resultName;
@@ -370,6 +391,8 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
         run.fail("ERROR", name, line, e.what());
     } catch (const NumericalError& e) {
         run.fail("ERROR", name, line, std::string("numerical failure: ") + e.what());
+    } catch (const InternalError& e) {
+        run.fail("ERROR", name, line, std::string("internal error of miniaster (please report it): ") + e.what());
     } catch (const std::exception& e) {
         run.fail("ERROR", name, line, std::string("unexpected error: ") + e.what());
     } catch (...) {

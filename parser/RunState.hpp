@@ -1,6 +1,7 @@
 #pragma once
 // State of one run of a command file, shared by the supervisor (command line, outputs,
 // diagnostic) and the Python bridge (command calls).
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,7 +30,7 @@ public:
     std::string commFile;      // path of the command file
     std::string commBaseName;  // for messages: "ssnv511a.comm"
     bool checkOnly = false;    // --check-syntax: validate every call, execute none
-    int subcellDegree = 0;     // --subcell-quadrature: 0 catalogue, else the degree (CommandContext)
+    std::map<std::string, std::string> runOptions;  // expert options given (parser/RunOptions.hpp)
     bool debutSeen = false;
     bool finSeen = false;
     bool missingDebutReported = false;

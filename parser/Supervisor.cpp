@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "core/AtomicFile.hpp"
@@ -14,9 +15,9 @@
 #include "core/MallocHugePages.hpp"
 #include "core/Messages.hpp"
 #include "core/TestReport.hpp"
+#include "parser/RunOptions.hpp"
 #include "parser/RunState.hpp"
 #include "parser/StaticCheck.hpp"
-#include "xfem/SubcellQuadrature.hpp"
 
 namespace py = pybind11;
 namespace fs = std::filesystem;
@@ -25,18 +26,20 @@ namespace ma {
 
 namespace {
 
-const char* kUsage =
-    "usage: miniaster run CASE.export [--out-dir DIR] [--check-syntax] [--subcell-quadrature RULE]\n"
-    "       miniaster run CASE.comm [--mesh MESH.med] [--out-dir DIR] [--check-syntax] [--subcell-quadrature RULE]\n"
-    "Runs a code_aster command file. Writes <case>.mess (message log) and <case>.resu (TEST lines,\n"
-    "tables) in DIR (default: the current folder). --check-syntax validates every command call\n"
-    "against the catalog without executing any. --subcell-quadrature (expert option, not a code_aster\n"
-    "keyword): RULE = catalogue (default: the X-FEM sub-cell rules of code_aster's element catalogues)\n"
-    "or a degree 1..6 (every volume sub-cell uses the lowest rule exact for that polynomial degree).\n"
-    "Exit status: 0 OK, 2 a TEST is NOOK, 1 error.\n";
-
-// Highest degree of --subcell-quadrature: the range XfemModel accepts.
-using xfem::kMaxSubcellDegree;
+// The usage text, with the expert run options the engine registered (parser/RunOptions.hpp).
+std::string usage() {
+    std::string options;
+    for (const auto& [name, o] : RunOptionRegistry::instance().options()) options += fmt::format(" [--{} {}]", name, o.valueName);
+    std::string text = fmt::format(
+        "usage: miniaster run CASE.export [--out-dir DIR] [--check-syntax]{0}\n"
+        "       miniaster run CASE.comm [--mesh MESH.med] [--out-dir DIR] [--check-syntax]{0}\n"
+        "Runs a code_aster command file. Writes <case>.mess (message log) and <case>.resu (TEST lines,\n"
+        "tables) in DIR (default: the current folder). --check-syntax validates every command call\n"
+        "against the catalog without executing any.\n",
+        options);
+    for (const auto& [name, o] : RunOptionRegistry::instance().options()) text += o.help + "\n";
+    return text + "Exit status: 0 OK, 2 a TEST is NOOK, 1 error.\n";
+}
 
 struct Options {
     std::string input;
@@ -44,7 +47,7 @@ struct Options {
     bool outDirGiven = false;
     std::string mesh;
     bool checkOnly = false;
-    int subcellDegree = 0;  // --subcell-quadrature: 0 catalogue
+    std::map<std::string, std::string> runOptions;  // registered expert options given
 };
 
 // Bad command line or .export: reported before the command file starts.
@@ -231,17 +234,10 @@ Options parseArguments(int argc, char** argv) {
             opt.mesh = value();
         } else if (a == "--check-syntax") {
             opt.checkOnly = true;
-        } else if (a == "--subcell-quadrature") {
-            const std::string rule = value();
-            if (rule == "catalogue") {
-                opt.subcellDegree = 0;
-            } else if (rule.size() == 1 && rule[0] >= '1' && rule[0] <= '0' + kMaxSubcellDegree) {
-                opt.subcellDegree = rule[0] - '0';
-            } else {
-                throw SetupError(fmt::format("--subcell-quadrature: '{}' is not a rule (catalogue, or a polynomial "
-                                             "degree 1..{})",
-                                             rule, kMaxSubcellDegree));
-            }
+        } else if (const RunOption* o = a.starts_with("--") ? RunOptionRegistry::instance().find(a.substr(2)) : nullptr) {
+            const std::string v = value();
+            if (const std::string why = o->check(v); !why.empty()) throw SetupError(a + ": " + why);
+            opt.runOptions[o->name] = v;
         } else if (!a.empty() && a[0] == '-') {
             throw SetupError("unknown option " + a);
         } else if (opt.input.empty()) {
@@ -258,7 +254,7 @@ Options parseArguments(int argc, char** argv) {
 
 int supervisorMain(int argc, char** argv) {
     if (argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
-        std::fputs(kUsage, stdout);
+        std::fputs(usage().c_str(), stdout);
         return 0;
     }
     Options opt;
@@ -266,13 +262,13 @@ int supervisorMain(int argc, char** argv) {
         opt = parseArguments(argc, argv);
     } catch (const SetupError& e) {
         if (*e.what()) std::fprintf(stderr, "miniaster: %s\n", e.what());
-        std::fputs(kUsage, stderr);
+        std::fputs(usage().c_str(), stderr);
         return 1;
     }
 
     RunState& run = RunState::current();
     run.checkOnly = opt.checkOnly;
-    run.subcellDegree = opt.subcellDegree;
+    run.runOptions = opt.runOptions;
     const bool isExport = fs::path(opt.input).extension() == ".export";
     const std::string caseName = fs::path(opt.input).stem().string();
     std::error_code ec;
@@ -302,13 +298,13 @@ int supervisorMain(int argc, char** argv) {
 
     if (!run.failure) {
         run.commBaseName = fs::path(run.commFile).filename().string();
+        std::string announced;
+        for (const auto& [name, value] : opt.runOptions)
+            if (const std::string line = RunOptionRegistry::instance().find(name)->announce(value); !line.empty())
+                announced += "\n  " + line;
         msg().infof("  command file: {}\n  message log : {}\n  result file : {}\n  memory      : {}{}{}", run.commFile,
                     outputs.mess, outputs.resu, mallocHugePagesState(),
-                    opt.checkOnly ? "\n  mode        : syntax check only (--check-syntax)" : "",
-                    opt.subcellDegree ? fmt::format("\n  X-FEM       : --subcell-quadrature {} (volume sub-cells "
-                                                    "integrated to degree {}, not code_aster's catalogue rules)",
-                                                    opt.subcellDegree, opt.subcellDegree)
-                                      : "");
+                    opt.checkOnly ? "\n  mode        : syntax check only (--check-syntax)" : "", announced);
         // The interpreter lives until the process ends: concepts may hold Python objects (FORMULE).
         py::initialize_interpreter();
         installCrashHandler(outputs.mess);  // after Python, which installs its own handlers

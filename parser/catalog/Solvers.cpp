@@ -18,7 +18,7 @@ Keyword solveur() {
               TXM("PRETRAITEMENTS").into({"SANS", "AUTO"}).def("AUTO"),
               TXM("POSTTRAITEMENTS").into({"SANS", "AUTO", "FORCE", "MINI"}).def("AUTO"),
               TXM("GESTION_MEMOIRE").into({"AUTO", "IN_CORE", "OUT_OF_CORE", "EVAL"}).def("AUTO"),
-              yesNo("MATR_DISTRIBUEE"), yesNo("STOP_SINGULIER")}),
+              yesNo("MATR_DISTRIBUEE"), yesNo("STOP_SINGULIER").def("OUI")}),
         bloc(when("METHODE", {"MULT_FRONT"}),
              {TXM("RENUM").into({"MD", "MDA", "METIS"}).def("METIS"), I("NPREC").def(8),
               yesNo("STOP_SINGULIER").def("OUI"), TXM("ELIM_LAGR").into({"NON", "OUI"})}),

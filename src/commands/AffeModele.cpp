@@ -43,7 +43,7 @@ ConceptPtr affeModele(const KeywordSet& kw, CommandContext&) {
     int dim = 0;
     bool first = true;
     for (const auto& occ : kw.factor("AFFE")) {
-        if (occ.text("PHENOMENE", "MECANIQUE") != "MECANIQUE")
+        if (occ.text("PHENOMENE") != "MECANIQUE")
             throw NotImplemented(occ.pathOf("PHENOMENE") + "='" + occ.text("PHENOMENE") + "': only MECANIQUE");
         const Modelisation m = parseModelisation(occ);
         if (first) model->modelisation = m, first = false;

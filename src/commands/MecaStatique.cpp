@@ -44,7 +44,7 @@ ConceptPtr mecaStatique(const KeywordSet& kw, CommandContext& ctx) {
     linear.maxIterations = 0;
     linear.resiGlobMaxi = -1.0;
     linear.resiGlobRela = -1.0;
-    const bool stresses = kw.text("OPTION", "SIEF_ELGA") == "SIEF_ELGA";
+    const bool stresses = kw.text("OPTION") == "SIEF_ELGA";
     int order = 0;
     for (double inst : instants) {
         std::fill(problem.u.begin(), problem.u.end(), 0.0);

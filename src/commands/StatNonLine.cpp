@@ -27,12 +27,12 @@ ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
     const auto t0 = std::chrono::steady_clock::now();
     if (ctx.reused) throw NotImplemented("STAT_NON_LINE with reuse= (continuation) is not supported by miniaster");
     for (const auto& occ : kw.factor("COMPORTEMENT")) {
-        if (occ.text("RELATION", "ELAS") != "ELAS")
+        if (occ.text("RELATION") != "ELAS")
             throw NotImplemented(occ.pathOf("RELATION") + "='" + occ.text("RELATION") + "': only ELAS is supported");
-        if (occ.text("DEFORMATION", "PETIT") != "PETIT")
+        if (occ.text("DEFORMATION") != "PETIT")
             throw NotImplemented(occ.pathOf("DEFORMATION") + "='" + occ.text("DEFORMATION") + "': only PETIT");
     }
-    if (kw.text("METHODE", "NEWTON") != "NEWTON")
+    if (kw.text("METHODE") != "NEWTON")
         throw NotImplemented("STAT_NON_LINE/METHODE='" + kw.text("METHODE") + "': only NEWTON");
     auto model = kw.object<Model>("MODELE");
     auto material = kw.object<MaterialField>("CHAM_MATER");
@@ -44,7 +44,7 @@ ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
     if (incr.empty()) throw UserError("STAT_NON_LINE: INCREMENT/LIST_INST is required");
     const KeywordSet& inc = incr.front();
     const auto list = inc.object<RealList>("LIST_INST")->values;
-    const double precision = inc.real("PRECISION", 1e-6);
+    const double precision = inc.real("PRECISION");
     auto indexOf = [&](double t, const std::string& key) {
         for (size_t i = 0; i < list.size(); ++i)
             if (near(list[i], t, precision)) return i;
@@ -64,11 +64,11 @@ ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
     ConvergenceOptions conv;
     if (const auto& c = kw.factor("CONVERGENCE"); !c.empty()) {
         const KeywordSet& o = c.front();
-        conv.maxIterations = static_cast<int>(o.integer("ITER_GLOB_MAXI", 10));
+        conv.maxIterations = static_cast<int>(o.integer("ITER_GLOB_MAXI"));
         conv.resiGlobMaxi = o.has("RESI_GLOB_MAXI") ? o.real("RESI_GLOB_MAXI") : -1.0;
         conv.resiGlobRela = o.has("RESI_GLOB_RELA") ? o.real("RESI_GLOB_RELA") : -1.0;
         if (conv.resiGlobMaxi < 0.0 && conv.resiGlobRela < 0.0) conv.resiGlobRela = 1e-6;
-        conv.stopOnFailure = o.text("ARRET", "OUI") == "OUI";
+        conv.stopOnFailure = o.text("ARRET") == "OUI";
     }
 
     // Archiving: every step unless ARCHIVAGE restricts it.
@@ -77,7 +77,7 @@ ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
     if (const auto& a = kw.factor("ARCHIVAGE"); !a.empty()) {
         const KeywordSet& o = a.front();
         if (o.has("CHAM_EXCLU")) excluded = o.texts("CHAM_EXCLU");
-        const double aprec = o.real("PRECISION", 1e-6);
+        const double aprec = o.real("PRECISION");
         std::vector<double> wanted;
         if (o.has("LIST_INST")) wanted = o.object<RealList>("LIST_INST")->values;
         if (o.has("INST")) wanted = o.reals("INST");

@@ -14,6 +14,7 @@
 #include "fields/Fields.hpp"
 #include "med_io/MedReader.hpp"
 #include "med_test_support.hpp"
+#include "parser/Catalog.hpp"
 #include "parser/CommandRegistry.hpp"
 
 using namespace ma;
@@ -36,7 +37,7 @@ protected:
         ctx.command = command;
         ctx.resultName = resultName;
         ctx.units = &units;
-        auto out = (*fn)(kw, ctx);
+        auto out = (*fn)(validateKeywords(command, kw), ctx);
         if (out) out->name = resultName;
         return out;
     }
