@@ -152,7 +152,7 @@ ContactIncrementReport solveIncrementWithContact(MechanicalProblem& problem, Con
     ContactIncrementReport out;
     const int maxIter = terms.definition().maxContactIterations;
     for (int it = 1; it <= maxIter; ++it) {
-        const auto before = terms.inspect(problem.u);
+        const auto before = terms.inspect(problem.state());
         msg().infof("    INST {:g} contact iteration {}: {} active contact points of {}", inst, it, before.active,
                     before.points);
         IncrementReport report;
@@ -171,7 +171,7 @@ ContactIncrementReport solveIncrementWithContact(MechanicalProblem& problem, Con
         }
         out.newtonIterations += report.iterations;
         out.lastNewton = report;
-        const StatusReport st = terms.updateStatus(problem.u);
+        const StatusReport st = terms.updateStatus(problem.state());
         out.contactIterations = it;
         out.last = st;
         msg().infof("    INST {:g} contact iteration {}: {} status change(s), {} active, largest penetration {:.6e}, "
@@ -197,7 +197,7 @@ ContactIncrementReport solveIncrementWithContact(MechanicalProblem& problem, Con
     // displacements of 0.16 m).
     const auto [kappa, ratio] = penaltyStrength(terms);
     double umax = 0.0;
-    for (double v : problem.u) umax = std::max(umax, std::abs(v));
+    for (double v : problem.state()) umax = std::max(umax, std::abs(v));
     if (kappa > 0.0 && out.last.maxPressure / kappa < 1e-12 * umax)
         message += fmt::format("\nPossible cause: ALGO_CONT='PENALISATION' with COEF_PENA_CONT up to {:.3e} "
                                "(COEF_PENA_CONT x facet size / E up to {:.1e}): the interpenetration of the active "

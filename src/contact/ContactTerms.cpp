@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "core/Error.hpp"
+#include "fe/ElasticityKernels.hpp"
 #include "fe/ElementKinematics.hpp"
 #include "fe/Material.hpp"
 #include "fe/Quadrature.hpp"

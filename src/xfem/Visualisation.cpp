@@ -8,7 +8,7 @@
 #include <map>
 
 #include "core/Error.hpp"
-#include "fe/MechanicalProblem.hpp"
+#include "fe/ElasticityKernels.hpp"
 #include "fe/Quadrature.hpp"
 #include "fe/ShapeFunctions.hpp"
 #include "xfem/CellGeometry.hpp"

@@ -104,10 +104,10 @@ TEST(ContactTerms, PenaltyCarriesOnePressureUnknownPerPoint) {
     Scene s = scene(CellType::QUAD4, 5, ContactAlgorithm::Penalty);
     const int n = static_cast<int>(s.terms->points().size());
     EXPECT_EQ(s.terms->extraUnknowns(), n);
-    EXPECT_EQ(int(s.problem->u.size()), s.problem->numbering().size() + n);
-    expectSymmetric(tangent(*s.terms, s.problem->u));
+    EXPECT_EQ(int(s.problem->state().size()), s.problem->numbering().size() + n);
+    expectSymmetric(tangent(*s.terms, s.problem->state()));
     // A closing gap activates, an opening one releases (statuses from the gap).
-    auto st = s.terms->updateStatus(s.problem->u);  // zero gap: not interpenetrating
+    auto st = s.terms->updateStatus(s.problem->state());  // zero gap: not interpenetrating
     EXPECT_EQ(st.active, 0);
 }
 
