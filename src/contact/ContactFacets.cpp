@@ -6,22 +6,14 @@
 #include <tuple>
 
 #include "core/Error.hpp"
-#include "fe/ShapeFunctions.hpp"
+#include "core/Vec3.hpp"
+#include "mesh/ShapeFunctions.hpp"
 #include "xfem/CellGeometry.hpp"
 #include "xfem/XfemModel.hpp"
 
 namespace ma::contact {
 
 namespace {
-
-using Vec = std::array<double, 3>;
-
-Vec sub(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec cross(const Vec& a, const Vec& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double norm(const Vec& a) { return std::sqrt(dot(a, a)); }
 
 // Faces of a simplex of dimension d (local vertex numbers): triangle edges, tetrahedron faces.
 const std::vector<std::vector<int>>& simplexFaces(int d) {
@@ -30,30 +22,30 @@ const std::vector<std::vector<int>>& simplexFaces(int d) {
     return d == 2 ? tri : tet;
 }
 
-std::vector<Vec> nodeCoordinates(const Mesh& mesh, int cell) {
+std::vector<Vec3> nodeCoordinates(const Mesh& mesh, int cell) {
     const auto nodes = mesh.cellNodes(cell);
-    std::vector<Vec> xyz(nodes.size());
+    std::vector<Vec3> xyz(nodes.size());
     for (size_t a = 0; a < nodes.size(); ++a) xyz[a] = mesh.coords[nodes[a]];
     return xyz;
 }
 
 // Physical coordinates of the points of a cut cell.
-std::vector<Vec> physicalPoints(const Mesh& mesh, const xfem::CellCut& cut) {
+std::vector<Vec3> physicalPoints(const Mesh& mesh, const xfem::CellCut& cut) {
     const auto xyz = nodeCoordinates(mesh, cut.cell);
-    std::vector<Vec> out;
+    std::vector<Vec3> out;
     out.reserve(cut.points.size());
     for (const auto& p : cut.points) out.push_back(mapToPhysical(cut.type, xyz, p.ref));
     return out;
 }
 
-double subcellMeasure(int dim, const std::vector<Vec>& xyz, const xfem::SubCell& s) {
-    std::vector<Vec> v;
+double subcellMeasure(int dim, const std::vector<Vec3>& xyz, const xfem::SubCell& s) {
+    std::vector<Vec3> v;
     for (int i = 0; i <= dim; ++i) v.push_back(xyz[s.vertices[i]]);
     return std::abs(xfem::simplexMeasure(dim, v));
 }
 
 // Physical measure of every block (Heaviside tuple) of a cut cell.
-std::map<std::vector<signed char>, double> blockMeasures(int dim, const std::vector<Vec>& xyz, const xfem::CellCut& cut) {
+std::map<std::vector<signed char>, double> blockMeasures(int dim, const std::vector<Vec3>& xyz, const xfem::CellCut& cut) {
     std::map<std::vector<signed char>, double> out;
     for (const auto& s : cut.subcells) out[s.heaviside] += subcellMeasure(dim, xyz, s);
     return out;
@@ -107,15 +99,15 @@ std::vector<Point2> clipConvex(std::vector<Point2> subject, const std::vector<Po
 
 // Triangles (reference coordinates, on the plane of `a`) covering the intersection of the nearly
 // coplanar reference triangles a and b; `negligible` is the smallest reference area kept.
-std::vector<std::array<Vec, 3>> triangleIntersection(const std::array<Vec, 3>& a, const std::array<Vec, 3>& b,
+std::vector<std::array<Vec3, 3>> triangleIntersection(const std::array<Vec3, 3>& a, const std::array<Vec3, 3>& b,
                                                      double negligible) {
     // Project on the two coordinates most parallel to the plane of a.
-    const Vec n = cross(sub(a[1], a[0]), sub(a[2], a[0]));
+    const Vec3 n = cross(difference(a[1], a[0]), difference(a[2], a[0]));
     int k = 0;
     for (int i = 1; i < 3; ++i)
         if (std::abs(n[i]) > std::abs(n[k])) k = i;
     const int u = (k + 1) % 3, v = (k + 2) % 3;
-    auto project = [&](const std::array<Vec, 3>& t) {
+    auto project = [&](const std::array<Vec3, 3>& t) {
         std::vector<Point2> p{{t[0][u], t[0][v]}, {t[1][u], t[1][v]}, {t[2][u], t[2][v]}};
         if (polygonArea(p) < 0.0) std::swap(p[1], p[2]);
         return p;
@@ -126,18 +118,18 @@ std::vector<std::array<Vec, 3>> triangleIntersection(const std::array<Vec, 3>& a
     const auto poly = clipConvex(pa, pb);
     if (poly.size() < 3 || polygonArea(poly) <= negligible) return {};
     // Back to 3D on the plane of a, through the barycentric coordinates in its projection.
-    const std::array<Vec, 3> ta = polygonArea({{a[0][u], a[0][v]}, {a[1][u], a[1][v]}, {a[2][u], a[2][v]}}) > 0.0
+    const std::array<Vec3, 3> ta = polygonArea({{a[0][u], a[0][v]}, {a[1][u], a[1][v]}, {a[2][u], a[2][v]}}) > 0.0
                                       ? a
-                                      : std::array<Vec, 3>{a[0], a[2], a[1]};
+                                      : std::array<Vec3, 3>{a[0], a[2], a[1]};
     auto lift = [&](const Point2& p) {
         const double l1 = orient(pa[2], pa[0], p) / areaA / 2.0;
         const double l2 = orient(pa[0], pa[1], p) / areaA / 2.0;
         const double l0 = 1.0 - l1 - l2;
-        Vec r{};
+        Vec3 r{};
         for (int j = 0; j < 3; ++j) r[j] = l0 * ta[0][j] + l1 * ta[1][j] + l2 * ta[2][j];
         return r;
     };
-    std::vector<std::array<Vec, 3>> out;
+    std::vector<std::array<Vec3, 3>> out;
     const double total = polygonArea(poly);
     for (size_t i = 1; i + 1 < poly.size(); ++i)
         if (orient(poly[0], poly[i], poly[i + 1]) > 1e-12 * total) out.push_back({lift(poly[0]), lift(poly[i]), lift(poly[i + 1])});
@@ -147,20 +139,20 @@ std::vector<std::array<Vec, 3>> triangleIntersection(const std::array<Vec, 3>& a
 // Part of the reference segment b on the reference segment a (2D: the two sides of an interface split
 // it at different points, one side cut by a branch at the junction, the other not); `negligible` is
 // the smallest reference length kept. On the line of a.
-std::vector<std::vector<Vec>> segmentIntersection(const std::array<Vec, 2>& a, const std::array<Vec, 2>& b,
+std::vector<std::vector<Vec3>> segmentIntersection(const std::array<Vec3, 2>& a, const std::array<Vec3, 2>& b,
                                                   double negligible) {
-    const Vec e = sub(a[1], a[0]);
+    const Vec3 e = difference(a[1], a[0]);
     const double ee = dot(e, e);
     if (!(ee > 0.0)) return {};
-    const double t0 = dot(sub(b[0], a[0]), e) / ee, t1 = dot(sub(b[1], a[0]), e) / ee;
+    const double t0 = dot(difference(b[0], a[0]), e) / ee, t1 = dot(difference(b[1], a[0]), e) / ee;
     const double lo = std::max(0.0, std::min(t0, t1)), hi = std::min(1.0, std::max(t0, t1));
     if ((hi - lo) * std::sqrt(ee) <= negligible) return {};
-    auto at = [&](double t) { return Vec{a[0][0] + t * e[0], a[0][1] + t * e[1], a[0][2] + t * e[2]}; };
+    auto at = [&](double t) { return Vec3{a[0][0] + t * e[0], a[0][1] + t * e[1], a[0][2] + t * e[2]}; };
     return {{at(lo), at(hi)}};
 }
 
 // Face key by physical coordinates (rounded), vertex order independent.
-std::vector<std::array<long long, 3>> coordinateKey(const std::vector<Vec>& pts, double tol) {
+std::vector<std::array<long long, 3>> coordinateKey(const std::vector<Vec3>& pts, double tol) {
     std::vector<std::array<long long, 3>> key;
     for (const auto& p : pts)
         key.push_back({std::llround(p[0] / tol), std::llround(p[1] / tol), std::llround(p[2] / tol)});
@@ -170,19 +162,19 @@ std::vector<std::array<long long, 3>> coordinateKey(const std::vector<Vec>& pts,
 
 // Whether the points (reference coordinates of the parent) all lie on one face of the parent
 // reference element (QUAD4/HEXA8: [-1,1]^d; TRIA3/TETRA4: unit simplex).
-bool onParentFace(CellType type, const std::vector<Vec>& ref) {
+bool onParentFace(CellType type, const std::vector<Vec3>& ref) {
     constexpr double tol = 1e-12;
     const int d = (type == CellType::TRIA3 || type == CellType::QUAD4) ? 2 : 3;
     auto all = [&](auto pred) { return std::all_of(ref.begin(), ref.end(), pred); };
     const bool simplex = type == CellType::TRIA3 || type == CellType::TETRA4;
     for (int i = 0; i < d; ++i) {
-        if (simplex && all([&](const Vec& r) { return std::abs(r[i]) <= tol; })) return true;
-        if (!simplex && (all([&](const Vec& r) { return std::abs(r[i] - 1.0) <= tol; }) ||
-                         all([&](const Vec& r) { return std::abs(r[i] + 1.0) <= tol; })))
+        if (simplex && all([&](const Vec3& r) { return std::abs(r[i]) <= tol; })) return true;
+        if (!simplex && (all([&](const Vec3& r) { return std::abs(r[i] - 1.0) <= tol; }) ||
+                         all([&](const Vec3& r) { return std::abs(r[i] + 1.0) <= tol; })))
             return true;
     }
     if (simplex)
-        return all([&](const Vec& r) { return std::abs(r[0] + r[1] + (d == 3 ? r[2] : 0.0) - 1.0) <= tol; });
+        return all([&](const Vec3& r) { return std::abs(r[0] + r[1] + (d == 3 ? r[2] : 0.0) - 1.0) <= tol; });
     return false;
 }
 
@@ -200,7 +192,7 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
         const auto* cut = xm.cut(cell);
         if (cut->skin) continue;
         const auto nodes = mesh.cellNodes(cell);
-        for (size_t a = 1; a < nodes.size(); ++a) lref = std::max(lref, norm(sub(mesh.coords[nodes[a]], mesh.coords[nodes[0]])));
+        for (size_t a = 1; a < nodes.size(); ++a) lref = std::max(lref, norm(difference(mesh.coords[nodes[a]], mesh.coords[nodes[0]])));
     }
     const double keyTol = 1e-9 * std::max(lref, 1e-300);
     // A cut point is on interface j when its level set is zero up to what CellCut's merging (1e-9
@@ -217,11 +209,11 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
     std::map<Key, FaceOnCrack> pendingMinus, pendingPlus;
 
     auto refOf = [](const xfem::CellCut& cut, const std::vector<int>& pts) {
-        std::vector<Vec> ref;
+        std::vector<Vec3> ref;
         for (int p : pts) ref.push_back(cut.points[p].ref);
         return ref;
     };
-    auto makeSide = [&](const xfem::CellCut& cut, int s, std::vector<Vec> ref,
+    auto makeSide = [&](const xfem::CellCut& cut, int s, std::vector<Vec3> ref,
                         const std::map<std::vector<signed char>, double>& blocks) {
         FacetSide side;
         side.cell = cut.cell;
@@ -231,15 +223,15 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
         side.ref = std::move(ref);
         return side;
     };
-    auto finishFacet = [&](ContactFacet& f, const std::vector<Vec>& verts, const Vec& towardsPlus) {
+    auto finishFacet = [&](ContactFacet& f, const std::vector<Vec3>& verts, const Vec3& towardsPlus) {
         f.vertices = verts;
-        Vec n{};
+        Vec3 n{};
         if (dim == 2) {
-            const Vec t = sub(verts[1], verts[0]);
+            const Vec3 t = difference(verts[1], verts[0]);
             f.measure = norm(t);
             n = {t[1], -t[0], 0.0};
         } else {
-            n = cross(sub(verts[1], verts[0]), sub(verts[2], verts[0]));
+            n = cross(difference(verts[1], verts[0]), difference(verts[2], verts[0]));
             f.measure = 0.5 * norm(n);
         }
         const double len = norm(n);
@@ -250,8 +242,8 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
         f.normal = n;
         return true;
     };
-    auto centroid = [&](const std::vector<Vec>& xyz, const xfem::SubCell& s) {
-        Vec c{};
+    auto centroid = [&](const std::vector<Vec3>& xyz, const xfem::SubCell& s) {
+        Vec3 c{};
         for (int i = 0; i <= dim; ++i)
             for (int j = 0; j < 3; ++j) c[j] += xyz[s.vertices[i]][j] / (dim + 1);
         return c;
@@ -292,7 +284,7 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
                         if (std::includes(tv.begin(), tv.end(), sortedPts.begin(), sortedPts.end())) partner = t;
                     }
                     if (!blocksDone) blocks = blockMeasures(dim, xyz, *cut), blocksDone = true;
-                    std::vector<Vec> verts;
+                    std::vector<Vec3> verts;
                     for (int p : pts) verts.push_back(xyz[p]);
                     if (partner < 0) {
                         // On a parent face: matched with the neighbouring cell below.
@@ -307,7 +299,7 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
                     f.crack = crack;
                     f.minus = makeSide(*cut, s, refOf(*cut, pts), blocks);
                     f.plus = makeSide(*cut, partner, refOf(*cut, pts), blocks);
-                    if (!finishFacet(f, verts, sub(centroid(xyz, cut->subcells[partner]), centroid(xyz, sc)))) continue;
+                    if (!finishFacet(f, verts, difference(centroid(xyz, cut->subcells[partner]), centroid(xyz, sc)))) continue;
                     for (int p : pts)
                         for (size_t k = 0; k < cut->cracks.size(); ++k)
                             if (k != j && onCrack(cut->points[p], k)) f.atJunction = true;
@@ -348,14 +340,14 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
         f.crack = key.first;
         f.minus = makeSide(*cm, fm.subcell, refOf(*cm, fm.points), bm);
         // + side vertices in the order of the - side's vertices.
-        std::vector<Vec> verts;
+        std::vector<Vec3> verts;
         for (int p : fm.points) verts.push_back(xm_[p]);
         std::vector<int> plusPoints;
         for (const auto& v : verts) {
             int best = fp.points[0];
             double bestD = 1e300;
             for (int p : fp.points) {
-                const double d = norm(sub(xp_[p], v));
+                const double d = norm(difference(xp_[p], v));
                 if (d < bestD) bestD = d, best = p;
             }
             plusPoints.push_back(best);
@@ -364,7 +356,7 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
         for (int p : fm.points)
             for (size_t k = 0; k < cm->cracks.size(); ++k)
                 if (cm->cracks[k] != key.first && onCrack(cm->points[p], k)) f.atJunction = true;
-        if (!finishFacet(f, verts, sub(centroid(xp_, cp->subcells[fp.subcell]), centroid(xm_, cm->subcells[fm.subcell]))))
+        if (!finishFacet(f, verts, difference(centroid(xp_, cp->subcells[fp.subcell]), centroid(xm_, cm->subcells[fm.subcell]))))
             continue;
         pairs[{fm.cell, fp.cell, cm->subcells[fm.subcell].heaviside, key.first, cp->subcells[fp.subcell].heaviside, 1}]
             .push_back(facets.size());
@@ -394,7 +386,7 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
         const auto& h = cut->subcells[face.subcell].heaviside;
         const int j = face.local;
         const auto xyz = physicalPoints(mesh, *cut);
-        Vec centre{};
+        Vec3 centre{};
         for (int p : face.points)
             for (int i = 0; i < 3; ++i) centre[i] += xyz[p][i] / double(face.points.size());
         std::map<int, std::pair<int, bool>> wanted;  // crack -> (digit, whether 0 is refused)
@@ -425,7 +417,7 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
                 if (&other == cut && t == face.subcell) continue;
                 if (!fits(other, t)) continue;
                 if (best >= 0 && other.subcells[t].heaviside != other.subcells[best].heaviside) return -1;
-                const double d = norm(sub(centroid(oxyz, other.subcells[t]), centre));
+                const double d = norm(difference(centroid(oxyz, other.subcells[t]), centre));
                 if (best < 0 || d < distance) best = t, distance = d;
             }
             return best;
@@ -449,9 +441,9 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
             }
         }
         if (!across) return false;
-        std::vector<Vec> verts;
+        std::vector<Vec3> verts;
         for (int p : face.points) verts.push_back(xyz[p]);
-        std::vector<Vec> acrossRef = refOf(*cut, face.points);
+        std::vector<Vec3> acrossRef = refOf(*cut, face.points);
         if (across != cut) {
             const auto acrossNodes = nodeCoordinates(mesh, across->cell);
             for (size_t v = 0; v < verts.size(); ++v)
@@ -463,8 +455,8 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
         f.crack = crack;
         f.minus = plusSide ? other : own;
         f.plus = plusSide ? own : other;
-        const Vec fromOwn = sub(centroid(physicalPoints(mesh, *across), across->subcells[acrossSub]), centroid(xyz, cut->subcells[face.subcell]));
-        const Vec towardsPlus = plusSide ? Vec{-fromOwn[0], -fromOwn[1], -fromOwn[2]} : fromOwn;
+        const Vec3 fromOwn = difference(centroid(physicalPoints(mesh, *across), across->subcells[acrossSub]), centroid(xyz, cut->subcells[face.subcell]));
+        const Vec3 towardsPlus = plusSide ? Vec3{-fromOwn[0], -fromOwn[1], -fromOwn[2]} : fromOwn;
         if (!finishFacet(f, verts, towardsPlus)) return false;
         for (int p : face.points)
             for (size_t k = 0; k < cut->cracks.size(); ++k)
@@ -490,7 +482,7 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
             const int j = sides[0].front().local;
             // Points of a face on another interface of the cell: its vertices there, and the edges
             // between two of them (a clipped vertex there touches a junction).
-            auto onOtherCrack = [&](const FaceOnCrack& f, const Vec& r) {
+            auto onOtherCrack = [&](const FaceOnCrack& f, const Vec3& r) {
                 for (size_t k = 0; k < cut->cracks.size(); ++k) {
                     if (int(k) == j) continue;
                     for (size_t a = 0; a < f.points.size(); ++a)
@@ -498,11 +490,11 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
                             const auto& pa = cut->points[f.points[a]];
                             const auto& pb = cut->points[f.points[b]];
                             if (!onCrack(pa, k) || !onCrack(pb, k)) continue;
-                            const Vec e = sub(pb.ref, pa.ref);
+                            const Vec3 e = difference(pb.ref, pa.ref);
                             const double ee = dot(e, e);
-                            const double t = ee > 0.0 ? std::clamp(dot(sub(r, pa.ref), e) / ee, 0.0, 1.0) : 0.0;
-                            const Vec q{pa.ref[0] + t * e[0], pa.ref[1] + t * e[1], pa.ref[2] + t * e[2]};
-                            if (norm(sub(r, q)) <= 1e-12) return true;
+                            const double t = ee > 0.0 ? std::clamp(dot(difference(r, pa.ref), e) / ee, 0.0, 1.0) : 0.0;
+                            const Vec3 q{pa.ref[0] + t * e[0], pa.ref[1] + t * e[1], pa.ref[2] + t * e[2]};
+                            if (norm(difference(r, q)) <= 1e-12) return true;
                         }
                 }
                 return false;
@@ -512,7 +504,7 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
                     const FaceOnCrack& fm = sides[0][a];
                     const FaceOnCrack& fp = sides[1][b];
                     auto vertex = [&](const FaceOnCrack& f, int v) { return cut->points[f.points[v]].ref; };
-                    std::vector<std::vector<Vec>> pieces;
+                    std::vector<std::vector<Vec3>> pieces;
                     if (dim == 2) {
                         pieces = segmentIntersection({vertex(fm, 0), vertex(fm, 1)}, {vertex(fp, 0), vertex(fp, 1)},
                                                      kNegligibleReferenceArea);
@@ -521,10 +513,10 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
                                                                   {vertex(fp, 0), vertex(fp, 1), vertex(fp, 2)}, kNegligibleReferenceArea))
                             pieces.emplace_back(t.begin(), t.end());
                     }
-                    const Vec towardsPlus = sub(centroid(xyz, cut->subcells[fp.subcell]), centroid(xyz, cut->subcells[fm.subcell]));
+                    const Vec3 towardsPlus = difference(centroid(xyz, cut->subcells[fp.subcell]), centroid(xyz, cut->subcells[fm.subcell]));
                     for (const auto& piece : pieces) {
-                        const std::vector<Vec>& ref = piece;
-                        std::vector<Vec> verts;
+                        const std::vector<Vec3>& ref = piece;
+                        std::vector<Vec3> verts;
                         for (const auto& r : ref) verts.push_back(mapToPhysical(cut->type, nodeXyz, r));
                         ContactFacet f;
                         f.crack = crack;
@@ -545,19 +537,19 @@ std::vector<ContactFacet> buildContactFacets(const xfem::XfemModel& xm, const st
             for (size_t a = 0; a < sides[side].size(); ++a) {
                 const FaceOnCrack& f = sides[side][a];
                 if (!f.exact) continue;
-                std::vector<Vec> verts;
+                std::vector<Vec3> verts;
                 for (int p : f.points) verts.push_back(xyz[p]);
                 ContactFacet probe;
-                if (!finishFacet(probe, verts, Vec{1.0, 0.0, 0.0})) continue;
+                if (!finishFacet(probe, verts, Vec3{1.0, 0.0, 0.0})) continue;
                 if (covered[side][a] == 0.0 && blockAcross(f, crack, side == 1)) continue;
                 // Left uncovered, up to round-off and to what the clipping neglects (its threshold in
                 // physical measure: the face's physical / reference measure ratio).
                 double negligible = 1e-9 * probe.measure;
                 if (covered[side][a] > 0.0) {
                     const auto& r = cut->points;
-                    const Vec e1 = sub(r[f.points[1]].ref, r[f.points[0]].ref);
+                    const Vec3 e1 = difference(r[f.points[1]].ref, r[f.points[0]].ref);
                     const double refMeasure =
-                        dim == 2 ? norm(e1) : 0.5 * norm(cross(e1, sub(r[f.points[2]].ref, r[f.points[0]].ref)));
+                        dim == 2 ? norm(e1) : 0.5 * norm(cross(e1, difference(r[f.points[2]].ref, r[f.points[0]].ref)));
                     if (refMeasure > 0.0) negligible = std::max(negligible, kNegligibleReferenceArea * probe.measure / refMeasure);
                 }
                 const double left = probe.measure - covered[side][a];

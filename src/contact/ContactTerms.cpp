@@ -14,7 +14,7 @@
 #include "fe/ElementKinematics.hpp"
 #include "fe/Material.hpp"
 #include "fe/Quadrature.hpp"
-#include "fe/ShapeFunctions.hpp"
+#include "mesh/ShapeFunctions.hpp"
 #include "xfem/XfemModel.hpp"
 
 namespace ma::contact {

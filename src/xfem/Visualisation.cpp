@@ -10,7 +10,8 @@
 #include "core/Error.hpp"
 #include "fe/ElasticityKernels.hpp"
 #include "fe/Quadrature.hpp"
-#include "fe/ShapeFunctions.hpp"
+#include "mesh/ElementGeometry.hpp"
+#include "mesh/ShapeFunctions.hpp"
 #include "xfem/CellGeometry.hpp"
 #include "xfem/XfemModel.hpp"
 
@@ -77,31 +78,18 @@ double contactPressure(const XfemModel& xm, const MaterialField& material, Model
     shapeValues(cut.type, point.ref, N);
     shapeDerivatives(cut.type, point.ref, dN);
     // Jacobian and physical gradients.
-    double J[3][3] = {};
-    for (int a = 0; a < n; ++a)
-        for (int i = 0; i < dim; ++i)
-            for (int k = 0; k < dim; ++k) J[i][k] += mesh.coords[nodes[a]][i] * dN[3 * a + k];
-    double inv[3][3] = {};
-    if (dim == 2) {
-        const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-        inv[0][0] = J[1][1] / det, inv[0][1] = -J[0][1] / det, inv[1][0] = -J[1][0] / det, inv[1][1] = J[0][0] / det;
-    } else {
-        const double det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) - J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
-                           J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
-        for (int i = 0; i < 3; ++i)
-            for (int k = 0; k < 3; ++k) {
-                const int i1 = (k + 1) % 3, i2 = (k + 2) % 3, k1 = (i + 1) % 3, k2 = (i + 2) % 3;
-                inv[i][k] = (J[i1][k1] * J[i2][k2] - J[i1][k2] * J[i2][k1]) / det;  // (J^-1)_{ik}
-            }
-    }
+    double J[3][3] = {}, inv[3][3] = {};
+    auto X = [&](int a) -> const Vec3& { return mesh.coords[nodes[a]]; };
+    auto d = [&](int a, int k) { return dN[3 * a + k]; };
+    jacobian(dim, dim, n, X, d, J);
+    invertJacobian(dim, J, inv);
     // du_c/dx_j of the node's side and the interface normal (level-set gradient).
     double G[3][3] = {};
     std::array<double, 3> normal{};
     const Crack& c = *cut.lsnCracks[crack];
     for (int a = 0; a < n; ++a) {
         double g[3] = {};
-        for (int j = 0; j < dim; ++j)
-            for (int k = 0; k < dim; ++k) g[j] += inv[k][j] * dN[3 * a + k];
+        physicalGradient(dim, inv, [&](int k) { return dN[3 * a + k]; }, g);
         for (int j = 0; j < dim; ++j) normal[j] += c.lsn[nodes[a]] * g[j];
         for (int k = 0; k <= xm.activeSlots(nodes[a]); ++k) {
             const double psi = k == 0 ? 1.0 : xm.psi(nodes[a], k, cut, vn.subcell);

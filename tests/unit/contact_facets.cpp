@@ -9,7 +9,7 @@
 #include <map>
 
 #include "contact/ContactFacets.hpp"
-#include "fe/ShapeFunctions.hpp"
+#include "mesh/ShapeFunctions.hpp"
 #include "xfem_test_meshes.hpp"
 
 namespace {
