@@ -234,6 +234,47 @@ ConceptPtr makeFormula(const KeywordSet& kw, const py::dict& context, const py::
     return std::make_shared<Formula>(kw.text("VALE"), kw.texts("NOM_PARA"), context, globals, run.commFile, line);
 }
 
+// The concept given by reuse= (removed from the keywords), null without; checks that the command is
+// reentrant, that reuse= is there when it must be and that the result is assigned to it.
+ConceptPtr takeReused(const cata::Command& command, const std::string& name, const std::string& resultName,
+                      py::dict& keywords) {
+    ConceptPtr reused;
+    if (keywords.contains("reuse")) {
+        py::object r = keywords["reuse"];
+        PyDict_DelItemString(keywords.ptr(), "reuse");
+        if (command.reentrant == cata::Reuse::No)
+            throw UserError(fmt::format("reuse= is not allowed: {} is not a reentrant command", name));
+        if (!py::isinstance<ConceptHandle>(r))
+            throw UserError(fmt::format("reuse= expects a concept, got {}", toCallValue(r).describe()));
+        reused = r.cast<ConceptHandle&>().object;
+        if (!resultName.empty() && !reused->name.empty() && reused->name != resultName)
+            throw UserError(fmt::format("reuse={} but the result is assigned to {}: a reentrant command "
+                                        "modifies the object given by reuse=, assign the result to it",
+                                        reused->name, resultName));
+    }
+
+    if (!reused && command.reentrant == cata::Reuse::Mandatory)
+        throw UserError(fmt::format("{0} modifies its input in place: reuse= is mandatory (write X = {0}(reuse=X, "
+                                    "...) with the object it modifies)",
+                                    name));
+    return reused;
+}
+
+// Python keyword arguments -> call arguments; FORMULE's keywords other than VALE, VALE_C and
+// NOM_PARA go to `context` (its evaluation context) as Python objects.
+CallArguments callArguments(const std::string& name, const py::dict& keywords, py::dict& context) {
+    CallArguments callArgs;
+    for (auto [k, v] : keywords) {
+        const std::string key = py::str(k).cast<std::string>();
+        if (name == "FORMULE" && key != "VALE" && key != "VALE_C" && key != "NOM_PARA") {
+            context[k] = v;
+            continue;
+        }
+        callArgs.emplace_back(key, toCallValue(v));
+    }
+    return callArgs;
+}
+
 py::object runCommand(const std::string& name, py::object frame, py::tuple args, py::dict keywords) {
     auto& run = RunState::current();
     if (run.failure) throw AbortRun{};
@@ -250,38 +291,11 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
             throw UserError(fmt::format("{} takes keyword arguments only (got {} positional argument{})", name,
                                         args.size(), args.size() > 1 ? "s" : ""));
 
-        // reuse= (reentrant commands only).
-        ConceptPtr reused;
-        if (keywords.contains("reuse")) {
-            py::object r = keywords["reuse"];
-            PyDict_DelItemString(keywords.ptr(), "reuse");
-            if (command->reentrant == cata::Reuse::No)
-                throw UserError(fmt::format("reuse= is not allowed: {} is not a reentrant command", name));
-            if (!py::isinstance<ConceptHandle>(r))
-                throw UserError(fmt::format("reuse= expects a concept, got {}", toCallValue(r).describe()));
-            reused = r.cast<ConceptHandle&>().object;
-            if (!resultName.empty() && !reused->name.empty() && reused->name != resultName)
-                throw UserError(fmt::format("reuse={} but the result is assigned to {}: a reentrant command "
-                                            "modifies the object given by reuse=, assign the result to it",
-                                            reused->name, resultName));
-        }
-
-        if (!reused && command->reentrant == cata::Reuse::Mandatory)
-            throw UserError(fmt::format("{0} modifies its input in place: reuse= is mandatory (write X = {0}(reuse=X, "
-                                        "...) with the object it modifies)",
-                                        name));
+        const ConceptPtr reused = takeReused(*command, name, resultName, keywords);
 
         // Python arguments -> checked keyword tree. FORMULE keeps its extra keywords as Python objects.
-        CallArguments callArgs;
         py::dict context;
-        for (auto [k, v] : keywords) {
-            const std::string key = py::str(k).cast<std::string>();
-            if (name == "FORMULE" && key != "VALE" && key != "VALE_C" && key != "NOM_PARA") {
-                context[k] = v;
-                continue;
-            }
-            callArgs.emplace_back(key, toCallValue(v));
-        }
+        const CallArguments callArgs = callArguments(name, keywords, context);
         KeywordSet kw = validateCall(*command, callArgs);
 
         CommandContext ctx;
