@@ -47,16 +47,9 @@ private:
         int part = 0, nd = 0, m = 0;
         size_t Ke = 0, rows = 0;
     };
-    struct Scratch {
-        explicit Scratch(const MaterialField& material) : laws(material) {}
-        GeneralElementScratch general;
-        std::vector<int> dofs;
-        std::vector<double> Ke;
-        LawCache laws;
-    };
 
     void compute(size_t e, int t) {
-        Scratch& w = scratch_[t];
+        ElementScratch& w = scratch_[t];
         const Mesh& mesh = space_.mesh();
         const int cell = space_.model().elements[e].cell;
         const IsotropicLaw& law = w.laws.of(space_.model().elements[e]);
@@ -73,8 +66,8 @@ private:
             },
             [&](const ElementIntegration& ei, const PointGeometry& geo) {
                 localDofs(mesh, space_.numbering(), ei, w.dofs);
-                generalStiffness(ei, geo, law, space_.dim(), static_cast<int>(w.dofs.size()), w.Ke);
-                keep(t, slot, w.dofs.data(), static_cast<int>(w.dofs.size()), w.Ke.data());
+                generalStiffness(ei, geo, law, space_.dim(), static_cast<int>(w.dofs.size()), w.values);
+                keep(t, slot, w.dofs.data(), static_cast<int>(w.dofs.size()), w.values.data());
             });
     }
 
@@ -125,7 +118,7 @@ private:
     const int workers_;
     std::vector<Part> parts_;
     std::vector<Entry> entries_;
-    std::vector<Scratch> scratch_;
+    std::vector<ElementScratch> scratch_;
 };
 
 void addAdditionalTangent(const DirichletConstraints& c, const AdditionalTerms& additional,

@@ -12,6 +12,7 @@
 #include "fe/DofNumbering.hpp"
 #include "fe/ElementIntegration.hpp"
 #include "fe/ElementKinematics.hpp"
+#include "fe/ElementLoop.hpp"
 #include "fe/Material.hpp"
 #include "fe/Model.hpp"
 
@@ -36,6 +37,16 @@ private:
     const Material* last_ = nullptr;
     Modelisation modelisation_ = Modelisation::D_PLAN;
     IsotropicLaw law_;
+};
+
+// What one worker of an element loop reuses from element to element: the general path's
+// description and geometry, dofs, element matrix or vector, and the law.
+struct ElementScratch {
+    explicit ElementScratch(const MaterialField& material) : laws(material) {}
+    GeneralElementScratch general;
+    std::vector<int> dofs;
+    std::vector<double> values;
+    LawCache laws;
 };
 
 // Global dofs of the element's local unknowns (node-major, then slot, then component).

@@ -32,16 +32,9 @@ private:
         int part = 0, nd = 0;
         size_t offset = 0;
     };
-    struct Scratch {
-        explicit Scratch(const MaterialField& material) : laws(material) {}
-        GeneralElementScratch general;
-        std::vector<int> dofs;
-        std::vector<double> fe;
-        LawCache laws;
-    };
 
     void compute(size_t e, int t) {
-        Scratch& w = scratch_[t];
+        ElementScratch& w = scratch_[t];
         const Mesh& mesh = space_.mesh();
         const int cell = space_.model().elements[e].cell;
         const IsotropicLaw& law = w.laws.of(space_.model().elements[e]);
@@ -58,8 +51,8 @@ private:
             },
             [&](const ElementIntegration& ei, const PointGeometry& geo) {
                 localDofs(mesh, space_.numbering(), ei, w.dofs);
-                generalInternalForce(ei, geo, w.dofs, u_, law, space_.dim(), w.fe);
-                keep(t, e, w.dofs.data(), w.fe.data(), static_cast<int>(w.dofs.size()));
+                generalInternalForce(ei, geo, w.dofs, u_, law, space_.dim(), w.values);
+                keep(t, e, w.dofs.data(), w.values.data(), static_cast<int>(w.dofs.size()));
             });
     }
 
@@ -86,7 +79,7 @@ private:
     const int workers_;
     std::vector<Part> parts_;
     std::vector<Entry> entries_;
-    std::vector<Scratch> scratch_;
+    std::vector<ElementScratch> scratch_;
 };
 
 }  // namespace
