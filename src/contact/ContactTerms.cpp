@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "core/Error.hpp"
+#include "core/Vec3.hpp"
 #include "fe/ElasticityKernels.hpp"
 #include "fe/ElementKinematics.hpp"
 #include "fe/Material.hpp"
@@ -21,8 +22,6 @@ namespace ma::contact {
 
 namespace {
 
-using Vec = std::array<double, 3>;
-
 // Rule of the facets of a zone (ZONE/INTEGRATION, ORDRE_INT; DEFI_CONTACT has refused the schemes
 // without a family). Whatever the rule, the point terms are consistent (docs/contact.md).
 const QuadratureRule& facetRule(int dim, const ContactIntegration& integration) {
@@ -33,7 +32,7 @@ const QuadratureRule& facetRule(int dim, const ContactIntegration& integration) 
 }
 
 // Weights of a point of the reference facet on its vertices (SEG2 on [-1,1], TRIA3 unit triangle).
-std::array<double, 3> facetBarycentric(int dim, const Vec& xi) {
+std::array<double, 3> facetBarycentric(int dim, const Vec3& xi) {
     if (dim == 2) return {0.5 * (1.0 - xi[0]), 0.5 * (1.0 + xi[0]), 0.0};
     return {1.0 - xi[0] - xi[1], xi[0], xi[1]};
 }
@@ -41,16 +40,16 @@ std::array<double, 3> facetBarycentric(int dim, const Vec& xi) {
 // Unit gradient of the level set of the facet's interface at a point of the parent cell (nodal
 // values of the cut, physical shape-function gradients at the point), oriented like the facet's
 // geometric normal (from - to +); the geometric normal when the gradient vanishes.
-Vec levelSetNormal(const xfem::CellCut& cut, const ContactFacet& facet, int nodeCount, const std::vector<double>& gradN) {
+Vec3 levelSetNormal(const xfem::CellCut& cut, const ContactFacet& facet, int nodeCount, const std::vector<double>& gradN) {
     const auto it = std::find(cut.cracks.begin(), cut.cracks.end(), facet.crack);
     if (it == cut.cracks.end()) return facet.normal;
     const size_t j = static_cast<size_t>(it - cut.cracks.begin());
-    Vec g{};
+    Vec3 g{};
     for (int a = 0; a < nodeCount; ++a)
         for (int c = 0; c < 3; ++c) g[c] += cut.points[a].lsn[j] * gradN[size_t(a) * 3 + c];
-    const double len = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    const double len = norm(g);
     if (!(len > 0.0)) return facet.normal;
-    const double orient = g[0] * facet.normal[0] + g[1] * facet.normal[1] + g[2] * facet.normal[2];
+    const double orient = dot(g, facet.normal);
     for (auto& v : g) v *= (orient < 0.0 ? -1.0 : 1.0) / len;
     return g;
 }
@@ -116,14 +115,14 @@ const QuadratureRule* facetPointRule(const Mesh& mesh, int dim, const ContactFac
 // `bary`; the - side also gives the normal nv (the level-set gradient of the facet's interface).
 void addSideTerms(const xfem::XfemModel& xm, const Model& model, const DofNumbering& numbering,
                   const MaterialField& material, const ContactFacet& facet, int s, const std::array<double, 3>& bary,
-                  double wMinus, ElementIntegration& ei, PointGeometry& geo, Vec& nv, ContactPoint& cp) {
+                  double wMinus, ElementIntegration& ei, PointGeometry& geo, Vec3& nv, ContactPoint& cp) {
     const Mesh& mesh = *model.mesh;
     const int dim = model.dim;
     const FacetSide& side = s == 0 ? facet.minus : facet.plus;
     const double sign = s == 0 ? -1.0 : 1.0;
     const double weight = s == 0 ? wMinus : 1.0 - wMinus;
     const auto* cut = xm.cut(side.cell);
-    Vec ref{};
+    Vec3 ref{};
     for (int v = 0; v < dim; ++v)
         for (int j = 0; j < 3; ++j) ref[j] += bary[v] * side.ref[v][j];
     const auto nodes = mesh.cellNodes(side.cell);
@@ -214,7 +213,7 @@ ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField
             // from the - side's parent; the facet's own vertices can be off the interface by CellCut's
             // merge tolerance (1e-9 h), which tilts a sliver facet (length 1e-5 h) by 1e-5 rad: then
             // the exact uniform stress has a shear on it and frictionless contact is no longer exact.
-            Vec nv = facet.normal;
+            Vec3 nv = facet.normal;
             for (int s = 0; s < 2; ++s) addSideTerms(xm, model, numbering, material, facet, s, bary, wMinus, ei, geo, nv, cp);
             if (definition_->zones[zone].algorithm == ContactAlgorithm::Penalty) {
                 cp.scale = youngMax;

@@ -21,7 +21,6 @@ public:
                    const ExtraUnknowns& extra);
 
     const Model& model() const { return *model_; }
-    const std::shared_ptr<const Model>& modelPtr() const { return model_; }
     const Mesh& mesh() const { return *model_->mesh; }
     const MaterialField& material() const { return *material_; }
     const DofNumbering& numbering() const { return numbering_; }

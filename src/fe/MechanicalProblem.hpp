@@ -12,6 +12,7 @@
 //     [ alpha*C    0     ] [dlam]    [ alpha*(C*u - v)                     ]
 // (symmetric indefinite, MUMPS SYM=2). Enriched dofs that no element uses (psi = 0 at every
 // point, xfem_spec §3.9) are set to 0 and eliminated.
+#include <algorithm>
 #include <memory>
 #include <vector>
 
