@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "commands/LegacyContactLoad.hpp"
 #include "commands/MechanicsKeywords.hpp"
 #include "contact/ContactLoop.hpp"
 #include "core/Messages.hpp"
@@ -21,6 +22,20 @@ namespace ma {
 namespace {
 
 bool near(double a, double b, double precision) { return std::abs(a - b) <= precision * std::max(1.0, std::abs(b)); }
+
+// CONVERGENCE: RESI_GLOB_RELA = 1e-6 when neither criterion is given.
+ConvergenceOptions convergenceOptions(const KeywordSet& kw) {
+    ConvergenceOptions conv;
+    if (const auto& c = kw.factor("CONVERGENCE"); !c.empty()) {
+        const KeywordSet& o = c.front();
+        conv.maxIterations = static_cast<int>(o.integer("ITER_GLOB_MAXI", 10));
+        conv.resiGlobMaxi = o.has("RESI_GLOB_MAXI") ? o.real("RESI_GLOB_MAXI") : -1.0;
+        conv.resiGlobRela = o.has("RESI_GLOB_RELA") ? o.real("RESI_GLOB_RELA") : -1.0;
+        if (conv.resiGlobMaxi < 0.0 && conv.resiGlobRela < 0.0) conv.resiGlobRela = 1e-6;
+        conv.stopOnFailure = o.text("ARRET", "OUI") == "OUI";
+    }
+    return conv;
+}
 
 ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -59,16 +74,7 @@ ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
                                     "({} instants)",
                                     first, last, list.size()));
 
-    // Convergence criteria: RESI_GLOB_RELA = 1e-6 when neither is given.
-    ConvergenceOptions conv;
-    if (const auto& c = kw.factor("CONVERGENCE"); !c.empty()) {
-        const KeywordSet& o = c.front();
-        conv.maxIterations = static_cast<int>(o.integer("ITER_GLOB_MAXI", 10));
-        conv.resiGlobMaxi = o.has("RESI_GLOB_MAXI") ? o.real("RESI_GLOB_MAXI") : -1.0;
-        conv.resiGlobRela = o.has("RESI_GLOB_RELA") ? o.real("RESI_GLOB_RELA") : -1.0;
-        if (conv.resiGlobMaxi < 0.0 && conv.resiGlobRela < 0.0) conv.resiGlobRela = 1e-6;
-        conv.stopOnFailure = o.text("ARRET", "OUI") == "OUI";
-    }
+    const ConvergenceOptions conv = convergenceOptions(kw);
 
     // Archiving: every step unless ARCHIVAGE restricts it.
     std::vector<char> archive(list.size(), 1);
@@ -97,12 +103,13 @@ ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
         return std::find(excluded.begin(), excluded.end(), field) == excluded.end();
     };
 
-    MechanicalProblem problem(model, material, mechanics::loadCases(kw), mechanics::solverOptions(kw, ctx.info));
+    const auto loads = mechanics::loadCases(kw);
+    const auto definition = mechanics::contactOfTheSolve(kw, loads);
+    MechanicalProblem problem(model, material, loads, mechanics::solverOptions(kw, ctx.info));
     std::shared_ptr<contact::ContactTerms> contactTerms;
-    if (kw.has("CONTACT")) {
-        auto definition = kw.object<contact::ContactDefinition>("CONTACT");
+    if (definition) {
         if (definition->model->enrichment != model->enrichment)
-            throw UserError(fmt::format("{}: {} was defined on model {}, not on MODELE {}", kw.pathOf("CONTACT"),
+            throw UserError(fmt::format("the contact {} was defined on model {}, not on MODELE {}",
                                         definition->name, definition->model->name, model->name));
         contactTerms = contact::attachContact(problem, *material, definition);
     }

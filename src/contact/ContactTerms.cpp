@@ -87,13 +87,21 @@ private:
     std::map<std::pair<int, int>, std::vector<std::pair<size_t, Key>>> byFirstDof_;
 };
 
-// The rule of a facet's points: its zone's, unless that rule is too weak for the traces of the
-// parent shape functions on the facet (counted in `shortfall`).
+// The rule of a facet's points: its zone's, unless that rule has a negative weight or is too weak
+// for the traces of the parent shape functions on the facet (counted in `shortfall`).
 const QuadratureRule* facetPointRule(const Mesh& mesh, int dim, const ContactFacet& facet,
                                      const ContactIntegration& integration, RuleShortfall& shortfall) {
     const QuadratureRule* rule = &facetRule(dim, integration);
     ++shortfall.facets;
     shortfall.ruleDegree = rule->degree;
+    if (!positiveWeights(*rule)) {
+        // A point of negative weight would make the stabilisation indefinite and its status
+        // decision a non-descent (ssnv513g with FPG4: MUMPS negative pivot, the active set cycled):
+        // the lowest positive rule of at least the zone's degree instead (alarm CONTACT_INTEGRATION).
+        shortfall.negativeWeight = true;
+        shortfall.negativeWeightOrder = gaussOrderFor(dim, rule->degree);
+        rule = &facetRule(dim, ContactIntegration{"GAUSS", shortfall.negativeWeightOrder});
+    }
     int traceDegree = 1;
     for (const FacetSide* side : {&facet.minus, &facet.plus})
         traceDegree = std::max(traceDegree, facetTraceDegree(mesh.cellTypes[size_t(side->cell)], side->ref));
@@ -335,11 +343,29 @@ void ContactTerms::initialiseStatus() {
     }
 }
 
+StatusFunction ContactTerms::statusFunction(int p, const std::vector<double>& u) const {
+    const auto& cp = points_[p];
+    const bool withStress = nitsche(p);
+    const double gapFactor = withStress ? cp.gamma : 1.0;
+    StatusFunction f;
+    for (size_t i = 0; i < cp.dofs.size(); ++i) {
+        const double ui = u[cp.dofs[i]];
+        const double stressTerm = withStress ? cp.stress[i] * ui : 0.0, gapTerm = gapFactor * cp.gap[i] * ui;
+        f.value += stressTerm + gapTerm;
+        f.magnitude += std::abs(stressTerm) + std::abs(gapTerm);
+    }
+    return f;
+}
+
 bool ContactTerms::wantsActive(int p, const std::vector<double>& u) const {
     const auto& zone = definition_->zones[points_[p].zone];
     if (zone.bilateral && everActive_[p]) return true;
-    if (nitsche(p)) return normalStress(p, u) + points_[p].gamma * gap(p, u) < 0.0;
-    return gap(p, u) < 0.0;
+    // The sign of a value that cancels to below kStatusRoundOff of its terms is round-off, not
+    // contact or separation: the point keeps its status (either one gives the same equations to
+    // that relative size), so no status can flip back and forth on round-off.
+    const StatusFunction f = statusFunction(p, u);
+    if (std::abs(f.value) <= kStatusRoundOff * f.magnitude) return active_[p] != 0;
+    return f.value < 0.0;
 }
 
 StatusReport ContactTerms::inspect(const std::vector<double>& u) const {
@@ -354,7 +380,7 @@ StatusReport ContactTerms::inspect(const std::vector<double>& u) const {
         // Complementarity violation: what the status would change.
         const bool want = wantsActive(int(p), u);
         if (want != bool(active_[p])) {
-            const double P = nitsche(int(p)) ? normalStress(int(p), u) + points_[p].gamma * g
+            const double P = nitsche(int(p)) ? statusFunction(int(p), u).value
                                              : definition_->zones[points_[p].zone].penalty * g;
             r.contactResidual = std::max(r.contactResidual, std::abs(P));
         }
