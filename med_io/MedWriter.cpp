@@ -12,9 +12,10 @@
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
-#include "fe/ShapeFunctions.hpp"
 #include "med_io/MedCellOrder.hpp"
 #include "med_io/MedFileHandle.hpp"
+#include "mesh/ElementGeometry.hpp"
+#include "mesh/ShapeFunctions.hpp"
 
 namespace ma::med {
 
@@ -83,26 +84,12 @@ std::string padded16(const std::vector<std::string>& names) {
 
 // Reference-element measure at xi: |det J| for a cell of the space dimension, the area/length
 // element sqrt(det(J^T J)) for faces and edges.
-double jacobianMeasure(CellType type, std::span<const std::array<double, 3>> nodes,
-                       const std::array<double, 3>& xi) {
-    const int d = referenceDimension(type);
+double measureAt(CellType type, std::span<const std::array<double, 3>> nodes, const std::array<double, 3>& xi) {
     std::vector<double> dN(nodes.size() * 3);
     shapeDerivatives(type, xi, dN);
-    double J[3][3] = {};
-    for (size_t a = 0; a < nodes.size(); ++a)
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < d; ++j) J[i][j] += nodes[a][size_t(i)] * dN[a * 3 + size_t(j)];
-    double G[3][3] = {};
-    for (int p = 0; p < d; ++p)
-        for (int q = 0; q < d; ++q)
-            for (int i = 0; i < 3; ++i) G[p][q] += J[i][p] * J[i][q];
-    double det = 0;
-    if (d == 1) det = G[0][0];
-    else if (d == 2) det = G[0][0] * G[1][1] - G[0][1] * G[1][0];
-    else
-        det = G[0][0] * (G[1][1] * G[2][2] - G[1][2] * G[2][1]) - G[0][1] * (G[1][0] * G[2][2] - G[1][2] * G[2][0]) +
-              G[0][2] * (G[1][0] * G[2][1] - G[1][1] * G[2][0]);
-    return std::sqrt(std::max(det, 0.0));
+    double J[3][3];
+    jacobian(nodes, dN, referenceDimension(type), J);
+    return jacobianMeasure(J, referenceDimension(type));
 }
 
 }  // namespace
@@ -420,7 +407,7 @@ int MedWriter::writeGaussField(const std::string& fieldName, const std::string& 
             for (int p = 0; p < npt; ++p) {
                 const auto& xi = field.pointRefCoords[size_t(p0 + p)];
                 for (int d = 0; d < rdim; ++d) pts[size_t(p) * rdim + d] = xi[size_t(d)];
-                const double m = jacobianMeasure(type, X, xi);
+                const double m = measureAt(type, X, xi);
                 weights[size_t(p)] = m > 0 ? field.pointWeights[size_t(p0 + p)] / m : 0.0;
             }
             std::string lkey = fmt::format("{}|{}|", int(type), fmt::join(key, ","));

@@ -321,6 +321,21 @@ ConceptPtr execute(CommandContext& ctx, const KeywordSet& kw, const py::dict& co
     return result;
 }
 
+// Python keyword arguments -> call arguments; FORMULE's keywords other than VALE, VALE_C and
+// NOM_PARA go to `context` (its evaluation context) as Python objects.
+CallArguments callArguments(const std::string& name, const py::dict& keywords, py::dict& context) {
+    CallArguments callArgs;
+    for (auto [k, v] : keywords) {
+        const std::string key = py::str(k).cast<std::string>();
+        if (name == "FORMULE" && key != "VALE" && key != "VALE_C" && key != "NOM_PARA") {
+            context[k] = v;
+            continue;
+        }
+        callArgs.emplace_back(key, toCallValue(v));
+    }
+    return callArgs;
+}
+
 py::object runCommand(const std::string& name, py::object frame, py::tuple args, py::dict keywords) {
     auto& run = RunState::current();
     if (run.failure) throw AbortRun{};
@@ -340,16 +355,8 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
         const ConceptPtr reused = takeReused(*command, keywords, resultName);
 
         // Python arguments -> checked keyword tree. FORMULE keeps its extra keywords as Python objects.
-        CallArguments callArgs;
         py::dict context;
-        for (auto [k, v] : keywords) {
-            const std::string key = py::str(k).cast<std::string>();
-            if (name == "FORMULE" && key != "VALE" && key != "VALE_C" && key != "NOM_PARA") {
-                context[k] = v;
-                continue;
-            }
-            callArgs.emplace_back(key, toCallValue(v));
-        }
+        const CallArguments callArgs = callArguments(name, keywords, context);
         KeywordSet kw = validateCall(*command, callArgs);
 
         CommandContext ctx;

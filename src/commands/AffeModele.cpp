@@ -9,7 +9,7 @@
 #include "commands/MechanicsKeywords.hpp"
 #include "core/Messages.hpp"
 #include "fe/Model.hpp"
-#include "fe/ShapeFunctions.hpp"
+#include "mesh/ShapeFunctions.hpp"
 #include "parser/CommandRegistry.hpp"
 
 namespace ma {

@@ -47,7 +47,7 @@ ConceptPtr mecaStatique(const KeywordSet& kw, CommandContext& ctx) {
     const bool stresses = kw.text("OPTION") == "SIEF_ELGA";
     int order = 0;
     for (double inst : instants) {
-        std::fill(problem.u.begin(), problem.u.end(), 0.0);
+        problem.resetState();
         const auto report = problem.solveIncrement(inst, linear);
         ResultStep step;
         step.order = ++order;

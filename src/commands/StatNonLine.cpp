@@ -23,6 +23,20 @@ namespace {
 
 bool near(double a, double b, double precision) { return std::abs(a - b) <= precision * std::max(1.0, std::abs(b)); }
 
+// CONVERGENCE: RESI_GLOB_RELA = 1e-6 when neither criterion is given.
+ConvergenceOptions convergenceOptions(const KeywordSet& kw) {
+    ConvergenceOptions conv;
+    if (const auto& c = kw.factor("CONVERGENCE"); !c.empty()) {
+        const KeywordSet& o = c.front();
+        conv.maxIterations = static_cast<int>(o.integer("ITER_GLOB_MAXI"));
+        conv.resiGlobMaxi = o.has("RESI_GLOB_MAXI") ? o.real("RESI_GLOB_MAXI") : -1.0;
+        conv.resiGlobRela = o.has("RESI_GLOB_RELA") ? o.real("RESI_GLOB_RELA") : -1.0;
+        if (conv.resiGlobMaxi < 0.0 && conv.resiGlobRela < 0.0) conv.resiGlobRela = 1e-6;
+        conv.stopOnFailure = o.text("ARRET") == "OUI";
+    }
+    return conv;
+}
+
 ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
     const auto t0 = std::chrono::steady_clock::now();
     if (ctx.reused) throw NotImplemented("STAT_NON_LINE with reuse= (continuation) is not supported by miniaster");
@@ -60,16 +74,7 @@ ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
                                     "({} instants)",
                                     first, last, list.size()));
 
-    // Convergence criteria: RESI_GLOB_RELA = 1e-6 when neither is given.
-    ConvergenceOptions conv;
-    if (const auto& c = kw.factor("CONVERGENCE"); !c.empty()) {
-        const KeywordSet& o = c.front();
-        conv.maxIterations = static_cast<int>(o.integer("ITER_GLOB_MAXI"));
-        conv.resiGlobMaxi = o.has("RESI_GLOB_MAXI") ? o.real("RESI_GLOB_MAXI") : -1.0;
-        conv.resiGlobRela = o.has("RESI_GLOB_RELA") ? o.real("RESI_GLOB_RELA") : -1.0;
-        if (conv.resiGlobMaxi < 0.0 && conv.resiGlobRela < 0.0) conv.resiGlobRela = 1e-6;
-        conv.stopOnFailure = o.text("ARRET") == "OUI";
-    }
+    const ConvergenceOptions conv = convergenceOptions(kw);
 
     // Archiving: every step unless ARCHIVAGE restricts it.
     std::vector<char> archive(list.size(), 1);

@@ -227,6 +227,9 @@ TEST(ContactIntegration, TraceDegreeOfTheParentShapeFunctions) {
 TEST(ContactIntegration, RulesTooWeakForTheTracesAreCounted) {
     // ssnv511 cut along grid lines: linear traces except on HEXA8 (bilinear on every facet).
     const auto hexa = contacttest::scene(CellType::HEXA8, 5, ContactAlgorithm::Nitsche, false, {"NOEUD", 0});
+    ASSERT_FALSE(hexa.definition->zones.empty());
+    ASSERT_EQ(hexa.terms->ruleShortfalls().size(), hexa.definition->zones.size());  // one per zone
+    ASSERT_FALSE(hexa.terms->points().empty());
     for (const auto& s : hexa.terms->ruleShortfalls()) {
         EXPECT_GT(s.facets, 0);
         EXPECT_EQ(s.replaced, s.facets);
@@ -243,10 +246,19 @@ TEST(ContactIntegration, RulesTooWeakForTheTracesAreCounted) {
         }
     }
     const auto gauss = contacttest::scene(CellType::HEXA8, 5, ContactAlgorithm::Nitsche, false, {"GAUSS", 1});
-    for (const auto& s : gauss.terms->ruleShortfalls()) EXPECT_EQ(s.replaced, 0);
+    ASSERT_EQ(gauss.terms->ruleShortfalls().size(), gauss.definition->zones.size());
+    for (const auto& s : gauss.terms->ruleShortfalls()) {
+        EXPECT_GT(s.facets, 0);
+        EXPECT_EQ(s.replaced, 0);
+    }
     for (CellType type : {CellType::QUAD4, CellType::TRIA3, CellType::TETRA4}) {
         const auto s = contacttest::scene(type, 5, ContactAlgorithm::Nitsche, false, {"NOEUD", 0});
-        for (const auto& r : s.terms->ruleShortfalls()) EXPECT_EQ(r.replaced, 0) << cellTypeName(type);
+        ASSERT_FALSE(s.definition->zones.empty()) << cellTypeName(type);
+        ASSERT_EQ(s.terms->ruleShortfalls().size(), s.definition->zones.size()) << cellTypeName(type);
+        for (const auto& r : s.terms->ruleShortfalls()) {
+            EXPECT_GT(r.facets, 0) << cellTypeName(type);
+            EXPECT_EQ(r.replaced, 0) << cellTypeName(type);
+        }
     }
 }
 
