@@ -18,7 +18,7 @@ namespace {
 constexpr size_t kMaxGroupName = 24;  // code_aster's limit on GROUP_MA / GROUP_NO names
 
 [[noreturn]] void damaged(const std::string& path, const std::string& what) {
-    throw UserError("MED file '" + path + "' is damaged or truncated: cannot read " + what);
+    throwMedError("MED file '" + path + "' is damaged or truncated: cannot read " + what);
 }
 
 struct MeshHeader {
