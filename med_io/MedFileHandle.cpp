@@ -132,6 +132,59 @@ void checkReadableMedFile(const std::string& path) {
                         "(no MED header, or a MED version older than 3.0 / newer than 4.x)");
 }
 
+namespace {
+
+// Opens one object of the file and what describes it (dataspace and type of a dataset, every
+// attribute): a damaged object header fails here rather than later as "no data".
+herr_t checkObject(hid_t group, const char* name, const H5L_info_t* info, void* failedAt) {
+    if (info->type != H5L_TYPE_HARD) return 0;
+    auto fail = [&] {
+        *static_cast<std::string*>(failedAt) = name;
+        return herr_t(1);  // stops the visit
+    };
+    const hid_t object = H5Oopen(group, name, H5P_DEFAULT);
+    if (object < 0) return fail();
+    bool ok = true;
+    H5O_info_t oinfo{};
+    if (H5Oget_info2(object, &oinfo, H5O_INFO_BASIC | H5O_INFO_NUM_ATTRS) < 0) {
+        ok = false;
+    } else {
+        if (oinfo.type == H5O_TYPE_DATASET) {
+            const hid_t space = H5Dget_space(object), type = H5Dget_type(object);
+            ok = space >= 0 && type >= 0 && H5Sget_simple_extent_npoints(space) >= 0;
+            if (space >= 0) H5Sclose(space);
+            if (type >= 0) H5Tclose(type);
+        }
+        for (hsize_t a = 0; ok && a < oinfo.num_attrs; ++a) {
+            const hid_t attr = H5Aopen_by_idx(object, ".", H5_INDEX_CRT_ORDER, H5_ITER_NATIVE, a, H5P_DEFAULT, H5P_DEFAULT);
+            ok = attr >= 0;
+            if (attr >= 0) {
+                const hid_t space = H5Aget_space(attr);
+                ok = space >= 0;
+                if (space >= 0) H5Sclose(space);
+                H5Aclose(attr);
+            }
+        }
+    }
+    H5Oclose(object);
+    return ok ? 0 : fail();
+}
+
+}  // namespace
+
+void checkMedStructure(const std::string& path) {
+    silenceHdf5Errors();
+    StderrCapture capture;
+    const hid_t h5 = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (h5 < 0) throw UserError("MED file '" + path + "' is damaged or truncated: HDF5 cannot open it");
+    std::string failedAt;
+    const herr_t rc = H5Lvisit(h5, H5_INDEX_NAME, H5_ITER_NATIVE, checkObject, &failedAt);
+    H5Fclose(h5);
+    if (!failedAt.empty())
+        throw UserError("MED file '" + path + "' is damaged: its object /" + failedAt + " cannot be read");
+    if (rc < 0) throw UserError("MED file '" + path + "' is damaged: its structure cannot be read to the end");
+}
+
 MedFile::MedFile(const std::string& path, med_access_mode mode) : path_(path) {
     silenceHdf5Errors();
     fid_ = MEDfileOpen(path.c_str(), mode);

@@ -31,6 +31,10 @@ std::string libraryCause();
 // UserError(text + libraryCause()).
 [[noreturn]] void throwMedError(const std::string& text);
 
+// Every object of the file opened with its dataspace, type and attributes (cheap: no data read):
+// UserError "damaged: its object /ENS_MAA/.../FAM cannot be read" naming the first that fails.
+void checkMedStructure(const std::string& path);
+
 // An open MED file, closed by the destructor (every HDF5 object of the file on a failed close).
 class MedFile {
 public:

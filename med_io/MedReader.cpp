@@ -84,6 +84,7 @@ std::vector<std::string> meshNames(const std::string& path) {
 std::shared_ptr<Mesh> readMesh(const std::string& path, const std::string& meshName,
                                MeshReadReport* report) {
     checkReadableMedFile(path);
+    checkMedStructure(path);
     MedFile file(path, MED_ACC_RDONLY);
     const med_idt fid = file.id();
 
@@ -124,6 +125,15 @@ std::shared_ptr<Mesh> readMesh(const std::string& path, const std::string& meshN
                      med_connectivity_mode mode) {
         return MEDmeshnEntity(fid, mname, numdt, numit, ent, geo, data, mode, &changed, &transformed);
     };
+    // An optional dataset (family numbers, names) of `n` entities: absent, or present with one value
+    // per entity; anything else is a damaged file (and would overflow the read buffer).
+    auto present = [&](med_entity_type ent, med_geometry_type geo, med_data_type data, med_int n,
+                       const std::string& what) {
+        const med_int m = count(ent, geo, data, MED_NODAL);
+        if (m < 0) damaged(path, what);
+        if (m > 0 && m != n) damaged(path, fmt::format("{} ({} values for {} entities)", what, m, n));
+        return m > 0;
+    };
 
     auto mesh = std::make_shared<Mesh>();
     mesh->dim = int(chosen->spaceDim);
@@ -141,10 +151,10 @@ std::shared_ptr<Mesh> readMesh(const std::string& path, const std::string& meshN
     xyz = {};
 
     std::vector<med_int> nodeFamily(size_t(nnode), 0);
-    if (count(MED_NODE, MED_NONE, MED_FAMILY_NUMBER, MED_NODAL) > 0 &&
+    if (present(MED_NODE, MED_NONE, MED_FAMILY_NUMBER, nnode, "the node family numbers of " + where) &&
         MEDmeshEntityFamilyNumberRd(fid, mname, numdt, numit, MED_NODE, MED_NONE, nodeFamily.data()) < 0)
         damaged(path, "the node family numbers of " + where);
-    if (count(MED_NODE, MED_NONE, MED_NAME, MED_NODAL) > 0) {
+    if (present(MED_NODE, MED_NONE, MED_NAME, nnode, "the node names of " + where)) {
         std::vector<char> buf(size_t(nnode) * MED_SNAME_SIZE + 1);
         if (MEDmeshEntityNameRd(fid, mname, numdt, numit, MED_NODE, MED_NONE, buf.data()) < 0)
             damaged(path, "the node names of " + where);
@@ -213,11 +223,11 @@ std::shared_ptr<Mesh> readMesh(const std::string& path, const std::string& meshN
                                          MED_FULL_INTERLACE, conn.data()) < 0)
             damaged(path, "the connectivity of the " + cellTypeName(type) + " cells of " + where);
         std::vector<med_int> fam(size_t(n), 0);
-        if (count(MED_CELL, geo, MED_FAMILY_NUMBER, MED_NODAL) > 0 &&
+        if (present(MED_CELL, geo, MED_FAMILY_NUMBER, n, "the family numbers of the " + cellTypeName(type) + " cells of " + where) &&
             MEDmeshEntityFamilyNumberRd(fid, mname, numdt, numit, MED_CELL, geo, fam.data()) < 0)
             damaged(path, "the family numbers of the " + cellTypeName(type) + " cells of " + where);
         std::vector<std::string> names;
-        if (count(MED_CELL, geo, MED_NAME, MED_NODAL) > 0) {
+        if (present(MED_CELL, geo, MED_NAME, n, "the names of the " + cellTypeName(type) + " cells of " + where)) {
             std::vector<char> buf(size_t(n) * MED_SNAME_SIZE + 1);
             if (MEDmeshEntityNameRd(fid, mname, numdt, numit, MED_CELL, geo, buf.data()) < 0)
                 damaged(path, "the names of the " + cellTypeName(type) + " cells of " + where);
@@ -295,10 +305,10 @@ std::shared_ptr<Mesh> readMesh(const std::string& path, const std::string& meshN
             }
             for (int g : it->second.groups) members[size_t(g)].push_back(int(e));
         }
-        for (med_int u : unknown)
-            msg().alarm("MED_10", fmt::format("MED file '{}', {}: family number {} is used but not "
-                                              "defined; its entities belong to no group",
-                                              path, where, u));
+        if (!unknown.empty())
+            throw UserError(fmt::format("MED file '{}' is damaged or inconsistent, {}: family number {} is used "
+                                        "but not defined",
+                                        path, where, *unknown.begin()));
         for (size_t g = 0; g < groupNames.size(); ++g)
             if (!members[g].empty()) target.set(groupNames[g], std::move(members[g]));
     };

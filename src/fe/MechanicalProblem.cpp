@@ -332,6 +332,8 @@ MechanicalProblem::MechanicalProblem(std::shared_ptr<const Model> model, std::sh
                                              "e.g. a block cut off by the interfaces) or an unattached enriched dof"
                                            : "a missing boundary condition (rigid body motion: DDL_IMPO does not "
                                              "prevent every translation/rotation)";
+    if (const std::string material = degenerateMaterialCause(*material_); !material.empty())
+        solverOptions_.singularHint = material + "; or else " + solverOptions_.singularHint;
     solver_ = makeLinearSolver(solverOptions_);
     int nodesWithUnknowns = 0;
     for (int node = 0; node < numbering_->nodeCount(); ++node) nodesWithUnknowns += numbering_->hasNode(node);
