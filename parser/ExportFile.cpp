@@ -68,7 +68,7 @@ public:
 
 private:
     [[noreturn]] void fail(const std::string& cause) const {
-        throw ExportError(fmt::format("{}, line {}: {} (`{}`)", out_.name, line_, cause, texts_[size_t(line_ - 1)]));
+        throw ExportError(fmt::format("{}, line {}: {} ({})", out_.name, line_, cause, texts_[size_t(line_ - 1)]));
     }
 
     void parameter(const std::vector<std::string>& t) {
@@ -129,7 +129,9 @@ private:
     void checkData(const ExportEntry& e) const {
         std::error_code ec;
         const auto status = fs::status(e.path, ec);
-        if (!fs::exists(status)) fail(fmt::format("the data {} {} does not exist", e.directory ? "directory" : "file", e.path.string()));
+        if (!fs::exists(status))
+            fail(fmt::format("the data {} {}{} does not exist", e.directory ? "directory" : "file", e.path.string(),
+                             e.unit > 0 ? fmt::format(" of unit {}", e.unit) : ""));
         if (e.directory && !fs::is_directory(status)) fail(fmt::format("{} is not a directory", e.path.string()));
         if (!e.directory && fs::is_directory(status))
             fail(fmt::format("{} is a directory, not a file (directories go on R lines)", e.path.string()));

@@ -212,7 +212,7 @@ TEST(Faults, OutputFolderCheckedFirst) {
     auto dir = freshDir();
     writeText(dir / "t.comm", "DEBUT()\nFIN()\n");
     writeText(dir / "afile", "");
-    for (const std::string& out : {"afile", "/proc/miniaster", "afile/sub"}) {
+    for (const std::string out : {"afile", "/proc/miniaster", "afile/sub"}) {
         const auto t0 = std::chrono::steady_clock::now();
         auto r = runMiniaster(dir, "t.comm", "--out-dir " + out);
         EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 1.0);
@@ -253,7 +253,7 @@ TEST(Faults, HugePenaltyIsNamed) {
     for (auto at = comm.find("COEF_PENA_CONT = 1e13"); at != std::string::npos; at = comm.find("COEF_PENA_CONT = 1e13"))
         comm.replace(at, 21, "COEF_PENA_CONT = 1e40");
     writeText(dir / "t.comm", comm);
-    auto r = runMiniaster(dir, "t.comm", "--mesh '" + kShared + "/astest/ssnv511b.mmed'");
+    auto r = runMiniaster(dir, "t.comm", "--mesh '" + kShared + "/astest/ssnv511h.mmed'");
     EXPECT_EQ(r.status, 1) << r.output;
     EXPECT_NE(r.output.find("COEF_PENA_CONT up to 1.000e+40"), std::string::npos) << r.output;
 }
@@ -331,4 +331,22 @@ TEST(Faults, CompressedFilesAndResultDirectories) {
     r = runMiniaster(dir, "bad.export");
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.output.find("(flag C) is not gzip-compressed"), std::string::npos) << r.output;
+}
+
+// A failure late in a run keeps the .resu with the TEST lines done so far (code_aster's
+// behaviour, issue 18 item 4), and os._exit in the command file leaves the log so far.
+TEST(Faults, LateFailureKeepsTheTestLines) {
+    auto dir = freshDir();
+    writeText(dir / "t.comm", replaced(readAll(kSource + "/astest/tables_chain.comm"), "\nFIN()", "\nx = 1/0\nFIN()"));
+    auto r = runMiniaster(dir, "t.comm", "--mesh '" + kSource + "/astest/tables_chain.mmed'");
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.file("out/t.resu").find(" OK "), std::string::npos) << r.file("out/t.resu");
+    EXPECT_NE(r.file("out/t.mess").find("ZeroDivisionError"), std::string::npos);
+
+    writeText(dir / "t.comm", replaced(readAll(kSource + "/astest/tables_chain.comm"), "\nFIN()", "\nimport os\nos._exit(3)"));
+    r = runMiniaster(dir, "t.comm", "--mesh '" + kSource + "/astest/tables_chain.mmed'");
+    EXPECT_EQ(r.status, 3);
+    const std::string mess = r.file("out/t.mess");
+    EXPECT_NE(mess.find("TEST_TABLE"), std::string::npos) << "the log of the commands run before os._exit";
+    EXPECT_EQ(mess.find("DIAGNOSTIC JOB : OK"), std::string::npos) << "not the .mess of the earlier run";
 }
