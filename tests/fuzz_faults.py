@@ -115,7 +115,7 @@ def run_case(binary, case):
             p = subprocess.run([binary, "run", export, "--out-dir", os.path.join(work, "out")], cwd=work,
                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=RUN_TIMEOUT)
         except subprocess.TimeoutExpired:
-            return "%s: no end within %d s" % (name, RUN_TIMEOUT)
+            return "%s: no end within %d s" % (name, RUN_TIMEOUT), None
         text = p.stdout.decode("utf-8", "replace")
         problems = []
         if p.returncode not in (0, 1, 2):
@@ -132,7 +132,7 @@ def run_case(binary, case):
         outside = sorted(set(os.listdir(work)) - {"inputs", "out"})
         if outside:
             problems.append("files outside the output folder: %s" % outside)
-        return "%s: %s\n%s" % (name, "; ".join(problems), text[-1500:]) if problems else None
+        return ("%s: %s\n%s" % (name, "; ".join(problems), text[-1500:]) if problems else None), p.returncode
     finally:
         shutil.rmtree(work, ignore_errors=True)
 
@@ -175,9 +175,10 @@ def main():
     parser.add_argument("--seed", type=int, default=17)
     parser.add_argument("--jobs", type=int, default=2)
     args = parser.parse_args()
+    args.binary = os.path.abspath(args.binary)
     cases = make_cases(args.source, args.shared, args.cases, args.seed)
     start = time.monotonic()
-    failures, done = [], 0
+    failures, done, statuses = [], 0, {}
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
         pending = set()
         it = iter(cases)
@@ -192,11 +193,13 @@ def main():
             finished, pending = concurrent.futures.wait(pending, return_when=concurrent.futures.FIRST_COMPLETED)
             for f in finished:
                 done += 1
-                if f.result():
-                    failures.append(f.result())
+                failure, status = f.result()
+                statuses[status] = statuses.get(status, 0) + 1
+                if failure:
+                    failures.append(failure)
     elapsed = time.monotonic() - start
-    print("fuzz: %d of %d cases run in %.1f s (seed %d), %d failure(s)" % (done, len(cases), elapsed, args.seed,
-                                                                         len(failures)))
+    print("fuzz: %d of %d cases run in %.1f s (seed %d), %d failure(s); exit statuses %s" % (
+        done, len(cases), elapsed, args.seed, len(failures), dict(sorted(statuses.items(), key=str))))
     for f in failures:
         print("FAIL", f)
     if done < min(len(cases), 40):
