@@ -15,9 +15,10 @@ constexpr double kDegenerateGap = 1e-6;
 }  // namespace
 
 std::string nearlyDegenerateElasticity(const Material& m) {
-    if (1.0 - 2.0 * m.nu < kDegenerateGap)
-        return fmt::format("NU = {} is nearly incompressible (1 - 2 NU = {:.1e}, lambda/mu = {:.1e}): the stiffness "
-                           "matrix is singular to working precision (displacement elements lock); use NU <= 0.4999",
+    if (1.0 - 2.0 * m.nu < kDegenerateGap && m.nu < 0.5)
+        return fmt::format("NU = {} is nearly incompressible in 3D and plane strain (1 - 2 NU = {:.1e}, "
+                           "lambda/mu = {:.1e}): the stiffness matrix is singular to working precision "
+                           "(displacement elements lock); use NU <= 0.4999",
                            m.nu, 1.0 - 2.0 * m.nu, 2.0 * m.nu / (1.0 - 2.0 * m.nu));
     if (1.0 + m.nu < kDegenerateGap)
         return fmt::format("NU = {} is close to -1 (1 + NU = {:.1e}): the shear modulus E/(2(1+NU)) is nearly "
