@@ -347,6 +347,7 @@ int supervisorMain(int argc, char** argv) {
     msg().info(fmt::format("\n{}\n--- DIAGNOSTIC JOB : {}\n{}", rule, diagnostic, rule));
 
     if (!finishOutputs(outputs, run.failure.has_value(), opt.checkOnly)) status = 1;
+    installCrashHandler(-1);  // the .mess is closed
     std::fflush(stdout);
     return status;
 }

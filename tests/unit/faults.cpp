@@ -162,7 +162,8 @@ TEST(Faults, TimeLimitKeepsTheLogAndTheTestLines) {
     EXPECT_TRUE(temporaries(dir).empty());
 }
 
-// Item 3: SIGTERM ends the run the same way; a temporary of a dead run is removed by the next run,
+// Item 3: SIGTERM ends the run the same way (and the .mess is there while the run goes on, issue
+// 18 item 5); a temporary of a dead run is removed by the next run,
 // one of a live process is not.
 TEST(Faults, KilledRunAndStaleTemporaries) {
     auto dir = freshDir();
@@ -170,10 +171,13 @@ TEST(Faults, KilledRunAndStaleTemporaries) {
                                        "\nopen('started', 'w').close()\nwhile True: pass"));
     const std::string cmd = "cd '" + dir.string() + "' && ('" + std::string(MINIASTER_BINARY) + "' run t.comm --mesh '" +
                             kSource + "/astest/tables_chain.mmed' --out-dir out > log.txt 2>&1 & p=$!; " +
-                            "for i in $(seq 600); do [ -e started ] && break; sleep 0.1; done; kill -TERM $p; wait $p; " +
+                            "for i in $(seq 600); do [ -e started ] && break; sleep 0.1; done; cp out/t.mess running.mess; " +
+                            "kill -TERM $p; wait $p; " +
                             "echo $? > rc)";
     ASSERT_EQ(std::system(cmd.c_str()), 0);
     EXPECT_EQ(readAll(dir / "rc"), "1\n") << readAll(dir / "log.txt");
+    // The .mess is a log, streamed: while the run goes on it already holds the commands done.
+    EXPECT_NE(readAll(dir / "running.mess").find("TEST_TABLE"), std::string::npos) << readAll(dir / "running.mess");
     const std::string mess = readAll(dir / "out/t.mess");
     EXPECT_NE(mess.find("the run is stopped by signal 15 (Terminated)"), std::string::npos) << mess;
     EXPECT_NE(mess.find("--- DIAGNOSTIC JOB : <F>_INTERRUPTED"), std::string::npos);
