@@ -10,6 +10,7 @@
     ./miniaster study all         [--full]   the three above
     ./miniaster study check-field            checks of the manufactured field (derivatives, tractions)
     ./miniaster study astest                 regenerates astest/smooth_*.{comm,export,mmed}
+    ./miniaster study ssnv513e               ssnv513e (the family file, unmodified) refined N = 5 ... 81 (docs/family.md)
 
 Options: --out DIR (tables and plots, default a fresh folder miniaster-study-<name>-<time> here;
 --out docs/study updates the committed figures; astest reads docs/study by default), --work DIR (runs, default a temporary
@@ -975,7 +976,8 @@ def fresh_folder(prefix):
 def main():
     ap = argparse.ArgumentParser(prog="miniaster study", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("name", choices=["smooth", "stability", "penalty", "perf", "all", "check-field", "astest"])
+    ap.add_argument("name", choices=["smooth", "stability", "penalty", "perf", "all", "check-field", "astest",
+                                     "ssnv513e"])
     ap.add_argument("--full", action="store_true", help="the big grid (2D up to N=1001, perf at N=1001)")
     ap.add_argument("--out", default=None,
                     help="tables and plots (default: a fresh folder miniaster-study-<name>-<UTC time> in the "
@@ -997,6 +999,9 @@ def main():
                     fresh_folder(f"miniaster-study-{args.name}"))
     if args.name == "check-field":
         return check_field()
+    if args.name == "ssnv513e":  # refinement study of the family file (docs/family.md)
+        import ssnv513e_refinement
+        return ssnv513e_refinement.main(["--build", args.build, "--out", args.out])
     ctx = Context(args)
     if not os.path.exists(ctx.binary):
         sys.exit(f"study: {ctx.binary} not found (build first)")
