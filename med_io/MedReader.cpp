@@ -18,7 +18,7 @@ namespace {
 constexpr size_t kMaxGroupName = 24;  // code_aster's limit on GROUP_MA / GROUP_NO names
 
 [[noreturn]] void damaged(const std::string& path, const std::string& what) {
-    throw UserError("MED file '" + path + "' is damaged or truncated: cannot read " + what);
+    throwMedError("MED file '" + path + "' is damaged or truncated: cannot read " + what);
 }
 
 struct MeshHeader {
@@ -100,6 +100,15 @@ private:
         return MEDmeshnEntity(fid_, mname_, numdt_, numit_, ent, geo, data, mode, &changed, &transformed);
     }
 
+    // An optional dataset (family numbers, names) of `n` entities: absent, or present with one value
+    // per entity; anything else is a damaged file (and would overflow the read buffer).
+    bool present(med_entity_type ent, med_geometry_type geo, med_data_type data, med_int n, const std::string& what) {
+        const med_int m = count(ent, geo, data, MED_NODAL);
+        if (m < 0) damaged(path_, what);
+        if (m > 0 && m != n) damaged(path_, fmt::format("{} ({} values for {} entities)", what, m, n));
+        return m > 0;
+    }
+
     void readNodes() {
         const med_int spaceDim = header_.spaceDim;
         nnode_ = count(MED_NODE, MED_NONE, MED_COORDINATE, MED_NO_CMODE);
@@ -113,10 +122,10 @@ private:
                 mesh_->coords[size_t(i)][size_t(d)] = d < spaceDim ? xyz[size_t(i) * spaceDim + d] : 0.0;
         xyz = {};
         nodeFamily_.assign(size_t(nnode_), 0);
-        if (count(MED_NODE, MED_NONE, MED_FAMILY_NUMBER, MED_NODAL) > 0 &&
+        if (present(MED_NODE, MED_NONE, MED_FAMILY_NUMBER, nnode_, "the node family numbers of " + where_) &&
             MEDmeshEntityFamilyNumberRd(fid_, mname_, numdt_, numit_, MED_NODE, MED_NONE, nodeFamily_.data()) < 0)
             damaged(path_, "the node family numbers of " + where_);
-        if (count(MED_NODE, MED_NONE, MED_NAME, MED_NODAL) > 0) {
+        if (present(MED_NODE, MED_NONE, MED_NAME, nnode_, "the node names of " + where_)) {
             std::vector<char> buf(size_t(nnode_) * MED_SNAME_SIZE + 1);
             if (MEDmeshEntityNameRd(fid_, mname_, numdt_, numit_, MED_NODE, MED_NONE, buf.data()) < 0)
                 damaged(path_, "the node names of " + where_);
@@ -192,11 +201,12 @@ private:
                                          MED_FULL_INTERLACE, conn.data()) < 0)
             damaged(path_, "the connectivity of the " + cellTypeName(type) + " cells of " + where_);
         std::vector<med_int> fam(size_t(n), 0);
-        if (count(MED_CELL, geo, MED_FAMILY_NUMBER, MED_NODAL) > 0 &&
+        if (present(MED_CELL, geo, MED_FAMILY_NUMBER, n,
+                    "the family numbers of the " + cellTypeName(type) + " cells of " + where_) &&
             MEDmeshEntityFamilyNumberRd(fid_, mname_, numdt_, numit_, MED_CELL, geo, fam.data()) < 0)
             damaged(path_, "the family numbers of the " + cellTypeName(type) + " cells of " + where_);
         std::vector<std::string> names;
-        if (count(MED_CELL, geo, MED_NAME, MED_NODAL) > 0) {
+        if (present(MED_CELL, geo, MED_NAME, n, "the names of the " + cellTypeName(type) + " cells of " + where_)) {
             std::vector<char> buf(size_t(n) * MED_SNAME_SIZE + 1);
             if (MEDmeshEntityNameRd(fid_, mname_, numdt_, numit_, MED_CELL, geo, buf.data()) < 0)
                 damaged(path_, "the names of the " + cellTypeName(type) + " cells of " + where_);
@@ -277,10 +287,10 @@ private:
             }
             for (int g : it->second.groups) members[size_t(g)].push_back(int(e));
         }
-        for (med_int u : unknown)
-            msg().alarm("MED_10", fmt::format("MED file '{}', {}: family number {} is used but not "
-                                              "defined; its entities belong to no group",
-                                              path_, where_, u));
+        if (!unknown.empty())
+            throw UserError(fmt::format("MED file '{}' is damaged or inconsistent, {}: family number {} is used "
+                                        "but not defined",
+                                        path_, where_, *unknown.begin()));
         for (size_t g = 0; g < groupNames_.size(); ++g)
             if (!members[g].empty()) target.set(groupNames_[g], std::move(members[g]));
     }
@@ -341,6 +351,7 @@ std::vector<std::string> meshNames(const std::string& path) {
 std::shared_ptr<Mesh> readMesh(const std::string& path, const std::string& meshName,
                                MeshReadReport* report) {
     checkReadableMedFile(path);
+    checkMedStructure(path);
     MedFile file(path, MED_ACC_RDONLY);
     const auto headers = readHeaders(file);
     const MeshHeader& chosen = chooseMesh(headers, path, meshName);

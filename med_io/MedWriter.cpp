@@ -115,7 +115,7 @@ struct MedWriter::Impl {
             if (!usedProfileNames.count(name)) break;
         }
         if (MEDprofileWr(fid(), name.c_str(), med_int(members.size()), members.data()) < 0)
-            throw UserError("MED file '" + target.tempPath() + "': cannot write profile " + name);
+            throwMedError("MED file '" + target.finalPath() + "': cannot write profile " + name);
         usedProfileNames.insert(name);
         profiles.emplace(key, name);
         return name;
@@ -176,15 +176,15 @@ struct MedWriter::Impl {
                 continue;
             if (trimName(name, MED_NAME_SIZE) != fieldName) continue;
             if (cname.substr(0, size_t(nc) * MED_SNAME_SIZE) != padded16(comps))
-                throw UserError(fmt::format("MED file '{}' already holds a field '{}' with other "
+                throwMedError(fmt::format("MED file '{}' already holds a field '{}' with other "
                                             "components; choose another result name or unit",
-                                            target.tempPath(), fieldName));
+                                            target.finalPath(), fieldName));
             return;
         }
         const std::string units(comps.size() * MED_SNAME_SIZE, ' ');
         if (MEDfieldCr(fid(), fieldName.c_str(), MED_FLOAT64, med_int(comps.size()), padded16(comps).c_str(),
                        units.c_str(), "", meshName.c_str()) < 0)
-            throw UserError("MED file '" + target.tempPath() + "': cannot create field " + fieldName);
+            throwMedError("MED file '" + target.finalPath() + "': cannot create field " + fieldName);
     }
 };
 
@@ -213,9 +213,9 @@ void MedWriter::commit() {
 
 bool MedWriter::writeMesh(const Mesh& mesh, const std::string& meshName) {
     const med_idt fid = impl_->fid();
-    const std::string& tmp = impl_->target.tempPath();
+    const std::string& tmp = impl_->target.finalPath();
     auto fail = [&](const std::string& what) {
-        throw UserError("MED file '" + tmp + "': cannot write " + what + " of mesh '" + meshName + "'");
+        throwMedError("MED file '" + tmp + "': cannot write " + what + " of mesh '" + meshName + "'");
     };
     const med_int existing = impl_->existingMeshNodes(meshName);
     if (existing >= 0) {
@@ -334,8 +334,8 @@ void MedWriter::writeNodalField(const std::string& fieldName, const std::string&
                                    MED_COMPACT_STMODE, profile.c_str(), MED_NO_LOCALIZATION, MED_FULL_INTERLACE,
                                    MED_ALL_CONSTITUENT, med_int(nodes.size()),
                                    reinterpret_cast<const unsigned char*>(values.data())) < 0)
-        throw UserError(fmt::format("MED file '{}': cannot write field {} at step ({}, {})",
-                                    impl_->target.tempPath(), fieldName, numdt, numit));
+        throwMedError(fmt::format("MED file '{}': cannot write field {} at step ({}, {})",
+                                    impl_->target.finalPath(), fieldName, numdt, numit));
 }
 
 int MedWriter::writeGaussField(const std::string& fieldName, const std::string& meshName,
@@ -423,7 +423,7 @@ int MedWriter::writeGaussField(const std::string& fieldName, const std::string& 
                 }
                 if (MEDlocalizationWr(impl_->fid(), loc.c_str(), geo, rdim, refNodes.data(), MED_FULL_INTERLACE, npt,
                                       pts.data(), weights.data(), MED_NO_INTERPOLATION, MED_NO_MESH_SUPPORT) < 0)
-                    throw UserError("MED file '" + impl_->target.tempPath() + "': cannot write localisation " + loc);
+                    throwMedError("MED file '" + impl_->target.finalPath() + "': cannot write localisation " + loc);
                 impl_->usedLocalizationNames.insert(loc);
                 impl_->localizations.emplace(lkey, loc);
             }
@@ -447,8 +447,8 @@ int MedWriter::writeGaussField(const std::string& fieldName, const std::string& 
                                            MED_COMPACT_STMODE, profile.c_str(), loc.c_str(), MED_FULL_INTERLACE,
                                            MED_ALL_CONSTITUENT, med_int(members.size()),
                                            reinterpret_cast<const unsigned char*>(values.data())) < 0)
-                throw UserError(fmt::format("MED file '{}': cannot write field {} on {} cells at step ({}, {})",
-                                            impl_->target.tempPath(), fieldName, cellTypeName(type), numdt, numit));
+                throwMedError(fmt::format("MED file '{}': cannot write field {} on {} cells at step ({}, {})",
+                                            impl_->target.finalPath(), fieldName, cellTypeName(type), numdt, numit));
         }
     }
     return skipped;

@@ -17,6 +17,7 @@
 #include <fstream>
 
 #include "core/Error.hpp"
+#include "core/MemoryLimit.hpp"
 #include "core/Messages.hpp"
 #include "parser/Catalog.hpp"
 #include "parser/CommandRegistry.hpp"
@@ -400,8 +401,10 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
         run.fail("ERROR", name, line, std::string("numerical failure: ") + e.what());
     } catch (const InternalError& e) {
         run.fail("ERROR", name, line, std::string("internal error of miniaster (please report it): ") + e.what());
+    } catch (const std::bad_alloc&) {
+        run.fail("ERROR", name, line, outOfMemoryCause());
     } catch (const std::exception& e) {
-        run.fail("ERROR", name, line, std::string("unexpected error: ") + e.what());
+        run.fail("ERROR", name, line, unexpectedErrorCause(e));
     } catch (...) {
         run.fail("ERROR", name, line, "unexpected error of unknown type");
     }
@@ -501,57 +504,6 @@ void RunState::recordTiming(const std::string& command, double seconds) {
         }
     }
     timings.push_back({command, 1, seconds, peakMemoryKb()});
-}
-
-namespace {
-std::string gCrashMessPath;
-
-void writeAll(int fd, const char* data, size_t size) {
-    while (size > 0) {
-        const ssize_t n = ::write(fd, data, size);
-        if (n <= 0) return;
-        data += n;
-        size -= size_t(n);
-    }
-}
-
-extern "C" void onFatalSignal(int sig) {
-    // Best effort: the process is already broken; only write() / rename() are used on prepared data.
-    const auto& run = RunState::current();
-    char where[160];
-    if (run.runningCommand[0])
-        std::snprintf(where, sizeof(where), "%s (%s, line %d)", run.runningCommand, run.commBaseName.c_str(),
-                      run.runningLine);
-    else
-        std::snprintf(where, sizeof(where), "(%s)", run.commBaseName.c_str());
-    char paragraph[640];
-    const int len = std::snprintf(paragraph, sizeof(paragraph),
-                                  "\n<F> <ABNORMAL_ABORT> %s: the process received signal %d (%s); this is a defect "
-                                  "of miniaster, please report it\n\n"
-                                  "------------------------------------------------------------\n"
-                                  "--- DIAGNOSTIC JOB : <F>_ABNORMAL_ABORT\n"
-                                  "------------------------------------------------------------\n",
-                                  where, sig, strsignal(sig));
-    if (len > 0) writeAll(STDOUT_FILENO, paragraph, size_t(std::min<int>(len, sizeof(paragraph) - 1)));
-    if (!gCrashMessPath.empty()) {
-        const std::string temp = gCrashMessPath + ".crash-tmp";
-        const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (fd >= 0) {
-            const auto& text = msg().messText();
-            writeAll(fd, text.data(), text.size());
-            if (len > 0) writeAll(fd, paragraph, size_t(std::min<int>(len, sizeof(paragraph) - 1)));
-            ::close(fd);
-            ::rename(temp.c_str(), gCrashMessPath.c_str());
-        }
-    }
-    std::signal(sig, SIG_DFL);
-    std::raise(sig);
-}
-}  // namespace
-
-void installCrashHandler(const std::string& messPath) {
-    gCrashMessPath = messPath;
-    for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(sig, onFatalSignal);
 }
 
 long peakMemoryKb() {

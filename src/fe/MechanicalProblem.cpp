@@ -32,6 +32,8 @@ MechanicalProblem::MechanicalProblem(std::shared_ptr<const Model> model, std::sh
                                         "e.g. a block cut off by the interfaces) or an unattached enriched dof"
                                       : "a missing boundary condition (rigid body motion: DDL_IMPO does not "
                                         "prevent every translation/rotation)";
+    if (const std::string cause = degenerateMaterialCause(space_->material()); !cause.empty())
+        solverOptions_.singularHint = cause + "; or else " + solverOptions_.singularHint;
     solver_ = makeLinearSolver(solverOptions_);
     int nodesWithUnknowns = 0;
     for (int node = 0; node < numbering.nodeCount(); ++node) nodesWithUnknowns += numbering.hasNode(node);

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <regex>
 
+#include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "core/Units.hpp"
@@ -158,7 +159,7 @@ TEST_F(MedCommands, RoundTripGivesTheSameFileForMdump4AndMeshio) {
         call("IMPR_RESU", kw);
         const std::string written = dir + "/" + file + ".rmed";
         ASSERT_TRUE(std::filesystem::exists(written));
-        EXPECT_FALSE(std::filesystem::exists(written + ".tmp" + std::to_string(::getpid())));
+        EXPECT_FALSE(std::filesystem::exists(temporaryPathFor(written)));
         // mdump4: nodes, names, cells, numbers, families and groups identical to the original.
         EXPECT_EQ(mdumpBody(written), mdumpBody(original)) << file;
         // meshio: same nodes, cells and groups.
