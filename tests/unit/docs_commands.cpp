@@ -1,9 +1,10 @@
 // docs/commands.md maps every command to its code: this test keeps the map complete. Every
 // command the registry dispatches (src/commands) and every command of the catalog (with DEBUT,
 // FIN, FORMULE, PRE_GIBI, run by the supervisor itself), and _F, has its row "| `NAME` |"; and
-// every row names a command that exists.
+// every row names a command that exists, and every file or header it names exists.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <set>
@@ -45,6 +46,28 @@ TEST(CommandMap, NamesNoCommandThatDoesNotExist) {
     for (std::sregex_iterator it(doc.begin(), doc.end(), row), end; it != end; ++it, ++rows)
         EXPECT_TRUE(names.count((*it)[1])) << (*it)[1] << " is in docs/commands.md but not a command";
     EXPECT_EQ(rows, static_cast<int>(names.size()));
+}
+
+// The catalog entries, implementations and tests a row names are files of the checkout, its engine
+// pieces headers of src/ (or med_io/): a file that moves leaves no stale row behind.
+TEST(CommandMap, NamesOnlyFilesThatExist) {
+    const std::string doc = commandMap();
+    const std::filesystem::path root = MINIASTER_SOURCE_DIR;
+    const std::regex row(R"(\n\| `[A-Z_][A-Z0-9_]*` \|[^\n]*)");
+    const std::regex path(R"(`([a-z_]+(/[A-Za-z0-9_]+)+(\.cpp)?)`)");
+    int files = 0;
+    for (std::sregex_iterator it(doc.begin(), doc.end(), row), end; it != end; ++it) {
+        const std::string line = std::string((*it)[0]).substr(1);
+        for (std::sregex_iterator p(line.begin(), line.end(), path); p != end; ++p, ++files) {
+            const std::string name = (*p)[1];
+            const bool exists = (*p)[3].matched
+                                    ? std::filesystem::exists(root / name) || std::filesystem::exists(root / "tests" / name)
+                                    : std::filesystem::exists(root / "src" / (name + ".hpp")) ||
+                                          std::filesystem::exists(root / (name + ".hpp"));
+            EXPECT_TRUE(exists) << name << " in the row " << line.substr(0, line.find(" |", 2)) << " |";
+        }
+    }
+    EXPECT_GT(files, 100);
 }
 
 }  // namespace
