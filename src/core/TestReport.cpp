@@ -36,6 +36,8 @@ std::string TestReport::summary() const {
     const int differing = count(S::Nook, true);
     if (count(S::Nook, false) > 0)
         out += fmt::format("  {} of {} reference checks NOOK", count(S::Nook, false), references);
+    else if (references == 0)
+        out += "  no reference check";
     else
         out += fmt::format("  all {} reference checks OK", references);
     out += differing > 0 ? fmt::format("; {} non-regression value{} differ{} from code_aster's own\n", differing,

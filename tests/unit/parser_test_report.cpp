@@ -40,6 +40,12 @@ TEST(ParserTestReport, SummarySaysWhenOnlyCodeAstersOwnValuesDiffer) {
                                     "own\n"),
               std::string::npos)
         << report.summary();
+    // Only NON_REGRESSION lines: no reference check to call OK.
+    ma::TestReport regression;
+    regression.add({"NON_REGRESSION", S::Nook, "b"});
+    EXPECT_NE(regression.summary().find("  no reference check; 1 non-regression value differs from code_aster's own\n"),
+              std::string::npos)
+        << regression.summary();
 }
 
 namespace {
