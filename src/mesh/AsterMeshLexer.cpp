@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <charconv>
+#include <cstdio>
 #include <cstring>
 
 #include "core/Error.hpp"
@@ -90,8 +91,13 @@ AsterToken AsterLexer::scan() {
         } else if (c == '\'' || c == '"') {
             fail(tok.line, "quoted text where a name or a number is expected");
         } else {
-            fail(tok.line, std::string("unexpected character '") + c + "' (names are a letter followed by letters, "
-                                                                     "digits or '_')");
+            // A byte that is not printable ASCII goes into the message as its code, never raw.
+            const auto byte = static_cast<unsigned char>(c);
+            char shown[16];
+            if (byte >= 0x20 && byte < 0x7f) std::snprintf(shown, sizeof(shown), "'%c'", c);
+            else std::snprintf(shown, sizeof(shown), "byte 0x%02X", byte);
+            fail(tok.line, std::string("unexpected character ") + shown +
+                               " (names are a letter followed by letters, digits or '_')");
         }
         return tok;
     }

@@ -1,5 +1,6 @@
 #include "mesh/AsterMeshReader.hpp"
 
+#include <cstring>
 #include <fstream>
 #include <unordered_map>
 
@@ -322,8 +323,16 @@ std::shared_ptr<Mesh> parseAsterMesh(std::istream& in, const std::string& source
 }
 
 std::shared_ptr<Mesh> readAsterMesh(const std::string& path, AsterMeshReport* report) {
-    std::ifstream in(path);
+    std::ifstream in(path, std::ios::binary);
     if (!in) throw UserError("mesh file '" + path + "' cannot be opened");
+    // A MED file is HDF5: its signature, not text, on the first line.
+    char head[8] = {};
+    in.read(head, sizeof(head));
+    if (in.gcount() == sizeof(head) && std::memcmp(head, "\x89HDF\r\n\x1a\n", sizeof(head)) == 0)
+        throw UserError("mesh file '" + path + "' is a MED (HDF5) file, not a code_aster text mesh: read it with "
+                        "LIRE_MAILLAGE(FORMAT='MED')");
+    in.clear();
+    in.seekg(0);
     return parseAsterMesh(in, path, report);
 }
 

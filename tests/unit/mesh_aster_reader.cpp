@@ -309,10 +309,25 @@ TEST(AsterMeshReader, DefectsAreReportedWithTheirLine) {
     expectError("COOR_2D\nN4 1.5 0 #\nFINSF\nFIN\n",
                 "line 7: unexpected character '#' (names are a letter followed by letters, digits or '_')");
     expectError("COOR_2D\nN4 'x' 0\nFINSF\nFIN\n", "line 7: quoted text where a name or a number is expected");
+    expectError("COOR_2D\nN4 1.5 0 \x89\nFINSF\nFIN\n",
+                "line 7: unexpected character byte 0x89 (names are a letter followed by letters, digits or '_')");
     expectError("COOR_2D\nN4 1.5" + std::string(80, ' ') + "0\nFINSF\nFIN\n",
                 "line 7: text beyond column 80 (code_aster reads columns 1 to 80 only and would drop it without a "
                 "word): wrap the line");
     EXPECT_EQ(errorOf("FIN\n"), "mesh file 't.mail', line 1: the file defines no node (no COOR_2D or COOR_3D block)");
     expectError("FIN\n", "line 6: the file defines no cell (no cell block such as QUAD4)");
     EXPECT_EQ(errorOf(""), "mesh file 't.mail', line 1: the file is empty");
+}
+
+// A MED file given where a .mail is expected is named as such, not lexed as text.
+TEST(AsterMeshReader, AMedFileIsNotReadAsText) {
+    const std::string med = test::astest("ssnv511a.mmed");
+    std::string what = "(no error)";
+    try {
+        readAsterMesh(med);
+    } catch (const UserError& e) {
+        what = e.what();
+    }
+    EXPECT_EQ(what, "mesh file '" + med + "' is a MED (HDF5) file, not a code_aster text mesh: read it with "
+                    "LIRE_MAILLAGE(FORMAT='MED')");
 }
