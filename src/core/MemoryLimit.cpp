@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <fstream>
+#include <limits>
 
 #include "core/Error.hpp"
 
@@ -33,7 +34,12 @@ std::string origin() {
 }
 }  // namespace
 
-void setMemoryLimit(double megabytes) { gLimitBytes = std::size_t(megabytes * 1024.0 * 1024.0); }
+void setMemoryLimit(double megabytes) {
+    // A limit beyond what size_t counts is no limit (and converting it would be undefined).
+    const double bytes = megabytes * 1024.0 * 1024.0;
+    gLimitBytes = bytes < double(std::numeric_limits<std::size_t>::max()) ? std::size_t(bytes)
+                                                                           : std::numeric_limits<std::size_t>::max();
+}
 
 std::size_t memoryLimitBytes() { return gLimitBytes ? gLimitBytes : availableMemoryBytes(); }
 
