@@ -174,6 +174,16 @@ TEST_F(Visualisation, PlotDrawsThe2DAnd3DResults) {
     auto out = runCommand(std::string(MINIASTER_BINARY) + " plot " + dir_ + "/fort.81 -o " + dir_ + "/x.png --field NOPE", &raw);
     EXPECT_EQ(exitStatus(raw), 1);
     EXPECT_NE(out.find("miniaster plot: no field NOPE"), std::string::npos) << out;
+    // A usage error exits with 1, as the other errors, and leaves no temporary VTU behind.
+    const std::string tmp = dir_ + "/tmp";
+    fs::create_directories(tmp);
+    out = runCommand("TMPDIR=" + tmp + " " + std::string(MINIASTER_BINARY) + " plot " + dir_ + "/fort.81 -o " + dir_ +
+                         "/x.png --deformed abc",
+                     &raw);
+    EXPECT_EQ(exitStatus(raw), 1) << out;
+    EXPECT_NE(out.find("miniaster plot: error: argument --deformed: invalid float value: 'abc'"), std::string::npos) << out;
+    EXPECT_TRUE(fs::is_empty(tmp)) << fs::directory_iterator(tmp)->path();
+    EXPECT_FALSE(fs::exists(dir_ + "/x.png"));
 }
 
 // meshio reads the mesh and the nodal fields of both results as they are (values compared with

@@ -217,10 +217,28 @@ def draw(grid, args):
     print(f"miniaster plot: {args.output} ({label}, min {lo:.6g}, max {hi:.6g}{deformed})")
 
 
+class Arguments(argparse.ArgumentParser):
+    def error(self, message):
+        """A usage error exits with 1, as every other error of miniaster does (argparse: 2)."""
+        self.print_usage(sys.stderr)
+        self.exit(1, f"{self.prog}: error: {message}\n")
+
+
 def main():
-    ap = argparse.ArgumentParser(prog="miniaster plot", description=__doc__,
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("vtu")
+    # The binary's temporary folder goes whatever happens, a usage error included.
+    cleanup = argparse.ArgumentParser(add_help=False)
+    cleanup.add_argument("--remove-folder", default=None)
+    folder = cleanup.parse_known_args()[0].remove_folder
+    try:
+        return run(sys.argv[1:])
+    finally:
+        if folder:
+            shutil.rmtree(folder, ignore_errors=True)
+
+
+def run(argv):
+    ap = Arguments(prog="miniaster plot", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("vtu", metavar="RESULT.rmed")
     ap.add_argument("-o", "--output", required=True)
     ap.add_argument("--field", default=None, help="field (MED name or NOM_CHAM suffix); default the DEPL field")
     ap.add_argument("--component", default=None, help="default: the magnitude of DX, DY, DZ")
@@ -231,15 +249,11 @@ def main():
     ap.add_argument("--dpi", type=int, default=100)
     ap.add_argument("--source", default=None, help=argparse.SUPPRESS)
     ap.add_argument("--remove-folder", default=None, help=argparse.SUPPRESS)
-    args = ap.parse_args()
+    args = ap.parse_args(argv)
     args.source = args.source or args.vtu
-    try:
-        if not math.isfinite(args.deformed):
-            sys.exit("miniaster plot: --deformed must be a finite number")
-        draw(Grid(args.vtu), args)
-    finally:
-        if args.remove_folder:
-            shutil.rmtree(args.remove_folder, ignore_errors=True)
+    if not math.isfinite(args.deformed):
+        sys.exit("miniaster plot: --deformed must be a finite number")
+    draw(Grid(args.vtu), args)
     return 0
 
 
