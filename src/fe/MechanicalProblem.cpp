@@ -1107,4 +1107,9 @@ std::shared_ptr<GaussField> MechanicalProblem::stressField() const {
     return field;
 }
 
+void MechanicalProblem::releaseFactorisation() {
+    solver_ = makeLinearSolver(solverOptions_);
+    factorised_ = false;
+}
+
 }  // namespace ma

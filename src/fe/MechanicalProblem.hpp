@@ -89,6 +89,10 @@ public:
     std::shared_ptr<NodalField> displacementField() const;
     std::shared_ptr<GaussField> stressField() const;  // SIEF_ELGA
 
+    // Frees the factors (MUMPS's memory) when no further solve will come; a later solve
+    // factorises again.
+    void releaseFactorisation();
+
     // Element-level pieces (public for tests and for engines that add their own terms).
     void internalForces(const std::vector<double>& displacement, std::vector<double>& f) const;
     void externalForces(double inst, std::vector<double>& f) const;

@@ -20,6 +20,7 @@ struct FillReducingOrdering {
 // symmetrised: every unknown of A is in it, multipliers and contact unknowns included;
 // consecutive rows of identical pattern (a node's unknowns) are one vertex of their weight.
 // Throws NumericalError when METIS fails (memory, or an internal error).
-FillReducingOrdering nestedDissectionOrdering(const CsrMatrix& A);
+// `threads` (1 or more) only changes the time, not the ordering.
+FillReducingOrdering nestedDissectionOrdering(const CsrMatrix& A, int threads = 1);
 
 }  // namespace ma

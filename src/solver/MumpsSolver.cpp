@@ -4,6 +4,7 @@
 // libmpiseq and do not clash with OpenMPI's C symbols (verified by test solver_med_mumps).
 #include <dmumps_c.h>
 #include <fmt/format.h>
+#include <malloc.h>
 
 #include <algorithm>
 #include <chrono>
@@ -85,6 +86,9 @@ protected:
         initialise(kind);
         analyse(A);
         const double analysisPeak = phase.peakMb();
+        // The ordering's graphs and METIS's work arrays were freed in the heap: give those pages
+        // back before MUMPS allocates its factors, or they stay resident beside them.
+        malloc_trim(0);
         MemoryPhase factorisation;
         factorise();
         logFactorisation(A, kind, seconds(t0), analysisPeak, factorisation);
@@ -157,7 +161,7 @@ private:
         id_.icntl[6] = orderingCode(options_.renum, ordering_);
         orderingNote_.clear();
         if (id_.icntl[6] == kUserOrdering) {
-            const FillReducingOrdering nd = nestedDissectionOrdering(A);
+            const FillReducingOrdering nd = nestedDissectionOrdering(A, options_.threads);
             permIn_.resize(nd.pivotRank.size());
             for (size_t i = 0; i < permIn_.size(); ++i) permIn_[i] = nd.pivotRank[i] + 1;
             id_.perm_in = permIn_.data();
@@ -175,6 +179,7 @@ private:
         id_.perm_in = nullptr;
         if (id_.infog[0] < 0) throw NumericalError(mumpsErrorText(id_.infog[0], id_.infog[1]));
         analysisSeconds_ = seconds(t0);
+        predictedFlops_ = id_.rinfog[0];
     }
 
     // JOB=2; on a workspace error the analysis is kept and only JOB=2 reruns with a larger
@@ -221,12 +226,12 @@ private:
                     id_.sym == 1 ? "SYM=1, positive definite" : "SYM=2, general symmetric", A.rows, id_.nnz,
                     usedOrdering >= 0 && usedOrdering <= 7 ? orderings[usedOrdering] : "?", options_.renum,
                     orderingNote_.empty() ? "" : ": " + orderingNote_);
-        msg().infof("    MUMPS analysis {:.3f} s: predicted flops {:.3e} (RINFOG(3)), factor entries {:.4g} (INFOG(20)), "
+        msg().infof("    MUMPS analysis {:.3f} s: predicted flops {:.3e} (RINFOG(1)), factor entries {:.4g} (INFOG(20)), "
                     "memory {} MB (INFOG(17))",
-                    analysisSeconds_, id_.rinfog[2], mumpsCount(id_.infog[19]), id_.infog[16]);
-        msg().infof("    MUMPS factorisation {:.3f} s ({:.1f} GFLOP/s): factor entries = {}, peak memory {} MB (INFOG(22)); "
-                    "analysis + factorisation {:.3f} s",
-                    factorisationSeconds_, factorisationSeconds_ > 0 ? id_.rinfog[2] / factorisationSeconds_ / 1e9 : 0.0,
+                    analysisSeconds_, predictedFlops_, mumpsCount(id_.infog[19]), id_.infog[16]);
+        msg().infof("    MUMPS factorisation {:.3f} s: {:.3e} flops (RINFOG(3), {:.1f} GFLOP/s), factor entries = {}, "
+                    "peak memory {} MB (INFOG(22)); analysis + factorisation {:.3f} s",
+                    factorisationSeconds_, id_.rinfog[2], factorisationSeconds_ > 0 ? id_.rinfog[2] / factorisationSeconds_ / 1e9 : 0.0,
                     static_cast<long long>(mumpsCount(id_.infog[28])), id_.infog[21], total);
         msg().infof("    memory (resident, process): {:.0f} MB before the analysis, peak {:.0f} MB in the analysis, "
                     "{:.0f} MB in the factorisation",
@@ -252,7 +257,7 @@ private:
     bool conditionLogged_ = false;  // once per factorisation (refinement steps solve again)
     bool initialised_ = false;
     std::string ordering_, orderingNote_;
-    double analysisSeconds_ = 0.0, factorisationSeconds_ = 0.0, residentBeforeMb_ = 0.0;
+    double analysisSeconds_ = 0.0, predictedFlops_ = 0.0, factorisationSeconds_ = 0.0, residentBeforeMb_ = 0.0;
     std::vector<MUMPS_INT> permIn_;
     LargeVector<MUMPS_INT> irn_, jcn_;
     LargeVector<double> a_;
