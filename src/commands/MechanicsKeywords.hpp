@@ -10,7 +10,6 @@
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "fe/MechanicalProblem.hpp"
-#include "fe/Parallel.hpp"
 #include "mesh/Mesh.hpp"
 #include "parser/KeywordTree.hpp"
 
@@ -86,7 +85,6 @@ inline std::vector<int> selectedNodes(const Mesh& mesh, const KeywordSet& occ, c
 inline SolverOptions solverOptions(const KeywordSet& kw, int info) {
     SolverOptions o;
     o.info = info;
-    o.threads = workerCount();
     o.conditionEstimate = info >= 2;  // MUMPS ICNTL(11)=1 costs a few extra solves: INFO=2 only
     const auto& occ = kw.factor("SOLVEUR");
     if (occ.empty()) return o;

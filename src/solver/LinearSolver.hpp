@@ -29,7 +29,6 @@ struct SolverOptions {
     bool diagonalScaling = true;     // factorise D^-1/2 A D^-1/2 (code_aster: PRETRAITEMENTS)
     int maxRefinementSteps = 3;      // iterative refinement while it helps; 0 = none (POSTTRAITEMENTS)
     int info = 1;
-    int threads = 1;  // for the METIS ordering's two halves
     // Appended to the "singular system" message: what the caller knows about likely causes.
     std::string singularHint =
         "a missing boundary condition (rigid body motion) or an unattached enriched dof";

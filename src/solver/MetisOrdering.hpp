@@ -20,7 +20,8 @@ struct FillReducingOrdering {
 // symmetrised: every unknown of A is in it, multipliers and contact unknowns included;
 // consecutive rows of identical pattern (a node's unknowns) are one vertex of their weight.
 // Throws NumericalError when METIS fails (memory, or an internal error).
-// `threads` (1 or more) only changes the time, not the ordering.
-FillReducingOrdering nestedDissectionOrdering(const CsrMatrix& A, int threads = 1);
+// One thread: METIS 5.1's random generator is shared between threads (two concurrent calls
+// give orderings that change from run to run: checked).
+FillReducingOrdering nestedDissectionOrdering(const CsrMatrix& A);
 
 }  // namespace ma

@@ -161,7 +161,7 @@ private:
         id_.icntl[6] = orderingCode(options_.renum, ordering_);
         orderingNote_.clear();
         if (id_.icntl[6] == kUserOrdering) {
-            const FillReducingOrdering nd = nestedDissectionOrdering(A, options_.threads);
+            const FillReducingOrdering nd = nestedDissectionOrdering(A);
             permIn_.resize(nd.pivotRank.size());
             for (size_t i = 0; i < permIn_.size(); ++i) permIn_[i] = nd.pivotRank[i] + 1;
             id_.perm_in = permIn_.data();
