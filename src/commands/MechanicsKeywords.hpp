@@ -94,6 +94,8 @@ inline SolverOptions solverOptions(const KeywordSet& kw, int info) {
     if (o.method != "MUMPS") o.renum = "AUTO";  // MD/MDA/METIS/RCMK of the native solvers: Eigen uses AMD
     o.nprec = static_cast<int>(s.integer("NPREC", 8));
     o.typeResol = s.text("TYPE_RESOL", "AUTO");
+    o.acceleration = s.text("ACCELERATION", "AUTO");
+    o.lowRankThreshold = s.has("LOW_RANK_SEUIL") ? s.real("LOW_RANK_SEUIL") : 0.0;
     if (s.has("PCENT_PIVOT")) {
         const auto& v = s.values("PCENT_PIVOT")[0];
         o.pcentPivot = std::holds_alternative<long long>(v) ? int(std::get<long long>(v))

@@ -103,3 +103,28 @@ TEST(SolverOrdering, AutoIsMetisAndBeatsMinimumDegreeOnAGrid) {
     EXPECT_NE(msg().messText().rfind("RENUM='PARMETIS': the sequential solver uses its sequential counterpart METIS"),
               std::string::npos);
 }
+
+// ACCELERATION='LR': block low-rank factors; the refinement brings the solution back to round-off.
+TEST(SolverLowRank, LowRankFactorsAreRefinedToRoundOff) {
+    msg().setEcho(false);
+    const CsrMatrix A = gridMatrix(100);
+    for (double threshold : {0.0, 1e-6}) {
+        SolverOptions o;
+        o.acceleration = "LR";
+        o.lowRankThreshold = threshold;
+        auto solver = makeLinearSolver(o);
+        solver->factorize(A, MatrixKind::SymmetricPositiveDefinite);
+        EXPECT_NE(msg().messText().rfind(threshold == 0.0 ? "block low-rank factors (ACCELERATION='LR', CNTL(7)=1e-10)"
+                                                           : "block low-rank factors (ACCELERATION='LR', CNTL(7)=1e-06)"),
+                  std::string::npos);
+        std::vector<double> x(A.rows), b(A.rows);
+        for (int i = 0; i < A.rows; ++i) x[i] = std::sin(0.001 * i) + 1.0;
+        A.multiply(x, b);
+        EXPECT_LT(solver->solve(b), 1e-14);
+        for (int i = 0; i < A.rows; ++i) ASSERT_NEAR(b[i], x[i], 1e-13) << i;
+    }
+    // AUTO keeps full-rank factors below 1e6 unknowns.
+    factoriseAndSolve(A, "AUTO");
+    EXPECT_EQ(msg().messText().rfind("block low-rank"),
+              msg().messText().rfind("block low-rank factors (ACCELERATION='LR', CNTL(7)=1e-06)"));
+}
