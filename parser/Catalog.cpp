@@ -9,6 +9,7 @@
 #include <set>
 
 #include "core/Error.hpp"
+#include "core/Messages.hpp"
 
 namespace ma {
 
@@ -333,7 +334,7 @@ void checkAllowed(const Keyword& def, const KeywordValue& v, const std::string& 
 
 std::string countText(int n) { return n == cata::kMany ? "any number of" : std::to_string(n); }
 
-void convertSimple(const Keyword& def, const CallValue& given, KeywordSet& out) {
+void convertSimple(const Keyword& def, const CallValue& given, KeywordSet& out, const std::string& command) {
     const std::string path = out.pathOf(def.name);
     std::vector<const CallValue*> items;
     if (given.kind == CallValue::Kind::List) {
@@ -352,7 +353,11 @@ void convertSimple(const Keyword& def, const CallValue& given, KeywordSet& out) 
         checkAllowed(def, v, path);
         if (std::holds_alternative<std::string>(v)) {
             auto legacy = def.legacyValues.find(std::get<std::string>(v));
-            if (legacy != def.legacyValues.end()) v = legacy->second;
+            if (legacy != def.legacyValues.end()) {
+                msg().infof("    {}: {}='{}' (an older code_aster syntax) is read as {}='{}'", command, path,
+                            legacy->first, path, legacy->second);
+                v = legacy->second;
+            }
         }
         values.push_back(std::move(v));
     }
@@ -412,7 +417,7 @@ void applyContent(const std::vector<Keyword>& content, LevelState& st, KeywordSe
         const CallValue* given = findArg(st.args, k.name);
         if (given) {
             st.consumed.insert(k.name);
-            if (k.kind == Keyword::Kind::Simple) convertSimple(k, *given, out);
+            if (k.kind == Keyword::Kind::Simple) convertSimple(k, *given, out, command);
             else convertFactor(k, *given, out, command);
             if (!k.storedAs.empty()) {
                 if (out.has(k.storedAs))

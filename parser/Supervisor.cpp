@@ -15,6 +15,7 @@
 #include "core/Messages.hpp"
 #include "core/TestReport.hpp"
 #include "parser/RunState.hpp"
+#include "parser/StaticCheck.hpp"
 #include "xfem/SubcellQuadrature.hpp"
 
 namespace py = pybind11;
@@ -120,7 +121,7 @@ std::string banner() {
     return fmt::format(
         "\n {0}\n  -- CODE_ASTER -- VERSION : miniaster {1} (runs code_aster command files)\n"
         "  Embedded Python {2}\n {0}\n",
-        std::string(78, '='), "0.1", PY_VERSION);
+        std::string(78, '='), MINIASTER_VERSION, PY_VERSION);
 }
 
 std::string timingSummary(const RunState& run) {
@@ -169,6 +170,7 @@ void executeCommandFile(RunState& run) {
         run.fail("SYNTAX_ERROR", "", line, text);
         return;
     }
+    if (!checkCommandFileStatically(source, run)) return;  // every visible problem at once, nothing run
     py::dict globals;
     globals["__builtins__"] = builtins;
     globals["__name__"] = "__main__";

@@ -1,8 +1,24 @@
-// miniaster: runs code_aster command files (.comm / .export). See README.md.
+// miniaster: runs code_aster command files (.comm / .export); converts and plots results. See README.md.
+#include <cstdio>
+#include <string>
+
+#include "cli/ResultTools.hpp"
 #include "core/MallocHugePages.hpp"
 #include "parser/Supervisor.hpp"
 
 int main(int argc, char** argv) {
+    const std::string command = argc >= 2 ? argv[1] : "";
+    if (command == "--version") {
+        std::printf("miniaster %s\n", MINIASTER_VERSION);
+        return 0;
+    }
+    if (command == "convert") return ma::cli::convertMain(argc, argv);
+    if (command == "plot") return ma::cli::plotMain(argc, argv);
+    if (command == "--help" || command == "-h")
+        std::fputs("usage: miniaster convert RESULT.rmed OUT.vtu    (every field and step, for ParaView)\n"
+                   "       miniaster plot RESULT.rmed [--field NAME] [--component C] [--deformed SCALE] -o OUT.png\n"
+                   "       miniaster --version\n",
+                   stdout);
     ma::reexecWithMallocOnHugePages(argv);
     return ma::supervisorMain(argc, argv);
 }

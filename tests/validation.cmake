@@ -14,13 +14,24 @@ endforeach()
 
 # Originals (read in place from ../shared/astest, never copied). Added as their issues land.
 set(MINIASTER_ORIGINALS ssnv511a ssnv511b ssnv511c ssnv511d ssnv511e ssnv511f ssnv511g ssnv511h CACHE INTERNAL "")
-# Originals whose NON_REGRESSION values are code_aster's own inexact results (docs/contact.md):
-# exit 2 accepted when every reference check is OK (tools/run_validation.sh).
-set(MINIASTER_ORIGINALS_INEXACT_VALE_CALC ssnv511e ssnv511f ssnv511g ssnv511h CACHE INTERNAL "")
-foreach(_name ${MINIASTER_ORIGINALS})
+# code_aster's junction family (docs/family.md).
+set(MINIASTER_FAMILY ssnv512a ssnv512c ssnv512e ssnv512f ssnv513a ssnv513b ssnv513c ssnv513d ssnv513e ssnv513g
+    ssnv513h CACHE INTERNAL "")
+# Originals whose NON_REGRESSION values are code_aster's own inexact results (docs/contact.md,
+# docs/family.md): exit 2 accepted when every reference check is OK (tools/run_validation.sh).
+set(MINIASTER_ORIGINALS_INEXACT_VALE_CALC ssnv511e ssnv511f ssnv511g ssnv511h ssnv512f ssnv513e ssnv513g
+    CACHE INTERNAL "")
+# The one reference check allowed to stay NOOK: ssnv513e's ANALYTIQUE envelope -(X+5)/100 +- 0.06 of
+# DEPZON_4 DX-DX MAX, which the converged solution itself exceeds (0.0629 at N = 81, the refinement
+# study of docs/family.md). Its DEPZON_1 DX-DX MAX line is OK (0.044) and is not excused.
+set(_ssnv513e_allowed --allow-reference-nook "TEST_TABLE (ssnv513e.comm line 332) DEPZON_4 DX-DX MAX")
+foreach(_name ${MINIASTER_ORIGINALS} ${MINIASTER_FAMILY})
   set(_opt "")
   if(_name IN_LIST MINIASTER_ORIGINALS_INEXACT_VALE_CALC)
     set(_opt --allow-nonregression-nook)
+  endif()
+  if(_name STREQUAL "ssnv513e")
+    list(APPEND _opt ${_ssnv513e_allowed})
   endif()
   add_test(NAME original.${_name}
            COMMAND ${_run} $<TARGET_FILE:miniaster-bin> ${CMAKE_SOURCE_DIR}/../shared/astest/${_name}.export
@@ -60,3 +71,13 @@ endforeach()
 add_test(NAME astest_subcell_degree2.contact_hexa8_n5
          COMMAND ${_run} $<TARGET_FILE:miniaster-bin> ${CMAKE_SOURCE_DIR}/astest/contact_hexa8_n5.export
                  ${CMAKE_BINARY_DIR}/astest-out/subcell_degree2_contact_hexa8_n5 -- --subcell-quadrature 2)
+
+# Invariants of the 3D F-junction cases read from their four runs' .mess (tests/fjunction_check.py):
+# no interpenetration where the answer is exact, the penetration of the stepped loads below 2e-3 m and
+# shrinking from N = 7 to 13, every contact solve converged within ITER_CONT_MAXI = 10.
+set(_fjunction_runs astest.fjunction_hexa8_n7 astest.fjunction_hexa8_n13 astest.fjunction_tetra4_n7
+    astest.fjunction_tetra4_n13)
+set_tests_properties(${_fjunction_runs} PROPERTIES FIXTURES_SETUP fjunction)
+add_test(NAME astest.fjunction_invariants
+         COMMAND ${Python_EXECUTABLE} ${CMAKE_SOURCE_DIR}/tests/fjunction_check.py ${CMAKE_BINARY_DIR}/astest-out)
+set_tests_properties(astest.fjunction_invariants PROPERTIES FIXTURES_REQUIRED fjunction)

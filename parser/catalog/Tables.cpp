@@ -29,6 +29,11 @@ std::vector<Keyword> filterKeywords(bool regexp) {
     if (regexp) out.push_back(bloc(when("CRIT_COMP", {"REGEXP"}), {TXM("VALE_K").mandatory()}));
     return out;
 }
+
+// Row sort (CALC_TABLE ACTION/TRI, IMPR_TABLE TRI).
+std::vector<Keyword> sortKeywords() {
+    return {TXM("NOM_PARA").many().mandatory(), TXM("ORDRE").into({"CROISSANT", "DECROISSANT"}).def("CROISSANT")};
+}
 }  // namespace
 
 void addTableCommands(Catalog& c) {
@@ -44,9 +49,7 @@ void addTableCommands(Catalog& c) {
                       bloc(when("OPERATION", {"FILTRE"}), filterKeywords(true)),
                       bloc(when("OPERATION", {"EXTR"}), {TXM("NOM_PARA").many().mandatory()}),
                       bloc(when("OPERATION", {"RENOMME"}), {TXM("NOM_PARA").min(2).max(2).mandatory()}),
-                      bloc(when("OPERATION", {"TRI"}),
-                           {TXM("NOM_PARA").many().mandatory(),
-                            TXM("ORDRE").into({"CROISSANT", "DECROISSANT"}).def("CROISSANT")}),
+                      bloc(when("OPERATION", {"TRI"}), sortKeywords()),
                       bloc(when("OPERATION", {"COMB"}),
                            {CO("TABLE", {kTable}).mandatory(), TXM("NOM_PARA").many(),
                             yesNo("RESTREINT").def("NON"), TXM("FORMAT_R")}),
@@ -63,8 +66,9 @@ void addTableCommands(Catalog& c) {
              .notSupported({"ASTER", "TABLEAU_CROISE", "AGRAF", "XMGRACE", "NUMPY", "LATEX"}).def("TABLEAU"),
          I("UNITE").def(8), TXM("NOM_PARA").many(), TXM("FORMAT_R").def("E12.5"), TXM("SEPARATEUR").def(" "),
          TXM("COMMENTAIRE").def("#"), TXM("COMM_PARA").def(""), TXM("DEBUT_LIGNE").def(""),
-         TXM("FIN_LIGNE").def("\n"), yesNo("IMPR_FONCTION").def("NON"), titre(), info()},
-        unsupported({"FILTRE", "TRI", "PAGINATION", "DEBUT_TABLE", "FIN_TABLE", "FORMAT_C", "SENSIBILITE"},
+         TXM("FIN_LIGNE").def("\n"), yesNo("IMPR_FONCTION").def("NON"), titre(), info(),
+         fact("TRI").keywords(sortKeywords())},
+        unsupported({"FILTRE", "PAGINATION", "DEBUT_TABLE", "FIN_TABLE", "FORMAT_C", "SENSIBILITE"},
                     "filter or sort the table with CALC_TABLE first"),
     })));
 

@@ -3,6 +3,7 @@
 // X, Y, Z, INST evaluated in batch when the analysis needs them.
 #include <fmt/format.h>
 
+#include "commands/LegacyContactLoad.hpp"
 #include "commands/MechanicsKeywords.hpp"
 #include "core/Messages.hpp"
 #include "fe/DofNumbering.hpp"
@@ -31,11 +32,7 @@ ConceptPtr buildMechanicalLoad(const KeywordSet& kw, bool functions) {
     const Mesh& mesh = *model->mesh;
     auto load = std::make_shared<MechanicalLoad>();
     load->model = model;
-    if (kw.text("LIAISON_XFEM", "NON") == "OUI")
-        throw NotImplemented("AFFE_CHAR_MECA/LIAISON_XFEM='OUI' (legacy X-FEM syntax) is not supported");
-    if (kw.has("CONTACT_XFEM"))
-        throw NotImplemented("AFFE_CHAR_MECA/CONTACT_XFEM (legacy X-FEM contact as a load) is not supported; "
-                             "give DEFI_CONTACT to STAT_NON_LINE/CONTACT");
+    readLegacyXfemContact(kw, *load);
     const DofNumbering numbering(*model);
     std::vector<char> modelNodes(mesh.nodeCount(), 0);
     for (int n = 0; n < mesh.nodeCount(); ++n) modelNodes[n] = numbering.hasNode(n);

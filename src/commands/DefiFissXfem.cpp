@@ -49,10 +49,12 @@ ConceptPtr defiFissXfem(const KeywordSet& kw, CommandContext& ctx) {
     if (!jonction.empty()) {
         const auto& j = jonction[0];
         for (const auto& c : j.objects<xfem::Crack>("FISSURE")) junction.masters.push_back(c);
+        // Missing coordinates are 0, as code_aster (xinlsj zeroes the point and reads up to 3
+        // values): ssnv510f gives POINT=(0,4) on a 3D mesh.
         const auto point = j.reals("POINT");
         if (point.size() < static_cast<size_t>(mesh->dim))
-            throw UserError(fmt::format("{}: {} coordinates given, the mesh has dimension {}", j.pathOf("POINT"),
-                                        point.size(), mesh->dim));
+            msg().infof("    {}: {} coordinate(s) given on a mesh of dimension {}; the missing ones are 0",
+                        j.pathOf("POINT"), point.size(), mesh->dim);
         for (size_t i = 0; i < point.size() && i < 3; ++i) junction.point[i] = point[i];
         junction.keywordPath = j.path().empty() ? "JONCTION" : j.path();
     }

@@ -10,10 +10,27 @@
 #include "core/Messages.hpp"
 #include "core/Units.hpp"
 #include "fields/Fields.hpp"
+#include "commands/ImprResuGmsh.hpp"
 #include "med_io/MedWriter.hpp"
 #include "parser/CommandRegistry.hpp"
 
 namespace ma {
+
+// NUME_ORDRE / INST of a RESU occurrence, else every step (shared with the GMSH output).
+std::vector<const ResultStep*> selectedResultSteps(const Result& result, const KeywordSet& occ) {
+    std::vector<const ResultStep*> steps;
+    if (occ.has("NUME_ORDRE")) {
+        for (auto order : occ.integers("NUME_ORDRE")) steps.push_back(&result.step(int(order)));
+    } else if (occ.has("INST")) {
+        const bool relative = occ.text("CRITERE", "RELATIF") == "RELATIF";
+        const double precision = occ.real("PRECISION", 1e-6);
+        for (double inst : occ.reals("INST")) steps.push_back(&result.stepAtInst(inst, precision, relative));
+    } else {
+        for (const auto& s : result.steps) steps.push_back(&s);
+    }
+    return steps;
+}
+
 namespace {
 
 // Files already written by IMPR_RESU in this run (process): later calls append.
@@ -55,27 +72,13 @@ void writeNodal(med::MedWriter& w, const std::string& name, const std::string& m
     else w.writeNodalField(name, meshName, f, numdt, numit, dt);
 }
 
-std::vector<const ResultStep*> selectSteps(const Result& result, const KeywordSet& occ) {
-    std::vector<const ResultStep*> steps;
-    if (occ.has("NUME_ORDRE")) {
-        for (auto order : occ.integers("NUME_ORDRE")) steps.push_back(&result.step(int(order)));
-    } else if (occ.has("INST")) {
-        const bool relative = occ.text("CRITERE", "RELATIF") == "RELATIF";
-        const double precision = occ.real("PRECISION", 1e-6);
-        for (double inst : occ.reals("INST")) steps.push_back(&result.stepAtInst(inst, precision, relative));
-    } else {
-        for (const auto& s : result.steps) steps.push_back(&s);
-    }
-    return steps;
-}
-
 void printResult(med::MedWriter& w, const Result& result, const KeywordSet& occ) {
     if (!result.mesh) throw UserError(occ.pathOf("RESULTAT") + ": result " + result.name + " has no mesh");
     const std::string meshName = meshNameOf(*result.mesh);
     w.writeMesh(*result.mesh, meshName);
     const bool chosen = occ.has("NOM_CHAM");
     const auto wanted = chosen ? occ.texts("NOM_CHAM") : std::vector<std::string>{};
-    for (const ResultStep* step : selectSteps(result, occ)) {
+    for (const ResultStep* step : selectedResultSteps(result, occ)) {
         std::vector<std::string> names = wanted;
         if (!chosen) {
             for (const auto& [n, f] : step->nodalFields) names.push_back(n);
@@ -118,7 +121,12 @@ void printField(med::MedWriter& w, const ConceptPtr& field, const KeywordSet& oc
 
 ConceptPtr imprResu(const KeywordSet& kw, CommandContext& ctx) {
     const std::string format = kw.text("FORMAT", "MED");
-    if (format != "MED") throw NotImplemented("IMPR_RESU: FORMAT='" + format + "' is not supported; use FORMAT='MED'");
+    if (format == "GMSH") return imprResuGmsh(kw, ctx);
+    if (format != "MED")
+        throw NotImplemented("IMPR_RESU: FORMAT='" + format + "' is not supported; use FORMAT='MED' or 'GMSH'");
+    for (const auto& occ : kw.factor("RESU"))  // keywords of the GMSH output only
+        for (const char* k : {"TYPE_CHAM", "GROUP_MA", "MAILLE"})
+            if (occ.has(k)) throw NotImplemented(occ.pathOf(k) + " is not supported by miniaster's MED output");
     if (!ctx.units) throw UserError("IMPR_RESU: no logical units are defined for this run");
     const int unit = int(kw.integer("UNITE", 80));
     const std::string path = ctx.units->output(unit);

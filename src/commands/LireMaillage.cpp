@@ -1,24 +1,18 @@
-// LIRE_MAILLAGE (commands_spec §7.7): FORMAT='MED' from logical unit UNITE (default 20), the first
-// mesh of the file or NOM_MED.
+// LIRE_MAILLAGE (commands_spec §7.7): from logical unit UNITE (default 20), FORMAT='MED' (the
+// first mesh of the file or NOM_MED, docs/med.md) or FORMAT='ASTER' (.mail text, docs/mesh.md).
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "core/Units.hpp"
 #include "med_io/MedReader.hpp"
+#include "mesh/AsterMeshReader.hpp"
 #include "mesh/MeshSummary.hpp"
 #include "parser/CommandRegistry.hpp"
 
 namespace ma {
 namespace {
 
-ConceptPtr lireMaillage(const KeywordSet& kw, CommandContext& ctx) {
-    const std::string format = kw.text("FORMAT", "MED");
-    if (format != "MED")
-        throw NotImplemented("LIRE_MAILLAGE: FORMAT='" + format + "' is not supported; convert the mesh to MED");
-    if (!ctx.units) throw UserError("LIRE_MAILLAGE: no logical units are defined for this run");
-    const int unit = int(kw.integer("UNITE", 20));
-    const std::string path = ctx.units->input(unit);
+std::shared_ptr<Mesh> readMedMesh(const KeywordSet& kw, const std::string& path, int unit, std::string& meshName) {
     const std::string nomMed = kw.text("NOM_MED", "");
-
     med::MeshReadReport report;
     auto mesh = med::readMesh(path, nomMed, &report);
     msg().infof("    mesh '{}' read from unit {} ({}), space dimension {}", report.meshName, unit, path,
@@ -26,13 +20,35 @@ ConceptPtr lireMaillage(const KeywordSet& kw, CommandContext& ctx) {
     if (nomMed.empty() && report.meshesInFile.size() > 1)
         msg().alarm("MED_MULTI", "the MED file holds " + std::to_string(report.meshesInFile.size()) +
                                      " meshes; the first one, '" + report.meshName + "', is read (use NOM_MED to choose)");
+    meshName = report.meshName;
+    return mesh;
+}
+
+std::shared_ptr<Mesh> readMailMesh(const std::string& path, int unit) {
+    AsterMeshReport report;
+    auto mesh = readAsterMesh(path, &report);
+    msg().infof("    mesh read from unit {} ({}, FORMAT='ASTER'), space dimension {}", unit, path, mesh->dim);
+    for (const auto& line : report.title) msg().info("    TITRE: " + line);
+    for (const auto& [id, text] : report.alarms) msg().alarm(id, "mesh " + path + ", " + text);
+    return mesh;
+}
+
+ConceptPtr lireMaillage(const KeywordSet& kw, CommandContext& ctx) {
+    const std::string format = kw.text("FORMAT", "MED");
+    if (format != "MED" && format != "ASTER")
+        throw NotImplemented("LIRE_MAILLAGE: FORMAT='" + format + "' is not supported; convert the mesh to MED");
+    if (!ctx.units) throw UserError("LIRE_MAILLAGE: no logical units are defined for this run");
+    const int unit = int(kw.integer("UNITE", 20));
+    const std::string path = ctx.units->input(unit);
+    std::string meshName = "MAILLAGE";
+    auto mesh = format == "MED" ? readMedMesh(kw, path, unit, meshName) : readMailMesh(path, unit);
 
     bool check = true;
     for (const auto& occ : kw.factor("VERI_MAIL")) check = occ.text("VERIF", "OUI") == "OUI";
     if (check)
         for (const auto& defect : meshDefects(*mesh)) msg().alarm("MODELISA_VERI_MAIL", "mesh " + path + ": " + defect);
 
-    const std::string name = ctx.resultName.empty() ? report.meshName : ctx.resultName;
+    const std::string name = ctx.resultName.empty() ? meshName : ctx.resultName;
     msg().info(meshSummary(*mesh, name));
     return mesh;
 }

@@ -5,6 +5,7 @@
 
 #include <chrono>
 
+#include "commands/LegacyContactLoad.hpp"
 #include "commands/MechanicsKeywords.hpp"
 #include "core/Messages.hpp"
 #include "fe/MechanicalProblem.hpp"
@@ -32,7 +33,9 @@ ConceptPtr mecaStatique(const KeywordSet& kw, CommandContext& ctx) {
             std::erase_if(instants, [&](double t) { return t > fin + 1e-12 * std::max(1.0, std::abs(fin)); });
         }
     }
-    MechanicalProblem problem(model, material, mechanics::loadCases(kw), mechanics::solverOptions(kw, ctx.info));
+    const auto loads = mechanics::loadCases(kw);
+    mechanics::refuseContactLoads(loads, "MECA_STATIQUE");
+    MechanicalProblem problem(model, material, loads, mechanics::solverOptions(kw, ctx.info));
     auto result = std::make_shared<Result>("evol_elas");
     result->mesh = model->mesh;
     result->model = model;

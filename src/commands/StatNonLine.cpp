@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "commands/LegacyContactLoad.hpp"
 #include "commands/MechanicsKeywords.hpp"
 #include "contact/ContactLoop.hpp"
 #include "core/Messages.hpp"
@@ -97,12 +98,13 @@ ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
         return std::find(excluded.begin(), excluded.end(), field) == excluded.end();
     };
 
-    MechanicalProblem problem(model, material, mechanics::loadCases(kw), mechanics::solverOptions(kw, ctx.info));
+    const auto loads = mechanics::loadCases(kw);
+    const auto definition = mechanics::contactOfTheSolve(kw, loads);
+    MechanicalProblem problem(model, material, loads, mechanics::solverOptions(kw, ctx.info));
     std::shared_ptr<contact::ContactTerms> contactTerms;
-    if (kw.has("CONTACT")) {
-        auto definition = kw.object<contact::ContactDefinition>("CONTACT");
+    if (definition) {
         if (definition->model->enrichment != model->enrichment)
-            throw UserError(fmt::format("{}: {} was defined on model {}, not on MODELE {}", kw.pathOf("CONTACT"),
+            throw UserError(fmt::format("the contact {} was defined on model {}, not on MODELE {}",
                                         definition->name, definition->model->name, model->name));
         contactTerms = contact::attachContact(problem, *material, definition);
     }

@@ -53,10 +53,14 @@ int facetTraceDegree(CellType parent, const std::vector<std::array<double, 3>>& 
     return std::max(varying, 1);
 }
 
-int gaussOrderFor(int dim, int traceDegree) {
+bool positiveWeights(const QuadratureRule& rule) {
+    return std::all_of(rule.weights.begin(), rule.weights.end(), [](double w) { return w > 0.0; });
+}
+
+int gaussOrderFor(int dim, int degree) {
     for (int n = 1; n <= 6; ++n) {
-        const std::string family = facetFamily(dim, {"GAUSS", n});
-        if (quadratureRule(dim == 2 ? CellType::SEG2 : CellType::TRIA3, family).degree >= traceDegree) return n;
+        const auto& rule = quadratureRule(dim == 2 ? CellType::SEG2 : CellType::TRIA3, facetFamily(dim, {"GAUSS", n}));
+        if (rule.degree >= degree && positiveWeights(rule)) return n;
     }
     return 6;
 }

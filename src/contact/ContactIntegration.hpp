@@ -9,6 +9,10 @@
 
 #include "mesh/CellType.hpp"
 
+namespace ma {
+struct QuadratureRule;
+}
+
 namespace ma::contact {
 
 struct ContactIntegration {
@@ -30,8 +34,14 @@ std::string missingRuleReason(int dim, const ContactIntegration& integration);
 // along a grid line xi or eta = const, else 2; 3D: 2 in a plane xi_k = const, else 3).
 int facetTraceDegree(CellType parent, const std::vector<std::array<double, 3>>& refVertices);
 
-// Smallest ORDRE_INT of INTEGRATION='GAUSS' whose facet rule is exact for that degree.
-int gaussOrderFor(int dim, int traceDegree);
+// Whether every weight of the rule is positive. A contact point of negative weight turns its
+// contact term concave in the point's pressure and the stabilisation gamma sum w g(v)^2 indefinite
+// (TR3 FPG4, centre weight -27/96: ssnv513g's active set cycled, MUMPS negative pivot; docs/contact.md).
+bool positiveWeights(const QuadratureRule& rule);
+
+// Smallest ORDRE_INT of INTEGRATION='GAUSS' whose facet rule is exact for that degree and has
+// positive weights only (3D degree 3: ORDRE_INT=4, TR3 FPG6, not FPG4).
+int gaussOrderFor(int dim, int degree);
 
 // For the .mess: "INTEGRATION='NOEUD' (facet vertices)", "INTEGRATION='GAUSS', ORDRE_INT=6 (SE2 FPG4)".
 std::string describe(int dim, const ContactIntegration& integration);

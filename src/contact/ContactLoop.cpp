@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "contact/ActiveSetHistory.hpp"
 #include "contact/ContactIntegration.hpp"
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
@@ -17,6 +18,61 @@
 #include "xfem/XfemModel.hpp"
 
 namespace ma::contact {
+
+namespace {
+
+// The facets whose zone rule ContactTerms replaced (RuleShortfall), one alarm CONTACT_INTEGRATION per
+// cause: the user asked for another rule.
+void announceReplacedRules(const ContactTerms& terms, const ContactDefinition& definition) {
+    const auto& xm = definition.xfemModel();
+    // A rule of lower degree than the traces of the shape functions on the facets (the vertex rule
+    // on HEXA8 cells, or on QUAD4 cells cut off their grid lines) would integrate the contact terms
+    // only approximately: consistent point by point, but a solution the elements represent exactly
+    // would no longer be reproduced. ContactTerms integrates those facets with the lowest exact Gauss
+    // rule instead; the user asked for another rule, so say it (docs/contact.md).
+    // One alarm per rule and trace degree, naming the zones.
+    std::map<std::pair<std::string, int>, std::vector<std::string>> weak;
+    std::map<std::pair<std::string, int>, int> orders;
+    for (size_t z = 0; z < definition.zones.size(); ++z) {
+        const RuleShortfall& s = terms.ruleShortfalls()[z];
+        if (s.replaced == 0) continue;
+        const std::pair<std::string, int> key{describe(xm.dim(), definition.zones[z].integration), s.traceDegree};
+        weak[key].push_back(fmt::format("{} ({} of {} facets)", definition.zones[z].crack->name, s.replaced, s.facets));
+        orders[key] = std::max(orders[key], s.replacementOrder);
+    }
+    for (const auto& [key, zones] : weak) {
+        const auto& [rule, traceDegree] = key;
+        const int order = orders[key];
+        msg().alarm("CONTACT_INTEGRATION",
+                    fmt::format("contact zone(s) {}: the traces of the shape functions of the QUAD4/HEXA8 cells on "
+                                "these facets have degree {}, above the degree that {} integrates exactly; with it "
+                                "even a solution the elements represent exactly (a uniform stress per block) would "
+                                "only be approximated (ssnv511g with the vertex rule: relative energy error "
+                                "5.8e-4). miniaster integrates these facets with INTEGRATION='GAUSS', ORDRE_INT={} "
+                                "({} {}) instead, which is exact for them; the other facets keep the zone's rule.",
+                                fmt::join(zones, ", "), traceDegree, rule, order, xm.dim() == 2 ? "SE2" : "TR3",
+                                facetFamily(xm.dim(), ContactIntegration{"GAUSS", order})));
+    }
+    // A rule with a negative weight (3D ORDRE_INT=3, TR3 FPG4, centre weight -27/96) would give its
+    // contact point a term concave in the point's pressure and an indefinite stabilisation on traces it
+    // does not integrate exactly (the slanted HEXA8 facets of ssnv513g: one negative MUMPS pivot and an
+    // active set cycling between 397 and 417 points; docs/contact.md).
+    for (size_t z = 0; z < definition.zones.size(); ++z) {
+        const RuleShortfall& s = terms.ruleShortfalls()[z];
+        if (!s.negativeWeight) continue;
+        const ContactIntegration replacement{"GAUSS", s.negativeWeightOrder};
+        msg().alarm("CONTACT_INTEGRATION",
+                    fmt::format("contact zone {}: {} has a negative weight; a contact point of negative weight turns its "
+                                "term concave in the point's contact pressure and the contact stabilisation indefinite "
+                                "(measured on ssnv513g: a negative pivot and contact statuses cycling without end). "
+                                "miniaster integrates the zone's {} facets with {} instead (positive weights, at "
+                                "least the same degree).",
+                                definition.zones[z].crack->name, describe(xm.dim(), definition.zones[z].integration),
+                                s.facets, describe(xm.dim(), replacement)));
+    }
+}
+
+}  // namespace
 
 std::shared_ptr<ContactTerms> attachContact(MechanicalProblem& problem, const MaterialField& material,
                                             std::shared_ptr<const ContactDefinition> definition) {
@@ -78,40 +134,16 @@ std::shared_ptr<ContactTerms> attachContact(MechanicalProblem& problem, const Ma
         msg().infof("    penalised contact: {} contact points ({} merged with a point of the same gap at a shared facet "
                     "vertex), one pressure unknown each",
                     terms->points().size(), terms->mergedPenaltyPoints());
-    // A rule of lower degree than the traces of the shape functions on the facets (the vertex rule
-    // on HEXA8 cells, or on QUAD4 cells cut off their grid lines) would integrate the contact terms
-    // only approximately: consistent point by point, but a solution the elements represent exactly
-    // would no longer be reproduced. ContactTerms integrates those facets with the lowest exact Gauss
-    // rule instead; the user asked for another rule, so say it (docs/contact.md).
-    // One alarm per rule and trace degree, naming the zones.
-    std::map<std::pair<std::string, int>, std::vector<std::string>> weak;
-    std::map<std::pair<std::string, int>, int> orders;
-    for (size_t z = 0; z < definition->zones.size(); ++z) {
-        const RuleShortfall& s = terms->ruleShortfalls()[z];
-        if (s.replaced == 0) continue;
-        const std::pair<std::string, int> key{describe(xm.dim(), definition->zones[z].integration), s.traceDegree};
-        weak[key].push_back(fmt::format("{} ({} of {} facets)", definition->zones[z].crack->name, s.replaced, s.facets));
-        orders[key] = std::max(orders[key], s.replacementOrder);
-    }
-    for (const auto& [key, zones] : weak) {
-        const auto& [rule, traceDegree] = key;
-        const int order = orders[key];
-        msg().alarm("CONTACT_INTEGRATION",
-                    fmt::format("contact zone(s) {}: the traces of the shape functions of the QUAD4/HEXA8 cells on "
-                                "these facets have degree {}, above the degree that {} integrates exactly; with it "
-                                "even a solution the elements represent exactly (a uniform stress per block) would "
-                                "only be approximated (ssnv511g with the vertex rule: relative energy error "
-                                "5.8e-4). miniaster integrates these facets with INTEGRATION='GAUSS', ORDRE_INT={} "
-                                "({} {}) instead, which is exact for them; the other facets keep the zone's rule.",
-                                fmt::join(zones, ", "), traceDegree, rule, order, xm.dim() == 2 ? "SE2" : "TR3",
-                                facetFamily(xm.dim(), ContactIntegration{"GAUSS", order})));
-    }
+    announceReplacedRules(*terms, *definition);
     terms->initialiseStatus();
     problem.setAdditionalTerms(terms);
     return terms;
 }
 
 namespace {
+
+// Points named in a "contact did not converge" error (the others are counted).
+constexpr int kListedPoints = 10;
 
 // Largest COEF_PENA_CONT of the contact points and largest COEF_PENA_CONT x facet size / E (how far
 // the penalty is from the stiffness: beyond ~1e12 its equations near double precision).
@@ -151,6 +183,7 @@ ContactIncrementReport solveIncrementWithContact(MechanicalProblem& problem, Con
                                                  const ConvergenceOptions& options) {
     ContactIncrementReport out;
     const int maxIter = terms.definition().maxContactIterations;
+    ActiveSetHistory history(terms.active());
     for (int it = 1; it <= maxIter; ++it) {
         const auto before = terms.inspect(problem.u);
         msg().infof("    INST {:g} contact iteration {}: {} active contact points of {}", inst, it, before.active,
@@ -174,9 +207,18 @@ ContactIncrementReport solveIncrementWithContact(MechanicalProblem& problem, Con
         const StatusReport st = terms.updateStatus(problem.u);
         out.contactIterations = it;
         out.last = st;
-        msg().infof("    INST {:g} contact iteration {}: {} status change(s), {} active, largest penetration {:.6e}, "
-                    "contact residual {:.6e}, largest contact pressure {:.6e}",
-                    inst, it, st.changed, st.active, st.maxPenetration, st.contactResidual, st.maxPressure);
+        const ActiveSetHistory::Step step = history.record(terms.active());
+        msg().infof("    INST {:g} contact iteration {}: {} status change(s) ({} activated, {} released), {} active, "
+                    "largest penetration {:.6e}, contact residual {:.6e}, largest contact pressure {:.6e}",
+                    inst, it, st.changed, step.activated, step.released, st.active, st.maxPenetration,
+                    st.contactResidual, st.maxPressure);
+        if (step.repeats >= 0)
+            throw NumericalError(fmt::format(
+                "contact did not converge at INST {}: the statuses after contact iteration {} repeat those {} "
+                "(the loop would cycle between them whatever ITER_CONT_MAXI); {} active points of {}, contact "
+                "residual {:.3e}.{}",
+                inst, it, step.repeats == 0 ? std::string("it started from") : fmt::format("after iteration {}", step.repeats),
+                st.active, st.points, st.contactResidual, history.flippingPoints(terms, problem.u, kListedPoints)));
         if (st.changed == 0) {
             bool penalty = false;
             for (const auto& z : terms.definition().zones) penalty = penalty || z.algorithm == ContactAlgorithm::Penalty;
@@ -189,8 +231,9 @@ ContactIncrementReport solveIncrementWithContact(MechanicalProblem& problem, Con
         problem.invalidateMatrix();
     }
     std::string message = fmt::format("contact did not converge at INST {} in {} contact iterations (ITER_CONT_MAXI): "
-                                      "{} status change(s) at the last one, {} active points, contact residual {:.3e}",
-                                      inst, maxIter, out.last.changed, out.last.active, out.last.contactResidual);
+                                      "{} status change(s) at the last one, {} active points, contact residual {:.3e}.{}",
+                                      inst, maxIter, out.last.changed, out.last.active, out.last.contactResidual,
+                                      history.flippingPoints(terms, problem.u, kListedPoints));
     // With a huge penalty the interpenetration of the active points, pressure / COEF_PENA_CONT, can
     // sink below the round-off of the displacements: their gaps then change sign by round-off and the
     // statuses cannot settle (measured: TRIA3 N = 41 at COEF_PENA_CONT = 1e24, p/k = 2e-18 m against

@@ -112,6 +112,14 @@ ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField
         RuleShortfall& shortfall = shortfalls_[zone];
         ++shortfall.facets;
         shortfall.ruleDegree = rule->degree;
+        if (!positiveWeights(*rule)) {
+            // A point of negative weight would make the stabilisation indefinite and its status
+            // decision a non-descent (ssnv513g with FPG4: MUMPS negative pivot, the active set cycled):
+            // the lowest positive rule of at least the zone's degree instead (alarm CONTACT_INTEGRATION).
+            shortfall.negativeWeight = true;
+            shortfall.negativeWeightOrder = gaussOrderFor(dim, rule->degree);
+            rule = &facetRule(dim, ContactIntegration{"GAUSS", shortfall.negativeWeightOrder});
+        }
         int traceDegree = 1;
         for (const FacetSide* side : {&facet.minus, &facet.plus})
             traceDegree = std::max(traceDegree, facetTraceDegree(mesh.cellTypes[size_t(side->cell)], side->ref));
@@ -320,11 +328,29 @@ void ContactTerms::initialiseStatus() {
     }
 }
 
+StatusFunction ContactTerms::statusFunction(int p, const std::vector<double>& u) const {
+    const auto& cp = points_[p];
+    const bool withStress = nitsche(p);
+    const double gapFactor = withStress ? cp.gamma : 1.0;
+    StatusFunction f;
+    for (size_t i = 0; i < cp.dofs.size(); ++i) {
+        const double ui = u[cp.dofs[i]];
+        const double stressTerm = withStress ? cp.stress[i] * ui : 0.0, gapTerm = gapFactor * cp.gap[i] * ui;
+        f.value += stressTerm + gapTerm;
+        f.magnitude += std::abs(stressTerm) + std::abs(gapTerm);
+    }
+    return f;
+}
+
 bool ContactTerms::wantsActive(int p, const std::vector<double>& u) const {
     const auto& zone = definition_->zones[points_[p].zone];
     if (zone.bilateral && everActive_[p]) return true;
-    if (nitsche(p)) return normalStress(p, u) + points_[p].gamma * gap(p, u) < 0.0;
-    return gap(p, u) < 0.0;
+    // The sign of a value that cancels to below kStatusRoundOff of its terms is round-off, not
+    // contact or separation: the point keeps its status (either one gives the same equations to
+    // that relative size), so no status can flip back and forth on round-off.
+    const StatusFunction f = statusFunction(p, u);
+    if (std::abs(f.value) <= kStatusRoundOff * f.magnitude) return active_[p] != 0;
+    return f.value < 0.0;
 }
 
 StatusReport ContactTerms::inspect(const std::vector<double>& u) const {
@@ -339,7 +365,7 @@ StatusReport ContactTerms::inspect(const std::vector<double>& u) const {
         // Complementarity violation: what the status would change.
         const bool want = wantsActive(int(p), u);
         if (want != bool(active_[p])) {
-            const double P = nitsche(int(p)) ? normalStress(int(p), u) + points_[p].gamma * g
+            const double P = nitsche(int(p)) ? statusFunction(int(p), u).value
                                              : definition_->zones[points_[p].zone].penalty * g;
             r.contactResidual = std::max(r.contactResidual, std::abs(P));
         }

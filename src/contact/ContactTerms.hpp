@@ -48,13 +48,29 @@ struct ContactPoint {
 // approximately (rule degree < facetTraceDegree: the exact solution of a uniform stress per block
 // would no longer solve the discrete equations); those facets are integrated with the lowest Gauss
 // rule exact for their traces instead (docs/contact.md).
+// A zone rule with a negative weight (3D ORDRE_INT=3, TR3 FPG4) is replaced on every facet by the
+// lowest Gauss rule of positive weights and at least its degree (positiveWeights()).
 struct RuleShortfall {
     int facets = 0;       // facets of the zone
     int replaced = 0;     // of which the zone's rule is too weak for: integrated with a Gauss rule instead
     int ruleDegree = 0;
     int traceDegree = 0;       // largest trace degree among them
     int replacementOrder = 0;  // largest ORDRE_INT of INTEGRATION='GAUSS' used instead
+    bool negativeWeight = false;  // the zone's rule has a negative weight: every facet takes ORDRE_INT=negativeWeightOrder
+    int negativeWeightOrder = 0;
 };
+
+// The function whose sign decides a point's status, Nitsche P(u) = sigma_n(u) + gamma g(u), penalty
+// g(u), at the state u, with the sum of the absolute values of its terms (its round-off scale).
+struct StatusFunction {
+    double value = 0.0;
+    double magnitude = 0.0;
+};
+
+// Relative size below which the sign of a StatusFunction is not trusted (its value cancels to that
+// fraction of its terms): 1e-9, far above the cancellation round-off of the sum (~1e-15) and of the
+// MUMPS solutions' relative accuracy, far below any contact pressure that matters.
+constexpr double kStatusRoundOff = 1e-9;
 
 struct StatusReport {
     int changed = 0;
@@ -96,6 +112,7 @@ public:
     double normalStress(int p, const std::vector<double>& u) const;
     // Contact pressure lambda at point p with the current statuses (<= 0 in compression).
     double pressure(int p, const std::vector<double>& u) const;
+    StatusFunction statusFunction(int p, const std::vector<double>& u) const;
 
 private:
     bool nitsche(int p) const { return definition_->zones[points_[p].zone].algorithm == ContactAlgorithm::Nitsche; }

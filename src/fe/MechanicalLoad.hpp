@@ -62,6 +62,11 @@ public:
     std::vector<LinearRelation> relations;  // fixed multi-term relations (added by other engines)
     std::vector<PressureLoad> pressures;
     std::vector<VolumeForce> volumeForces;
+    // code_aster <= 2013: AFFE_CHAR_MECA(LIAISON_XFEM='OUI', CONTACT_XFEM=...) carried the X-FEM
+    // contact as a load; the contact definition named there (a char_contact, read by STAT_NON_LINE as
+    // its CONTACT=; src/commands/LegacyContactLoad.hpp).
+    bool xfemLinks = false;  // LIAISON_XFEM='OUI'
+    std::shared_ptr<const Concept> xfemContact;
 
     // All Dirichlet relations at instant `inst` (function values evaluated now; the FONC_MULT
     // factor is applied by the caller). A component a node does not carry is skipped.

@@ -121,10 +121,13 @@ TEST(ContactIntegration, FacetPointsIntegrateTheirDegreeAndSumToTheFacetMeasure)
             if (family.empty()) continue;
             const auto s = contacttest::scene(type, 3, ContactAlgorithm::Nitsche, false, in);
             const QuadratureRule& asked = quadratureRule(dim == 2 ? CellType::SEG2 : CellType::TRIA3, family);
-            // HEXA8 facets have bilinear traces: a degree-1 rule is replaced by TR3 FPG3.
+            // HEXA8 facets have bilinear traces: a degree-1 rule is replaced by TR3 FPG3; TR3 FPG4 has a
+            // negative weight and is replaced by FPG6 everywhere.
             const bool replaced = type == CellType::HEXA8 && asked.degree < 2;
-            expectFacetRule(s, replaced ? quadratureRule(CellType::TRIA3, "FPG3") : asked,
-                            cellTypeName(type) + " " + describe(dim, in));
+            const QuadratureRule& used = !positiveWeights(asked) ? quadratureRule(CellType::TRIA3, "FPG6")
+                                         : replaced              ? quadratureRule(CellType::TRIA3, "FPG3")
+                                                                 : asked;
+            expectFacetRule(s, used, cellTypeName(type) + " " + describe(dim, in));
         }
     }
 }
@@ -215,7 +218,12 @@ TEST(ContactIntegration, TraceDegreeOfTheParentShapeFunctions) {
     EXPECT_EQ(facetTraceDegree(CellType::HEXA8, P{{1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}), 3);
     EXPECT_EQ(gaussOrderFor(2, 2), 1);  // SE2 FPG2, degree 3
     EXPECT_EQ(gaussOrderFor(3, 2), 1);  // TR3 FPG3, degree 2
-    EXPECT_EQ(gaussOrderFor(3, 3), 3);  // TR3 FPG4, degree 3
+    EXPECT_EQ(gaussOrderFor(3, 3), 4);  // TR3 FPG6, degree 4 (FPG4, degree 3, has a negative weight)
+    EXPECT_FALSE(positiveWeights(quadratureRule(CellType::TRIA3, "FPG4")));
+    for (const char* family : {"FPG3", "FPG6", "FPG7", "FPG12", "NOEU", "SIMP"})
+        EXPECT_TRUE(positiveWeights(quadratureRule(CellType::TRIA3, family))) << family;
+    for (const char* family : {"FPG2", "FPG3", "FPG4", "NOEU", "SIMP", "SIMP1", "COTES", "COTES1", "COTES2"})
+        EXPECT_TRUE(positiveWeights(quadratureRule(CellType::SEG2, family))) << family;
 }
 
 TEST(ContactIntegration, RulesTooWeakForTheTracesAreCounted) {

@@ -1,12 +1,18 @@
 // Contact terms (src/contact/ContactTerms): symmetric tangent (theta = 1 Nitsche, mixed penalty),
 // consistency (a field without jump and with a uniform stress gives exactly the traction term
 // int sigma_n g(v)), the tangent is the derivative of the residual, and the active-set logic
-// (compression keeps contact, tension releases it, GLISSIERE keeps it).
+// (compression keeps contact, tension releases it, GLISSIERE keeps it, a sign at round-off level
+// decides nothing), and the loop's record of the statuses (changes, repeated active sets, the points
+// named when the loop cannot converge).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
+#include <string>
 
+#include <fmt/format.h>
+
+#include "contact/ActiveSetHistory.hpp"
 #include "contact_test_scene.hpp"
 
 namespace {
@@ -100,15 +106,76 @@ TEST(ContactTerms, ActiveSetKeepsCompressionReleasesTension) {
     EXPECT_EQ(st.active, n);
 }
 
+// A state where point 0's contact function cancels to `relative` of its terms (two of its unknowns
+// set to opposite contributions).
+std::vector<double> cancelling(const Scene& s, double relative) {
+    const ContactPoint& cp = s.terms->points()[0];
+    std::vector<double> u(s.problem->u.size(), 0.0);
+    std::vector<size_t> used;
+    for (size_t i = 0; i < cp.dofs.size() && used.size() < 2; ++i)
+        if (std::abs(cp.stress[i] + cp.gamma * cp.gap[i]) > 1e-3 * cp.gamma) used.push_back(i);
+    EXPECT_EQ(used.size(), 2u);
+    u[cp.dofs[used[0]]] = 1e-3 / (cp.stress[used[0]] + cp.gamma * cp.gap[used[0]]);
+    u[cp.dofs[used[1]]] = -(1.0 - relative) * 1e-3 / (cp.stress[used[1]] + cp.gamma * cp.gap[used[1]]);
+    return u;
+}
+
+TEST(ContactTerms, ASignAtRoundOffLevelKeepsTheStatus) {
+    Scene s = scene(CellType::QUAD4, 5, ContactAlgorithm::Nitsche);
+    ASSERT_TRUE(s.terms->active()[0]);
+    // Positive by 1e-12 of its terms: round-off, the point stays in contact; inactive, it stays out.
+    const auto tiny = cancelling(s, 1e-12);
+    const StatusFunction f = s.terms->statusFunction(0, tiny);
+    EXPECT_GT(f.value, 0.0);
+    EXPECT_LT(f.value, kStatusRoundOff * f.magnitude);
+    s.terms->updateStatus(tiny);
+    EXPECT_TRUE(s.terms->active()[0]);
+    s.terms->updateStatus(cancelling(s, 1e-6));  // positive by 1e-6 of its terms: released
+    EXPECT_FALSE(s.terms->active()[0]);
+    s.terms->updateStatus(cancelling(s, -1e-12));  // negative at round-off: stays released
+    EXPECT_FALSE(s.terms->active()[0]);
+    s.terms->updateStatus(cancelling(s, -1e-6));
+    EXPECT_TRUE(s.terms->active()[0]);
+}
+
+TEST(ContactTerms, TheHistoryFindsARepeatedActiveSetAndNamesTheFlippingPoints) {
+    Scene s = scene(CellType::QUAD4, 5, ContactAlgorithm::Nitsche);
+    ActiveSetHistory history(s.terms->active());
+    const auto compressed = uniformStrain(s, -1e-3), stretched = uniformStrain(s, 1e-3);
+    const int n = static_cast<int>(s.terms->points().size());
+    s.terms->updateStatus(stretched);
+    auto step = history.record(s.terms->active());
+    EXPECT_EQ(step.released, n);
+    EXPECT_EQ(step.activated, 0);
+    EXPECT_EQ(step.repeats, -1);
+    s.terms->updateStatus(compressed);
+    step = history.record(s.terms->active());
+    EXPECT_EQ(step.activated, n);
+    EXPECT_EQ(step.repeats, 0);  // back to the initial statuses: a cycle
+    EXPECT_EQ(history.changes(0), 2);
+    const std::string text = history.flippingPoints(*s.terms, compressed, 3);
+    EXPECT_EQ(text.find(" Points whose status changed more than once:\n  FISS"), 0u) << text;
+    EXPECT_NE(text.find("point at ("), std::string::npos) << text;
+    EXPECT_NE(text.find("facet in cell M"), std::string::npos) << text;
+    EXPECT_NE(text.find("2 status change(s), now active"), std::string::npos) << text;
+    EXPECT_NE(text.find(fmt::format("... and {} other point(s)", n - 3)), std::string::npos) << text;
+    // An update that changes nothing repeats nothing.
+    s.terms->updateStatus(compressed);
+    EXPECT_EQ(history.record(s.terms->active()).repeats, -1);
+}
+
 TEST(ContactTerms, PenaltyCarriesOnePressureUnknownPerPoint) {
     Scene s = scene(CellType::QUAD4, 5, ContactAlgorithm::Penalty);
     const int n = static_cast<int>(s.terms->points().size());
     EXPECT_EQ(s.terms->extraUnknowns(), n);
     EXPECT_EQ(int(s.problem->u.size()), s.problem->numbering().size() + n);
     expectSymmetric(tangent(*s.terms, s.problem->u));
-    // A closing gap activates, an opening one releases (statuses from the gap).
-    auto st = s.terms->updateStatus(s.problem->u);  // zero gap: not interpenetrating
-    EXPECT_EQ(st.active, 0);
+    // Statuses from the gap; a gap that is zero (to round-off) decides nothing: the points keep the
+    // status they have.
+    const auto before = s.terms->active();
+    auto st = s.terms->updateStatus(s.problem->u);
+    EXPECT_EQ(st.changed, 0);
+    EXPECT_EQ(s.terms->active(), before);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // LIRE_MAILLAGE and IMPR_RESU through the command registry: round trips read back by mdump4 and
 // meshio, DEPL values, appending to a unit, Gauss-point fields, bad input.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -95,6 +96,40 @@ std::string errorOf(const std::function<void()>& f) {
     return "(no error)";
 }
 
+// The mesh as a .mail text in IMPR_RESU(FORMAT='ASTER')'s layout: 1PE21.14 coordinates, one
+// block per run of cells of one type, 7 nodes or members per line.
+std::string asMailText(const Mesh& m) {
+    std::string out = "TITRE\n written by the miniaster tests\nFINSF\n" + std::string(m.dim == 2 ? "COOR_2D" : "COOR_3D") + "\n";
+    for (int i = 0; i < m.nodeCount(); ++i) {
+        out += fmt::format(" {:8}", m.nodeNames[size_t(i)]);
+        for (int d = 0; d < m.dim; ++d) out += fmt::format(" {:21.14E}", m.coords[size_t(i)][size_t(d)]);
+        out += "\n";
+    }
+    out += "FINSF\n";
+    auto wrapped = [&](const std::string& head, const std::vector<std::string>& items) {
+        out += head;
+        for (size_t k = 0; k < items.size(); ++k) out += (k > 0 && k % 7 == 0 ? "\n          " : " ") + items[k];
+        out += "\n";
+    };
+    for (int c = 0; c < m.cellCount(); ++c) {
+        if (c == 0 || m.cellTypes[size_t(c)] != m.cellTypes[size_t(c - 1)])
+            out += (c == 0 ? "" : "FINSF\n") + cellTypeName(m.cellTypes[size_t(c)]) + "\n";
+        std::vector<std::string> nodes;
+        for (int n : m.cellNodes(c)) nodes.push_back(m.nodeNames[size_t(n)]);
+        wrapped(fmt::format(" {:8}", m.cellNames[size_t(c)]), nodes);
+    }
+    out += "FINSF\n";
+    for (const auto* groups : {&m.nodeGroups, &m.cellGroups})
+        for (const auto& g : groups->names()) {
+            std::vector<std::string> members;
+            for (int e : groups->get(g)) members.push_back(groups == &m.nodeGroups ? m.nodeNames[size_t(e)] : m.cellNames[size_t(e)]);
+            out += std::string(groups == &m.nodeGroups ? "GROUP_NO" : "GROUP_MA") + "\n " + g + "\n";
+            wrapped("", members);
+            out += "FINSF\n";
+        }
+    return out + "FIN\n";
+}
+
 }  // namespace
 
 TEST_F(MedCommands, LireMaillageLogsCountsAndGroups) {
@@ -133,6 +168,35 @@ TEST_F(MedCommands, RoundTripGivesTheSameFileForMdump4AndMeshio) {
         EXPECT_EQ(a.nodeGroups, b.nodeGroups) << file;
         // The mesh is named after the concept.
         EXPECT_EQ(med::meshNames(written), std::vector<std::string>{"MAILLAG"});
+    }
+}
+
+// The same mesh as a .mail text (LIRE_MAILLAGE FORMAT='ASTER') gives the same concept: written
+// to MED, the same mdump4 dump as the original MED file.
+TEST_F(MedCommands, MailTextOfAMedMeshGivesTheSameMesh) {
+    for (const char* file : {"ssnv511a.mmed", "ssnv511b.mmed", "ssnv511d.mmed", "ssnv511g.mmed", "ssnv511h.mmed"}) {
+        const std::string original = test::astest(file);
+        auto fromMed = lire(original);
+        const std::string mail = dir + "/" + file + ".mail";
+        std::ofstream(mail) << asMailText(*fromMed);
+        units.setInput(20, mail);
+        KeywordSet read;
+        read.setValues("FORMAT", {std::string("ASTER")});
+        auto fromMail = std::dynamic_pointer_cast<Mesh>(call("LIRE_MAILLAGE", read, "MAILLAG"));
+        ASSERT_TRUE(fromMail);
+        EXPECT_EQ(fromMail->dim, fromMed->dim) << file;
+        EXPECT_EQ(fromMail->coords, fromMed->coords) << file;
+        EXPECT_EQ(fromMail->nodeNames, fromMed->nodeNames) << file;
+        EXPECT_EQ(fromMail->cellNames, fromMed->cellNames) << file;
+        EXPECT_EQ(fromMail->connectivity, fromMed->connectivity) << file;
+        EXPECT_EQ(fromMail->nodeGroups.names(), fromMed->nodeGroups.names()) << file;
+        EXPECT_EQ(fromMail->cellGroups.names(), fromMed->cellGroups.names()) << file;
+        KeywordSet kw;
+        kw.setValues("UNITE", {81LL});
+        kw.addOccurrence("RESU").setValues("MAILLAGE", {ConceptPtr(fromMail)});
+        units.setOutput(81, mail + ".rmed");
+        call("IMPR_RESU", kw);
+        EXPECT_EQ(mdumpBody(mail + ".rmed"), mdumpBody(original)) << file;
     }
 }
 

@@ -23,9 +23,23 @@ TEST(ParserTestReport, SummaryCountsPerCategory) {
     const auto s = report.summary();
     EXPECT_NE(s.find("  reference checks                 1        1      0\n"), std::string::npos) << s;
     EXPECT_NE(s.find("  non-regression checks            1        0      1\n"), std::string::npos) << s;
+    EXPECT_NE(s.find("  1 of 2 reference checks NOOK\n"), std::string::npos) << s;
     EXPECT_NE(s.find("    NOOK ANALYTIQUE       TEST_TABLE DEPZON_1 DX MIN: computed -0.24, expected -0.25\n"),
               std::string::npos)
         << s;
+}
+
+TEST(ParserTestReport, SummarySaysWhenOnlyCodeAstersOwnValuesDiffer) {
+    // ssnv511e-h: every reference check OK, NON_REGRESSION lines carrying code_aster's inexact values.
+    ma::TestReport report;
+    using S = ma::TestLine::Status;
+    for (int i = 0; i < 18; ++i) report.add({"ANALYTIQUE", S::Ok, "r"});
+    report.add({"NON_REGRESSION", S::Ok, "a"});
+    for (int i = 0; i < 3; ++i) report.add({"NON_REGRESSION", S::Nook, "b"});
+    EXPECT_NE(report.summary().find("  all 18 reference checks OK; 3 non-regression values differ from code_aster's "
+                                    "own\n"),
+              std::string::npos)
+        << report.summary();
 }
 
 namespace {

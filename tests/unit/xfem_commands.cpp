@@ -191,3 +191,32 @@ TEST(XfemCommands, Hexa8AtDegreeOneIsAlarmed) {
     EXPECT_EQ(r.status, 0) << r.output;
     EXPECT_EQ(r.file("out/contact_hexa8_n5.mess").find("XFEM_SUBCELL_RULE"), std::string::npos);
 }
+
+// JONCTION/POINT with fewer coordinates than the mesh: the missing ones are 0, as code_aster
+// (ssnv510f gives POINT=(0,4) on a 3D mesh); same interface as with (0, 5, 0).
+TEST(XfemCommands, JonctionPointMissingCoordinatesAreZero) {
+    const std::string mesh = std::string("--mesh '") + MINIASTER_SHARED_DIR + "/astest/ssnv511g.mmed'";
+    auto run = [&](const std::string& point) {
+        return runComm("DEBUT()\n"
+                       "MA = LIRE_MAILLAGE(FORMAT='MED')\n"
+                       "LN1 = FORMULE(VALE='Y', NOM_PARA=['X', 'Y', 'Z'])\n"
+                       "LN2 = FORMULE(VALE='X', NOM_PARA=['X', 'Y', 'Z'])\n"
+                       "FISS1 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN1))\n"
+                       "FISS2 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2),"
+                       " JONCTION=_F(FISSURE=FISS1, POINT=" + point + "))\n"
+                       "FIN()\n",
+                       mesh);
+    };
+    const auto two = run("(0, 5)"), three = run("(0, 5, 0)");
+    ASSERT_EQ(two.status, 0) << two.output;
+    ASSERT_EQ(three.status, 0) << three.output;
+    EXPECT_NE(two.output.find("JONCTION[1]/POINT: 2 coordinate(s) given on a mesh of dimension 3; the missing ones are 0"),
+              std::string::npos)
+        << two.output;
+    const std::regex counts("interface \\(FISS2\\): [^\\n]*");
+    std::smatch a, b;
+    ASSERT_TRUE(std::regex_search(two.output, a, counts));
+    ASSERT_TRUE(std::regex_search(three.output, b, counts));
+    EXPECT_EQ(a.str(), b.str());
+    EXPECT_NE(two.output.find("junction on FISS1: the interface exists where -1 * LSN(FISS1) < 0"), std::string::npos);
+}

@@ -10,8 +10,10 @@
     ./miniaster study all         [--full]   the three above
     ./miniaster study check-field            checks of the manufactured field (derivatives, tractions)
     ./miniaster study astest                 regenerates astest/smooth_*.{comm,export,mmed}
+    ./miniaster study ssnv513e               ssnv513e (the family file, unmodified) refined N = 5 ... 81 (docs/family.md)
 
-Options: --out DIR (tables and plots, default docs/study), --work DIR (runs, default a temporary
+Options: --out DIR (tables and plots, default a fresh folder miniaster-study-<name>-<time> here;
+--out docs/study updates the committed figures; astest reads docs/study by default), --work DIR (runs, default a temporary
 folder), --build DIR (miniaster build, default build/), --elements quad4,tria3,..., --contact
 all|open|only, --group all|convergence|quadrature (smooth), --timeout S.
 Results: DIR/<study>.csv, DIR/<study>.md and DIR/<study>_*.png; the Markdown file names the
@@ -960,12 +962,27 @@ def check_field(_ctx=None):
     return 1 if failures else 0
 
 
+def fresh_folder(prefix):
+    """A new folder in the current one, so that a run never overwrites earlier figures."""
+    stamp = datetime.datetime.now(datetime.timezone.utc).strftime("%Y%m%d-%H%M%S")
+    path = os.path.abspath(f"{prefix}-{stamp}")
+    n = 1
+    while os.path.exists(path):
+        n += 1
+        path = os.path.abspath(f"{prefix}-{stamp}-{n}")
+    return path
+
+
 def main():
     ap = argparse.ArgumentParser(prog="miniaster study", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("name", choices=["smooth", "stability", "penalty", "perf", "all", "check-field", "astest"])
+    ap.add_argument("name", choices=["smooth", "stability", "penalty", "perf", "all", "check-field", "astest",
+                                     "ssnv513e"])
     ap.add_argument("--full", action="store_true", help="the big grid (2D up to N=1001, perf at N=1001)")
-    ap.add_argument("--out", default=os.path.join(ROOT, "docs", "study"))
+    ap.add_argument("--out", default=None,
+                    help="tables and plots (default: a fresh folder miniaster-study-<name>-<UTC time> in the "
+                         "current folder; `--out docs/study` updates the committed figures; astest reads "
+                         "docs/study/smooth.csv unless told otherwise)")
     ap.add_argument("--work", default=None, help="keep the runs in this folder (default: temporary, removed)")
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--elements", default=None, help="comma-separated subset of quad4,tria3,hexa8,tetra4")
@@ -977,8 +994,14 @@ def main():
                          "sub-cell quadrature rows (quadrature); a partial run keeps the other rows of smooth.csv")
     ap.add_argument("--timeout", type=float, default=1800.0, help="seconds per run")
     args = ap.parse_args()
+    if args.out is None:
+        args.out = (os.path.join(ROOT, "docs", "study") if args.name == "astest" else
+                    fresh_folder(f"miniaster-study-{args.name}"))
     if args.name == "check-field":
         return check_field()
+    if args.name == "ssnv513e":  # refinement study of the family file (docs/family.md)
+        import ssnv513e_refinement
+        return ssnv513e_refinement.main(["--build", args.build, "--out", args.out])
     ctx = Context(args)
     if not os.path.exists(ctx.binary):
         sys.exit(f"study: {ctx.binary} not found (build first)")

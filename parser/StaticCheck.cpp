@@ -1,0 +1,160 @@
+#include "parser/StaticCheck.hpp"
+
+#include <fmt/format.h>
+#include <pybind11/embed.h>
+#include <pybind11/stl.h>
+
+#include "core/Messages.hpp"
+#include "parser/Catalog.hpp"
+#include "parser/RunState.hpp"
+
+namespace py = pybind11;
+
+namespace ma {
+
+namespace {
+
+// The syntax-tree walk. `catalog`: command -> (level, accepts context keywords); a level maps
+// each keyword name to (supported, sub-level of a factor keyword or None). Returns
+// [(line, command, cause)] in line order.
+const char* kChecker = R"PY(
+import ast
+
+_DYNAMIC = {"exec", "eval", "globals", "locals", "vars", "__import__", "setattr", "getattr", "INCLUDE"}
+
+def _is_command_like(name):
+    return any(c.isalpha() for c in name) and all(c.isupper() or c.isdigit() or c == "_" for c in name)
+
+def _defined_names(tree):
+    defined, opaque = set(), False
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            defined.add(node.name)
+        elif isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
+            defined.add(node.id)
+        elif isinstance(node, ast.arg):
+            defined.add(node.arg)
+        elif isinstance(node, (ast.Global, ast.Nonlocal)):
+            defined.update(node.names)
+        elif isinstance(node, (ast.Import, ast.ImportFrom)):
+            for alias in node.names:
+                if alias.name == "*":
+                    opaque = opaque or getattr(node, "module", None) != "code_aster.Commands"
+                else:
+                    defined.add((alias.asname or alias.name).split(".")[0])
+        elif isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id in _DYNAMIC:
+            opaque = True
+    return defined, opaque
+
+def _unknown_keyword(path, command, where, level):
+    known = ", ".join(sorted(k for k, (supported, _) in level.items() if supported))
+    return "unknown keyword %s for %s (known keywords%s: %s)" % (path, command, where, known)
+
+def _factor_calls(value):
+    items = value.elts if isinstance(value, (ast.Tuple, ast.List)) else [value]
+    for i, item in enumerate(items, 1):
+        if isinstance(item, ast.Call) and isinstance(item.func, ast.Name) and item.func.id == "_F":
+            yield i, item
+
+def _check_call(call, command, level, context_keywords, f_is_ours, problems):
+    for kw in call.keywords:
+        if kw.arg is None or kw.arg == "reuse":
+            continue  # **kwargs: seen by the run
+        if kw.arg not in level:
+            if not context_keywords:
+                problems.append((call.lineno, command, _unknown_keyword(kw.arg, command, "", level)))
+            continue
+        sub = level[kw.arg][1]
+        if sub is None or not f_is_ours:
+            continue
+        for i, occurrence in _factor_calls(kw.value):
+            where = "%s[%d]" % (kw.arg, i)
+            for fkw in occurrence.keywords:
+                if fkw.arg is not None and fkw.arg not in sub:
+                    problems.append((call.lineno, command,
+                                     _unknown_keyword(where + "/" + fkw.arg, command, " in " + where, sub)))
+
+def check(source, catalog, unsupported):
+    try:
+        tree = ast.parse(source)
+    except (SyntaxError, ValueError):
+        tree = ast.parse(source.decode("latin-1"))
+    defined, opaque = _defined_names(tree)
+    problems = []
+    for node in ast.walk(tree):
+        if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Name)):
+            continue
+        name = node.func.id
+        if name in defined:
+            continue  # the file's own function or variable
+        if name in catalog:
+            level, context_keywords = catalog[name]
+            _check_call(node, name, level, context_keywords, "_F" not in defined, problems)
+        elif name in unsupported:
+            problems.append((node.lineno, name, "command %s is not supported by miniaster" % name))
+        elif not opaque and _is_command_like(name) and not hasattr(__builtins__, name):
+            problems.append((node.lineno, name,
+                             "unknown command %s (not a code_aster command known to miniaster)" % name))
+    problems.sort(key=lambda p: p[0])
+    return problems
+)PY";
+
+// Keyword names of one catalog level, blocks flattened (a keyword of any block is known here).
+void addLevel(const std::vector<cata::Keyword>& content, py::dict& level) {
+    for (const auto& k : content) {
+        if (k.kind == cata::Keyword::Kind::Block) {
+            addLevel(k.content, level);
+            continue;
+        }
+        if (level.contains(k.name.c_str())) continue;
+        py::object sub = py::none();
+        if (k.kind == cata::Keyword::Kind::Factor) {
+            py::dict d;
+            addLevel(k.content, d);
+            sub = d;
+        }
+        level[k.name.c_str()] = py::make_tuple(k.kind != cata::Keyword::Kind::Unsupported, sub);
+    }
+}
+
+py::dict catalogForCheck() {
+    py::dict commands;
+    for (const auto& [name, command] : Catalog::instance().commands()) {
+        py::dict level;
+        addLevel(command.content, level);
+        commands[name.c_str()] = py::make_tuple(level, command.acceptsContextKeywords);
+    }
+    return commands;
+}
+
+}  // namespace
+
+bool checkCommandFileStatically(const std::string& source, RunState& run) {
+    std::vector<std::tuple<int, std::string, std::string>> problems;
+    try {
+        py::dict scope;
+        scope["__builtins__"] = py::module_::import("builtins");
+        py::exec(kChecker, scope);
+        problems = scope["check"](py::bytes(source), catalogForCheck(), unsupportedCommands())
+                       .cast<std::vector<std::tuple<int, std::string, std::string>>>();
+    } catch (py::error_already_set& e) {
+        // A defect of the check itself must not stop a file that may well be valid.
+        msg().alarm("SUPERVIS_4", std::string("the check of the command file before its run failed (a defect of "
+                                              "miniaster; the file runs unchecked): ") + e.what());
+        return true;
+    }
+    if (problems.empty()) return true;
+    if (problems.size() == 1) {
+        const auto& [line, who, cause] = problems.front();
+        run.fail("ERROR", who, line, cause);
+        return false;
+    }
+    std::string list;
+    for (const auto& [line, who, cause] : problems) list += fmt::format("\n    line {}: {}: {}", line, who, cause);
+    run.fail("ERROR", "", 0,
+             fmt::format("{} problems found in the command file before its first command (none was run):{}",
+                         problems.size(), list));
+    return false;
+}
+
+}  // namespace ma
