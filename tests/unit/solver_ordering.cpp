@@ -128,3 +128,4 @@ TEST(SolverLowRank, LowRankFactorsAreRefinedToRoundOff) {
     EXPECT_EQ(msg().messText().rfind("block low-rank"),
               msg().messText().rfind("block low-rank factors (ACCELERATION='LR', CNTL(7)=1e-06)"));
 }
+
