@@ -10,6 +10,7 @@
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "fe/MechanicalProblem.hpp"
+#include "fe/Parallel.hpp"
 #include "mesh/Mesh.hpp"
 #include "parser/KeywordTree.hpp"
 
@@ -85,6 +86,7 @@ inline std::vector<int> selectedNodes(const Mesh& mesh, const KeywordSet& occ, c
 inline SolverOptions solverOptions(const KeywordSet& kw, int info) {
     SolverOptions o;
     o.info = info;
+    o.threads = workerCount();
     o.conditionEstimate = info >= 2;  // MUMPS ICNTL(11)=1 costs a few extra solves: INFO=2 only
     const auto& occ = kw.factor("SOLVEUR");
     if (occ.empty()) return o;
@@ -95,7 +97,6 @@ inline SolverOptions solverOptions(const KeywordSet& kw, int info) {
     o.nprec = static_cast<int>(s.integer("NPREC", 8));
     o.typeResol = s.text("TYPE_RESOL", "AUTO");
     o.acceleration = s.text("ACCELERATION", "AUTO");
-    o.lowRankThreshold = s.has("LOW_RANK_SEUIL") ? s.real("LOW_RANK_SEUIL") : 0.0;
     if (s.has("PCENT_PIVOT")) {
         const auto& v = s.values("PCENT_PIVOT")[0];
         o.pcentPivot = std::holds_alternative<long long>(v) ? int(std::get<long long>(v))

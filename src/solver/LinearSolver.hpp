@@ -25,14 +25,13 @@ struct SolverOptions {
     int nprec = 8;                 // singular pivot threshold 10^-NPREC; < 0 disables the detection
     int pcentPivot = 20;           // MUMPS workspace relaxation (%)
     std::string typeResol = "AUTO";  // MUMPS TYPE_RESOL: SYMDEF forces SYM=1 on SPD systems
-    // MUMPS ACCELERATION: FR* full rank; LR* block low-rank factors (ICNTL(35)) dropping below
-    // LOW_RANK_SEUIL (1e-10 when 0); AUTO: low rank at 1e-10 from 1e6 unknowns on (MumpsSolver.cpp).
+    // MUMPS ACCELERATION: AUTO and FR* full rank; LR* refused (MumpsSolver.cpp says why).
     std::string acceleration = "AUTO";
-    double lowRankThreshold = 0.0;
     bool conditionEstimate = false;  // MUMPS ICNTL(11)=1: condition numbers (costs a few solves)
     bool diagonalScaling = true;     // factorise D^-1/2 A D^-1/2 (code_aster: PRETRAITEMENTS)
     int maxRefinementSteps = 3;      // iterative refinement while it helps; 0 = none (POSTTRAITEMENTS)
     int info = 1;
+    int threads = 1;  // the METIS ordering's two halves in two processes when >= 2
     // Appended to the "singular system" message: what the caller knows about likely causes.
     std::string singularHint =
         "a missing boundary condition (rigid body motion) or an unattached enriched dof";

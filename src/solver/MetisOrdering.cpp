@@ -1,6 +1,9 @@
 #include "solver/MetisOrdering.hpp"
 
 #include <metis.h>
+#include <sys/mman.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -101,9 +104,87 @@ std::vector<idx_t> nestedDissection(Graph& g, std::vector<idx_t>& w) {
     return rank;
 }
 
+// The subgraph of the vertices v with part[v] == which; local -> global vertex in `vertices`.
+Graph inducedSubgraph(const Graph& g, const std::vector<idx_t>& part, idx_t which, const std::vector<idx_t>& local,
+                      std::vector<idx_t>& vertices) {
+    Graph sub;
+    sub.start.push_back(0);
+    for (size_t v = 0; v + 1 < g.start.size(); ++v) {
+        if (part[v] != which) continue;
+        vertices.push_back(idx_t(v));
+        for (idx_t k = g.start[v]; k < g.start[v + 1]; ++k)
+            if (part[g.neighbours[k]] == which) sub.neighbours.push_back(local[g.neighbours[k]]);
+        sub.start.push_back(idx_t(sub.neighbours.size()));
+    }
+    return sub;
+}
+
+// Orders the two halves, the second in a child process when `twoProcesses` (threads would share
+// METIS's random generator; a process has its own copy, reseeded by each call like this one's):
+// the ranks are the same either way. A failed fork or child falls back to this process.
+void orderHalves(Graph (&half)[2], std::vector<idx_t> (&weights)[2], std::vector<idx_t> (&rank)[2], bool twoProcesses) {
+    const size_t n1 = weights[1].size(), bytes = (n1 + 1) * sizeof(idx_t);
+    void* shared = twoProcesses ? mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0) : MAP_FAILED;
+    const pid_t child = shared != MAP_FAILED ? fork() : -1;
+    if (child == 0) {  // only METIS and memcpy here, then _exit: no atexit handler, no Python
+        auto* out = static_cast<idx_t*>(shared);
+        try {
+            const std::vector<idx_t> r = nestedDissection(half[1], weights[1]);
+            std::copy(r.begin(), r.end(), out + 1);
+            out[0] = 1;
+        } catch (...) {
+            out[0] = 0;
+        }
+        _exit(0);
+    }
+    rank[0] = nestedDissection(half[0], weights[0]);
+    bool done = false;
+    if (child > 0) {
+        int status = 0;
+        const auto* in = static_cast<const idx_t*>(shared);
+        if (waitpid(child, &status, 0) == child && WIFEXITED(status) && in[0] == 1) {
+            rank[1].assign(in + 1, in + 1 + n1);
+            done = true;
+        }
+    }
+    if (shared != MAP_FAILED) munmap(shared, bytes);
+    if (!done) rank[1] = nestedDissection(half[1], weights[1]);
+}
+
+// Large graphs: the top separator first (METIS_ComputeVertexSeparator), then the two halves
+// ordered apart (on two processes when there are two threads), separator last: what
+// METIS_NodeND does at its first level.
+constexpr size_t kSplitVertices = 100000;
+
+std::vector<idx_t> splitNestedDissection(Graph& g, std::vector<idx_t>& w, int threads) {
+    idx_t n = idx_t(w.size());
+    if (size_t(n) < kSplitVertices || g.start.back() == 0) return nestedDissection(g, w);
+    idx_t options[METIS_NOPTIONS], separatorWeight = 0;
+    setOptions(options);
+    std::vector<idx_t> part(static_cast<size_t>(n));
+    const int status = METIS_ComputeVertexSeparator(&n, g.start.data(), g.neighbours.data(), w.data(), options,
+                                                    &separatorWeight, part.data());
+    if (status != METIS_OK) metisFailed("METIS_ComputeVertexSeparator", status, n);
+    std::vector<idx_t> local(static_cast<size_t>(n)), count(3, 0);
+    for (idx_t v = 0; v < n; ++v) local[v] = count[part[v]]++;
+    std::vector<idx_t> vertices[2], weights[2], rank[2];
+    Graph half[2];
+    for (int h = 0; h < 2; ++h) {
+        half[h] = inducedSubgraph(g, part, h, local, vertices[h]);
+        for (idx_t v : vertices[h]) weights[h].push_back(w[v]);
+    }
+    orderHalves(half, weights, rank, threads >= 2);
+    std::vector<idx_t> order(static_cast<size_t>(n));
+    for (int h = 0; h < 2; ++h)
+        for (size_t i = 0; i < vertices[h].size(); ++i) order[vertices[h][i]] = (h ? count[0] : 0) + rank[h][i];
+    for (idx_t v = 0; v < n; ++v)
+        if (part[v] == 2) order[v] = count[0] + count[1] + local[v];
+    return order;
+}
+
 }  // namespace
 
-FillReducingOrdering nestedDissectionOrdering(const CsrMatrix& A) {
+FillReducingOrdering nestedDissectionOrdering(const CsrMatrix& A, int threads) {
     const auto t0 = std::chrono::steady_clock::now();
     if (A.nonZeros() > std::numeric_limits<idx_t>::max())
         throw NumericalError("METIS ordering: the matrix has more entries than METIS's 32-bit index");
@@ -113,7 +194,7 @@ FillReducingOrdering nestedDissectionOrdering(const CsrMatrix& A) {
     std::vector<idx_t> weight(s.size);
     ordering.vertices = idx_t(s.size.size());
     ordering.graphEdges = g.start.back() / 2;
-    const std::vector<idx_t> rankOfVertex = nestedDissection(g, weight);
+    const std::vector<idx_t> rankOfVertex = splitNestedDissection(g, weight, threads);
     // The rows of each supervariable take consecutive ranks, in the supervariables' order.
     const size_t n = s.size.size();
     std::vector<idx_t> byRank(n);

@@ -20,8 +20,9 @@ struct FillReducingOrdering {
 // symmetrised: every unknown of A is in it, multipliers and contact unknowns included;
 // consecutive rows of identical pattern (a node's unknowns) are one vertex of their weight.
 // Throws NumericalError when METIS fails (memory, or an internal error).
-// One thread: METIS 5.1's random generator is shared between threads (two concurrent calls
-// give orderings that change from run to run: checked).
-FillReducingOrdering nestedDissectionOrdering(const CsrMatrix& A);
+// `threads` >= 2 orders the two halves below the top separator in two processes (METIS 5.1's
+// random generator is shared between threads: concurrent calls gave orderings that changed from
+// run to run); the ordering does not depend on it.
+FillReducingOrdering nestedDissectionOrdering(const CsrMatrix& A, int threads = 1);
 
 }  // namespace ma

@@ -49,19 +49,16 @@ int orderingCode(const std::string& renum, std::string& used) {
 // A(i): MUMPS's INFO/INFOG sizes are counts when positive, millions when negative.
 double mumpsCount(int value) { return value < 0 ? -1e6 * value : double(value); }
 
-// Block low-rank factors (ICNTL(35)=2, CNTL(7) the dropping threshold): on the 2e6-dof ssnv511
-// grid they take 0.36 GB (10 %) off the peak and one refinement step brings the backward error
-// back to 1e-16 (docs/study.md, "Memory"); at 5e5 dofs the gain is 4 %: below 1e6 unknowns AUTO
-// keeps full-rank factors, and every test with them.
-constexpr int kBlockLowRank = 2;
-constexpr int kLowRankFromUnknowns = 1000000;
-constexpr double kLowRankDefault = 1e-10;
-
-// CNTL(7) for the factorisation, 0 for full-rank factors.
-double lowRankThreshold(const SolverOptions& o, int unknowns) {
-    if (o.acceleration.rfind("LR", 0) == 0) return o.lowRankThreshold > 0.0 ? o.lowRankThreshold : kLowRankDefault;
-    if (o.acceleration == "AUTO" && unknowns >= kLowRankFromUnknowns) return kLowRankDefault;
-    return 0.0;
+// Block low-rank factors (SOLVEUR ACCELERATION='LR*') are refused: Debian's MUMPS 5.5.1 (seq)
+// clusters the separators through SCOTCH_graphBuild with an out-of-bounds write (valgrind: "Invalid
+// write of size 4" under dmumps_lr_grouping_new), and one run in three of a 1e4-dof BLR
+// factorisation crashed. On the 2e6-dof ssnv511a grid they would take 0.36 GB (10 %) off the peak
+// (docs/fe.md). AUTO and FR* are full rank.
+void refuseLowRank(const SolverOptions& o) {
+    if (o.acceleration.rfind("LR", 0) == 0)
+        throw NotImplemented("SOLVEUR/ACCELERATION='" + o.acceleration +
+                             "': block low-rank factors are not available: the MUMPS 5.5.1 of this system writes out "
+                             "of bounds while clustering them (use ACCELERATION='AUTO' or 'FR')");
 }
 
 bool isWorkspaceError(int code) {
@@ -98,7 +95,7 @@ protected:
         MemoryPhase phase;
         residentBeforeMb_ = phase.startMb();
         upperTriangle(A, s);
-        initialise(A, kind);
+        initialise(kind);
         analyse(A);
         const double analysisPeak = phase.peakMb();
         // The ordering's graphs and METIS's work arrays were freed in the heap: give those pages
@@ -147,7 +144,7 @@ private:
                 }
     }
 
-    void initialise(const CsrMatrix& A, MatrixKind kind) {
+    void initialise(MatrixKind kind) {
         id_ = DMUMPS_STRUC_C{};
         conditionLogged_ = false;
         id_.job = kJobInit;
@@ -164,8 +161,7 @@ private:
         // Silence MUMPS's own printing; we log what matters.
         id_.icntl[0] = -1, id_.icntl[1] = -1, id_.icntl[2] = -1, id_.icntl[3] = 0;
         id_.icntl[13] = options_.pcentPivot;
-        lowRank_ = lowRankThreshold(options_, A.rows);
-        if (lowRank_ > 0.0) id_.icntl[34] = kBlockLowRank, id_.cntl[6] = lowRank_;
+        refuseLowRank(options_);
         if (options_.nprec >= 0) {  // null pivot detection (code_aster's NPREC)
             id_.icntl[23] = 1;
             id_.cntl[2] = std::pow(10.0, -options_.nprec);
@@ -178,7 +174,7 @@ private:
         id_.icntl[6] = orderingCode(options_.renum, ordering_);
         orderingNote_.clear();
         if (id_.icntl[6] == kUserOrdering) {
-            const FillReducingOrdering nd = nestedDissectionOrdering(A);
+            const FillReducingOrdering nd = nestedDissectionOrdering(A, options_.threads);
             permIn_.resize(nd.pivotRank.size());
             for (size_t i = 0; i < permIn_.size(); ++i) permIn_[i] = nd.pivotRank[i] + 1;
             id_.perm_in = permIn_.data();
@@ -250,11 +246,6 @@ private:
                     "peak memory {} MB (INFOG(22)); analysis + factorisation {:.3f} s",
                     factorisationSeconds_, id_.rinfog[2], factorisationSeconds_ > 0 ? id_.rinfog[2] / factorisationSeconds_ / 1e9 : 0.0,
                     static_cast<long long>(mumpsCount(id_.infog[28])), id_.infog[21], total);
-        if (lowRank_ > 0.0)
-            msg().infof("    MUMPS block low-rank factors (ACCELERATION='{}', CNTL(7)={:.0e}): {:.4g} entries kept of {} "
-                        "(INFOG(35))",
-                        options_.acceleration, lowRank_, mumpsCount(id_.infog[34]),
-                        static_cast<long long>(mumpsCount(id_.infog[28])));
         msg().infof("    memory (resident, process): {:.0f} MB before the analysis, peak {:.0f} MB in the analysis, "
                     "{:.0f} MB in the factorisation",
                     residentBeforeMb_, analysisPeakMb, factorisation.peakMb());
@@ -279,7 +270,7 @@ private:
     bool conditionLogged_ = false;  // once per factorisation (refinement steps solve again)
     bool initialised_ = false;
     std::string ordering_, orderingNote_;
-    double lowRank_ = 0.0, analysisSeconds_ = 0.0, predictedFlops_ = 0.0, factorisationSeconds_ = 0.0, residentBeforeMb_ = 0.0;
+    double analysisSeconds_ = 0.0, predictedFlops_ = 0.0, factorisationSeconds_ = 0.0, residentBeforeMb_ = 0.0;
     std::vector<MUMPS_INT> permIn_;
     LargeVector<MUMPS_INT> irn_, jcn_;
     LargeVector<double> a_;

@@ -8,6 +8,7 @@
 #include <regex>
 #include <string>
 
+#include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "solver/LinearSolver.hpp"
 #include "solver/MetisOrdering.hpp"
@@ -86,6 +87,15 @@ TEST(SolverOrdering, OrderingIsReproducible) {
     EXPECT_EQ(nestedDissectionOrdering(A).pivotRank, nestedDissectionOrdering(A).pivotRank);
 }
 
+// Above 1e5 vertices the top separator comes first and the halves are ordered apart, the second
+// in a child process with two threads: the same ranks as on one.
+TEST(SolverOrdering, SplitOrderingDoesNotDependOnTheThreads) {
+    const CsrMatrix A = gridMatrix(320);
+    const FillReducingOrdering one = nestedDissectionOrdering(A, 1), two = nestedDissectionOrdering(A, 2);
+    expectNodeBlockPermutation(two, A.rows);
+    EXPECT_EQ(one.pivotRank, two.pivotRank);
+}
+
 TEST(SolverOrdering, AutoIsMetisAndBeatsMinimumDegreeOnAGrid) {
     msg().setEcho(false);
     const CsrMatrix A = gridMatrix(80);
@@ -104,28 +114,23 @@ TEST(SolverOrdering, AutoIsMetisAndBeatsMinimumDegreeOnAGrid) {
               std::string::npos);
 }
 
-// ACCELERATION='LR': block low-rank factors; the refinement brings the solution back to round-off.
-TEST(SolverLowRank, LowRankFactorsAreRefinedToRoundOff) {
+// ACCELERATION='LR*' is refused with the reason (this MUMPS's low-rank clustering writes out of
+// bounds); AUTO and FR are full rank.
+TEST(SolverLowRank, LowRankFactorsAreRefused) {
     msg().setEcho(false);
-    const CsrMatrix A = gridMatrix(100);
-    for (double threshold : {0.0, 1e-6}) {
-        SolverOptions o;
-        o.acceleration = "LR";
-        o.lowRankThreshold = threshold;
-        auto solver = makeLinearSolver(o);
-        solver->factorize(A, MatrixKind::SymmetricPositiveDefinite);
-        EXPECT_NE(msg().messText().rfind(threshold == 0.0 ? "block low-rank factors (ACCELERATION='LR', CNTL(7)=1e-10)"
-                                                           : "block low-rank factors (ACCELERATION='LR', CNTL(7)=1e-06)"),
-                  std::string::npos);
-        std::vector<double> x(A.rows), b(A.rows);
-        for (int i = 0; i < A.rows; ++i) x[i] = std::sin(0.001 * i) + 1.0;
-        A.multiply(x, b);
-        EXPECT_LT(solver->solve(b), 1e-14);
-        for (int i = 0; i < A.rows; ++i) ASSERT_NEAR(b[i], x[i], 1e-13) << i;
+    const CsrMatrix A = gridMatrix(10);
+    SolverOptions o;
+    o.acceleration = "LR+";
+    try {
+        makeLinearSolver(o)->factorize(A, MatrixKind::SymmetricPositiveDefinite);
+        FAIL() << "ACCELERATION='LR+' accepted";
+    } catch (const NotImplemented& e) {
+        EXPECT_NE(std::string(e.what()).find("SOLVEUR/ACCELERATION='LR+': block low-rank factors are not available"),
+                  std::string::npos)
+            << e.what();
     }
-    // AUTO keeps full-rank factors below 1e6 unknowns.
-    factoriseAndSolve(A, "AUTO");
-    EXPECT_EQ(msg().messText().rfind("block low-rank"),
-              msg().messText().rfind("block low-rank factors (ACCELERATION='LR', CNTL(7)=1e-06)"));
+    for (const char* acceleration : {"AUTO", "FR", "FR++"}) {
+        o.acceleration = acceleration;
+        EXPECT_NO_THROW(makeLinearSolver(o)->factorize(A, MatrixKind::SymmetricPositiveDefinite)) << acceleration;
+    }
 }
-
