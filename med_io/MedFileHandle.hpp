@@ -16,7 +16,26 @@ void silenceHdf5Errors();
 // (missing file, not HDF5, not MED): UserError naming the file otherwise.
 void checkReadableMedFile(const std::string& path);
 
-// An open MED file, closed by the destructor.
+// While one lives, what the MED and HDF5 libraries print on stderr (fd 2) is captured; at the
+// end it goes to the message log. Nested captures share the outermost one.
+class StderrCapture {
+public:
+    StderrCapture();
+    ~StderrCapture();
+    StderrCapture(const StderrCapture&) = delete;
+    StderrCapture& operator=(const StderrCapture&) = delete;
+};
+
+// The system cause HDF5 printed in the current capture, " (the HDF5 library reports: ...)", or "".
+std::string libraryCause();
+// UserError(text + libraryCause()).
+[[noreturn]] void throwMedError(const std::string& text);
+
+// Every object of the file opened with its dataspace, type and attributes (cheap: no data read):
+// UserError "damaged: its object /ENS_MAA/.../FAM cannot be read" naming the first that fails.
+void checkMedStructure(const std::string& path);
+
+// An open MED file, closed by the destructor (every HDF5 object of the file on a failed close).
 class MedFile {
 public:
     MedFile(const std::string& path, med_access_mode mode);
@@ -29,6 +48,7 @@ public:
     void close();
 
 private:
+    StderrCapture capture_;
     std::string path_;
     med_idt fid_ = -1;
 };

@@ -12,9 +12,10 @@
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
-#include "fe/ShapeFunctions.hpp"
 #include "med_io/MedCellOrder.hpp"
 #include "med_io/MedFileHandle.hpp"
+#include "mesh/ElementGeometry.hpp"
+#include "mesh/ShapeFunctions.hpp"
 
 namespace ma::med {
 
@@ -83,26 +84,12 @@ std::string padded16(const std::vector<std::string>& names) {
 
 // Reference-element measure at xi: |det J| for a cell of the space dimension, the area/length
 // element sqrt(det(J^T J)) for faces and edges.
-double jacobianMeasure(CellType type, std::span<const std::array<double, 3>> nodes,
-                       const std::array<double, 3>& xi) {
-    const int d = referenceDimension(type);
+double measureAt(CellType type, std::span<const std::array<double, 3>> nodes, const std::array<double, 3>& xi) {
     std::vector<double> dN(nodes.size() * 3);
     shapeDerivatives(type, xi, dN);
-    double J[3][3] = {};
-    for (size_t a = 0; a < nodes.size(); ++a)
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < d; ++j) J[i][j] += nodes[a][size_t(i)] * dN[a * 3 + size_t(j)];
-    double G[3][3] = {};
-    for (int p = 0; p < d; ++p)
-        for (int q = 0; q < d; ++q)
-            for (int i = 0; i < 3; ++i) G[p][q] += J[i][p] * J[i][q];
-    double det = 0;
-    if (d == 1) det = G[0][0];
-    else if (d == 2) det = G[0][0] * G[1][1] - G[0][1] * G[1][0];
-    else
-        det = G[0][0] * (G[1][1] * G[2][2] - G[1][2] * G[2][1]) - G[0][1] * (G[1][0] * G[2][2] - G[1][2] * G[2][0]) +
-              G[0][2] * (G[1][0] * G[2][1] - G[1][1] * G[2][0]);
-    return std::sqrt(std::max(det, 0.0));
+    double J[3][3];
+    jacobian(nodes, dN, referenceDimension(type), J);
+    return jacobianMeasure(J, referenceDimension(type));
 }
 
 }  // namespace
@@ -128,7 +115,7 @@ struct MedWriter::Impl {
             if (!usedProfileNames.count(name)) break;
         }
         if (MEDprofileWr(fid(), name.c_str(), med_int(members.size()), members.data()) < 0)
-            throw UserError("MED file '" + target.tempPath() + "': cannot write profile " + name);
+            throwMedError("MED file '" + target.finalPath() + "': cannot write profile " + name);
         usedProfileNames.insert(name);
         profiles.emplace(key, name);
         return name;
@@ -189,15 +176,15 @@ struct MedWriter::Impl {
                 continue;
             if (trimName(name, MED_NAME_SIZE) != fieldName) continue;
             if (cname.substr(0, size_t(nc) * MED_SNAME_SIZE) != padded16(comps))
-                throw UserError(fmt::format("MED file '{}' already holds a field '{}' with other "
+                throwMedError(fmt::format("MED file '{}' already holds a field '{}' with other "
                                             "components; choose another result name or unit",
-                                            target.tempPath(), fieldName));
+                                            target.finalPath(), fieldName));
             return;
         }
         const std::string units(comps.size() * MED_SNAME_SIZE, ' ');
         if (MEDfieldCr(fid(), fieldName.c_str(), MED_FLOAT64, med_int(comps.size()), padded16(comps).c_str(),
                        units.c_str(), "", meshName.c_str()) < 0)
-            throw UserError("MED file '" + target.tempPath() + "': cannot create field " + fieldName);
+            throwMedError("MED file '" + target.finalPath() + "': cannot create field " + fieldName);
     }
 };
 
@@ -226,9 +213,9 @@ void MedWriter::commit() {
 
 bool MedWriter::writeMesh(const Mesh& mesh, const std::string& meshName) {
     const med_idt fid = impl_->fid();
-    const std::string& tmp = impl_->target.tempPath();
+    const std::string& tmp = impl_->target.finalPath();
     auto fail = [&](const std::string& what) {
-        throw UserError("MED file '" + tmp + "': cannot write " + what + " of mesh '" + meshName + "'");
+        throwMedError("MED file '" + tmp + "': cannot write " + what + " of mesh '" + meshName + "'");
     };
     const med_int existing = impl_->existingMeshNodes(meshName);
     if (existing >= 0) {
@@ -347,8 +334,8 @@ void MedWriter::writeNodalField(const std::string& fieldName, const std::string&
                                    MED_COMPACT_STMODE, profile.c_str(), MED_NO_LOCALIZATION, MED_FULL_INTERLACE,
                                    MED_ALL_CONSTITUENT, med_int(nodes.size()),
                                    reinterpret_cast<const unsigned char*>(values.data())) < 0)
-        throw UserError(fmt::format("MED file '{}': cannot write field {} at step ({}, {})",
-                                    impl_->target.tempPath(), fieldName, numdt, numit));
+        throwMedError(fmt::format("MED file '{}': cannot write field {} at step ({}, {})",
+                                    impl_->target.finalPath(), fieldName, numdt, numit));
 }
 
 int MedWriter::writeGaussField(const std::string& fieldName, const std::string& meshName,
@@ -420,7 +407,7 @@ int MedWriter::writeGaussField(const std::string& fieldName, const std::string& 
             for (int p = 0; p < npt; ++p) {
                 const auto& xi = field.pointRefCoords[size_t(p0 + p)];
                 for (int d = 0; d < rdim; ++d) pts[size_t(p) * rdim + d] = xi[size_t(d)];
-                const double m = jacobianMeasure(type, X, xi);
+                const double m = measureAt(type, X, xi);
                 weights[size_t(p)] = m > 0 ? field.pointWeights[size_t(p0 + p)] / m : 0.0;
             }
             std::string lkey = fmt::format("{}|{}|", int(type), fmt::join(key, ","));
@@ -436,7 +423,7 @@ int MedWriter::writeGaussField(const std::string& fieldName, const std::string& 
                 }
                 if (MEDlocalizationWr(impl_->fid(), loc.c_str(), geo, rdim, refNodes.data(), MED_FULL_INTERLACE, npt,
                                       pts.data(), weights.data(), MED_NO_INTERPOLATION, MED_NO_MESH_SUPPORT) < 0)
-                    throw UserError("MED file '" + impl_->target.tempPath() + "': cannot write localisation " + loc);
+                    throwMedError("MED file '" + impl_->target.finalPath() + "': cannot write localisation " + loc);
                 impl_->usedLocalizationNames.insert(loc);
                 impl_->localizations.emplace(lkey, loc);
             }
@@ -460,8 +447,8 @@ int MedWriter::writeGaussField(const std::string& fieldName, const std::string& 
                                            MED_COMPACT_STMODE, profile.c_str(), loc.c_str(), MED_FULL_INTERLACE,
                                            MED_ALL_CONSTITUENT, med_int(members.size()),
                                            reinterpret_cast<const unsigned char*>(values.data())) < 0)
-                throw UserError(fmt::format("MED file '{}': cannot write field {} on {} cells at step ({}, {})",
-                                            impl_->target.tempPath(), fieldName, cellTypeName(type), numdt, numit));
+                throwMedError(fmt::format("MED file '{}': cannot write field {} on {} cells at step ({}, {})",
+                                            impl_->target.finalPath(), fieldName, cellTypeName(type), numdt, numit));
         }
     }
     return skipped;

@@ -216,4 +216,8 @@ const std::vector<std::string>& unsupportedCommands();
 KeywordSet validateCall(const cata::Command& command, const CallArguments& args,
                         CallArguments* context = nullptr);
 
+// The same check for a keyword tree built in C++ (tests): `kw` as a call of `command`, returned
+// with the catalog's defaults filled in. UserError as validateCall.
+KeywordSet validateKeywords(const std::string& command, const KeywordSet& kw);
+
 }  // namespace ma

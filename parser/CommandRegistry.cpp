@@ -1,5 +1,7 @@
 #include "parser/CommandRegistry.hpp"
 
+#include "parser/RunOptions.hpp"
+
 namespace ma {
 
 CommandRegistry& CommandRegistry::instance() {
@@ -12,6 +14,27 @@ void CommandRegistry::add(const std::string& name, CommandFunction fn) { command
 const CommandFunction* CommandRegistry::find(const std::string& name) const {
     auto it = commands_.find(name);
     return it == commands_.end() ? nullptr : &it->second;
+}
+
+std::vector<std::string> CommandRegistry::names() const {
+    std::vector<std::string> out;
+    for (const auto& [name, fn] : commands_) out.push_back(name);
+    return out;
+}
+
+RunOptionRegistry& RunOptionRegistry::instance() {
+    static RunOptionRegistry r;
+    return r;
+}
+
+void RunOptionRegistry::add(RunOption option) {
+    const std::string name = option.name;
+    options_[name] = std::move(option);
+}
+
+const RunOption* RunOptionRegistry::find(const std::string& name) const {
+    auto it = options_.find(name);
+    return it == options_.end() ? nullptr : &it->second;
 }
 
 }  // namespace ma

@@ -5,6 +5,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "core/Concept.hpp"
 #include "parser/KeywordTree.hpp"
@@ -21,9 +22,9 @@ struct CommandContext {
     int line = 0;            // .comm line of the call
     Units* units = nullptr;  // logical units of the run (.export F lines)
     int info = 1;            // INFO keyword when present, else 1
-    // Expert run option `--subcell-quadrature` (not a .comm keyword): 0 = the catalogue's X-FEM
-    // sub-cell rules, 1..6 = the polynomial degree of the volume sub-cell rules (MODI_MODELE_XFEM).
-    int subcellDegree = 0;
+    // Expert run options given on the command line (parser/RunOptions.hpp): name -> value, as
+    // typed; already checked by the option's own check.
+    std::map<std::string, std::string> runOptions;
 };
 
 using CommandFunction = std::function<ConceptPtr(const KeywordSet&, CommandContext&)>;
@@ -33,6 +34,7 @@ public:
     static CommandRegistry& instance();
     void add(const std::string& name, CommandFunction fn);
     const CommandFunction* find(const std::string& name) const;
+    std::vector<std::string> names() const;  // every registered command, sorted
 
 private:
     std::map<std::string, CommandFunction> commands_;

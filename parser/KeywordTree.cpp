@@ -18,7 +18,9 @@ bool KeywordSet::has(const std::string& keyword) const {
 
 const std::vector<KeywordValue>& KeywordSet::values(const std::string& keyword) const {
     auto it = simple_.find(keyword);
-    if (it == simple_.end()) throw UserError("missing keyword " + pathOf(keyword));
+    if (it == simple_.end())
+        throw InternalError("keyword " + pathOf(keyword) +
+                            " is read but absent from the call, and the catalog gives it no default");
     return it->second;
 }
 
@@ -48,16 +50,6 @@ long long KeywordSet::integer(const std::string& keyword) const {
 
 const std::string& KeywordSet::text(const std::string& keyword) const {
     return single<std::string>(*this, keyword, "text");
-}
-
-double KeywordSet::real(const std::string& keyword, double fallback) const {
-    return has(keyword) ? real(keyword) : fallback;
-}
-long long KeywordSet::integer(const std::string& keyword, long long fallback) const {
-    return has(keyword) ? integer(keyword) : fallback;
-}
-std::string KeywordSet::text(const std::string& keyword, const std::string& fallback) const {
-    return has(keyword) ? text(keyword) : fallback;
 }
 
 std::vector<double> KeywordSet::reals(const std::string& keyword) const {

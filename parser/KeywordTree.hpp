@@ -28,18 +28,16 @@ public:
 
     bool has(const std::string& keyword) const;  // simple or factor keyword present
 
-    // Simple keywords. The scalar accessors require exactly one value; they throw UserError
-    // naming the keyword path when it is absent.
+    // Simple keywords. The scalar accessors require exactly one value (UserError otherwise). The
+    // catalog is the single source of defaults: reading a keyword that is absent (neither given
+    // nor defaulted by the catalog) is a bug of the command, an InternalError naming the keyword
+    // path; a command checks has() for a keyword without a default.
     double real(const std::string& keyword) const;
     long long integer(const std::string& keyword) const;
     const std::string& text(const std::string& keyword) const;
     std::vector<double> reals(const std::string& keyword) const;
     std::vector<long long> integers(const std::string& keyword) const;
     std::vector<std::string> texts(const std::string& keyword) const;
-    // Value or default when absent.
-    double real(const std::string& keyword, double fallback) const;
-    long long integer(const std::string& keyword, long long fallback) const;
-    std::string text(const std::string& keyword, const std::string& fallback) const;
 
     template <class T>
     std::shared_ptr<T> object(const std::string& keyword) const {

@@ -17,6 +17,7 @@
 #include <fstream>
 
 #include "core/Error.hpp"
+#include "core/MemoryLimit.hpp"
 #include "core/Messages.hpp"
 #include "parser/Catalog.hpp"
 #include "parser/CommandRegistry.hpp"
@@ -234,6 +235,108 @@ ConceptPtr makeFormula(const KeywordSet& kw, const py::dict& context, const py::
     return std::make_shared<Formula>(kw.text("VALE"), kw.texts("NOM_PARA"), context, globals, run.commFile, line);
 }
 
+// reuse= (reentrant commands only): the object it names, taken out of the keywords; null without.
+ConceptPtr takeReused(const cata::Command& command, py::dict keywords, const std::string& resultName) {
+    const std::string& name = command.name;
+    ConceptPtr reused;
+    if (keywords.contains("reuse")) {
+        py::object r = keywords["reuse"];
+        PyDict_DelItemString(keywords.ptr(), "reuse");
+        if (command.reentrant == cata::Reuse::No)
+            throw UserError(fmt::format("reuse= is not allowed: {} is not a reentrant command", name));
+        if (!py::isinstance<ConceptHandle>(r))
+            throw UserError(fmt::format("reuse= expects a concept, got {}", toCallValue(r).describe()));
+        reused = r.cast<ConceptHandle&>().object;
+        if (!resultName.empty() && !reused->name.empty() && reused->name != resultName)
+            throw UserError(fmt::format("reuse={} but the result is assigned to {}: a reentrant command "
+                                        "modifies the object given by reuse=, assign the result to it",
+                                        reused->name, resultName));
+    }
+    if (!reused && command.reentrant == cata::Reuse::Mandatory)
+        throw UserError(fmt::format("{0} modifies its input in place: reuse= is mandatory (write X = {0}(reuse=X, "
+                                    "...) with the object it modifies)",
+                                    name));
+    return reused;
+}
+
+// The echo of the call in code_aster's style (and the alarm of a file that does not start with DEBUT).
+void echoCommand(const CommandContext& ctx, const KeywordSet& kw, const py::dict& context, const std::string& resultType) {
+    auto& run = RunState::current();
+    const std::string& name = ctx.command;
+    ++run.commandCount;
+    std::string extra;
+    for (auto [k, v] : context) {
+        // Functions by name (their repr holds an address, which would make logs differ run to run).
+        const std::string shown = py::hasattr(v, "__name__") && !py::isinstance<ConceptHandle>(v)
+                                      ? v.attr("__name__").cast<std::string>()
+                                      : py::repr(v).cast<std::string>();
+        extra += fmt::format("    {}={},\n", py::str(k).cast<std::string>(), shown);
+    }
+    msg().info(fmt::format("\n # {}\n # Command #{:04d} from {}, line {}{}\n{}\n", std::string(78, '-'),
+                           run.commandCount, run.commBaseName, ctx.line,
+                           resultType.empty() ? "" : ", result of type " + resultType,
+                           echoCall(ctx.resultName, name, kw, extra)));
+    if (!run.debutSeen && name != "DEBUT" && !run.missingDebutReported) {
+        run.missingDebutReported = true;
+        msg().alarm("SUPERVIS_1", "The command file does not start with DEBUT().");
+    }
+}
+
+// Runs the validated call: DEBUT, FIN, FORMULE and PRE_GIBI here, the others through the registry
+// (or not at all with --check-syntax). Checks the result's type against the catalog.
+ConceptPtr execute(CommandContext& ctx, const KeywordSet& kw, const py::dict& context, py::object frame,
+                   const std::string& resultType) {
+    auto& run = RunState::current();
+    const std::string& name = ctx.command;
+    ConceptPtr result;
+    if (name == "DEBUT") {
+        if (run.debutSeen) throw UserError("DEBUT is called twice");
+        run.debutSeen = true;
+    } else if (name == "FIN") {
+        run.finSeen = true;
+        run.recordTiming(name, 0.0);
+        throw EndOfRun{};
+    } else if (name == "FORMULE") {
+        result = makeFormula(kw, context, frame.attr("f_globals").cast<py::dict>(), ctx.line);
+    } else if (name == "PRE_GIBI") {
+        msg().info("    PRE_GIBI is a no-op in miniaster: LIRE_MAILLAGE reads the MED mesh of unit " +
+                   std::to_string(kw.integer("UNITE_MAILLAGE")) + " instead of a converted GIBI mesh");
+    } else if (run.checkOnly) {
+        if (!resultType.empty()) result = std::make_shared<SyntaxPlaceholder>(resultType);
+        msg().info("    syntax checked; not executed (--check-syntax)");
+    } else {
+        const CommandFunction* fn = CommandRegistry::instance().find(name);
+        if (isDisabledForTests(name)) fn = nullptr;
+        if (!fn) throw NotImplemented(name + " is not implemented yet in miniaster");
+        {
+            // Commands run without the GIL: they may use threads; formulas re-acquire it.
+            py::gil_scoped_release noGil;
+            result = (*fn)(kw, ctx);
+        }
+        if (!result && !resultType.empty())
+            throw InternalError(fmt::format("{} returned no {}", name, resultType));
+        if (result && !resultType.empty() && result->typeName() != resultType)
+            throw InternalError(fmt::format("{} returned a concept of type {}, the catalog says {}", name,
+                                            result->typeName(), resultType));
+    }
+    return result;
+}
+
+// Python keyword arguments -> call arguments; FORMULE's keywords other than VALE, VALE_C and
+// NOM_PARA go to `context` (its evaluation context) as Python objects.
+CallArguments callArguments(const std::string& name, const py::dict& keywords, py::dict& context) {
+    CallArguments callArgs;
+    for (auto [k, v] : keywords) {
+        const std::string key = py::str(k).cast<std::string>();
+        if (name == "FORMULE" && key != "VALE" && key != "VALE_C" && key != "NOM_PARA") {
+            context[k] = v;
+            continue;
+        }
+        callArgs.emplace_back(key, toCallValue(v));
+    }
+    return callArgs;
+}
+
 py::object runCommand(const std::string& name, py::object frame, py::tuple args, py::dict keywords) {
     auto& run = RunState::current();
     if (run.failure) throw AbortRun{};
@@ -250,38 +353,11 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
             throw UserError(fmt::format("{} takes keyword arguments only (got {} positional argument{})", name,
                                         args.size(), args.size() > 1 ? "s" : ""));
 
-        // reuse= (reentrant commands only).
-        ConceptPtr reused;
-        if (keywords.contains("reuse")) {
-            py::object r = keywords["reuse"];
-            PyDict_DelItemString(keywords.ptr(), "reuse");
-            if (command->reentrant == cata::Reuse::No)
-                throw UserError(fmt::format("reuse= is not allowed: {} is not a reentrant command", name));
-            if (!py::isinstance<ConceptHandle>(r))
-                throw UserError(fmt::format("reuse= expects a concept, got {}", toCallValue(r).describe()));
-            reused = r.cast<ConceptHandle&>().object;
-            if (!resultName.empty() && !reused->name.empty() && reused->name != resultName)
-                throw UserError(fmt::format("reuse={} but the result is assigned to {}: a reentrant command "
-                                            "modifies the object given by reuse=, assign the result to it",
-                                            reused->name, resultName));
-        }
-
-        if (!reused && command->reentrant == cata::Reuse::Mandatory)
-            throw UserError(fmt::format("{0} modifies its input in place: reuse= is mandatory (write X = {0}(reuse=X, "
-                                        "...) with the object it modifies)",
-                                        name));
+        const ConceptPtr reused = takeReused(*command, keywords, resultName);
 
         // Python arguments -> checked keyword tree. FORMULE keeps its extra keywords as Python objects.
-        CallArguments callArgs;
         py::dict context;
-        for (auto [k, v] : keywords) {
-            const std::string key = py::str(k).cast<std::string>();
-            if (name == "FORMULE" && key != "VALE" && key != "VALE_C" && key != "NOM_PARA") {
-                context[k] = v;
-                continue;
-            }
-            callArgs.emplace_back(key, toCallValue(v));
-        }
+        const CallArguments callArgs = callArguments(name, keywords, context);
         KeywordSet kw = validateCall(*command, callArgs);
 
         CommandContext ctx;
@@ -291,62 +367,15 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
         ctx.commFile = run.commFile;
         ctx.line = line;
         ctx.units = &run.units;
-        ctx.subcellDegree = run.subcellDegree;
+        ctx.runOptions = run.runOptions;
         if (kw.simpleKeywords().count("INFO")) ctx.info = static_cast<int>(kw.integer("INFO"));
 
-        // Echo in code_aster's style.
-        ++run.commandCount;
-        std::string extra;
-        for (auto [k, v] : context) {
-            // Functions by name (their repr holds an address, which would make logs differ run to run).
-            const std::string shown = py::hasattr(v, "__name__") && !py::isinstance<ConceptHandle>(v)
-                                          ? v.attr("__name__").cast<std::string>()
-                                          : py::repr(v).cast<std::string>();
-            extra += fmt::format("    {}={},\n", py::str(k).cast<std::string>(), shown);
-        }
         const std::string resultType = command->resultType(kw);
-        msg().info(fmt::format("\n # {}\n # Command #{:04d} from {}, line {}{}\n{}\n", std::string(78, '-'),
-                               run.commandCount, run.commBaseName, line,
-                               resultType.empty() ? "" : ", result of type " + resultType,
-                               echoCall(resultName, name, kw, extra)));
-        if (!run.debutSeen && name != "DEBUT" && !run.missingDebutReported) {
-            run.missingDebutReported = true;
-            msg().alarm("SUPERVIS_1", "The command file does not start with DEBUT().");
-        }
+        echoCommand(ctx, kw, context, resultType);
 
-        ConceptPtr result;
         std::snprintf(run.runningCommand, sizeof(run.runningCommand), "%s", name.c_str());
         run.runningLine = line;
-        if (name == "DEBUT") {
-            if (run.debutSeen) throw UserError("DEBUT is called twice");
-            run.debutSeen = true;
-        } else if (name == "FIN") {
-            run.finSeen = true;
-            run.recordTiming(name, 0.0);
-            throw EndOfRun{};
-        } else if (name == "FORMULE") {
-            result = makeFormula(kw, context, frame.attr("f_globals").cast<py::dict>(), line);
-        } else if (name == "PRE_GIBI") {
-            msg().info("    PRE_GIBI is a no-op in miniaster: LIRE_MAILLAGE reads the MED mesh of unit " +
-                       std::to_string(kw.integer("UNITE_MAILLAGE")) + " instead of a converted GIBI mesh");
-        } else if (run.checkOnly) {
-            if (!resultType.empty()) result = std::make_shared<SyntaxPlaceholder>(resultType);
-            msg().info("    syntax checked; not executed (--check-syntax)");
-        } else {
-            const CommandFunction* fn = CommandRegistry::instance().find(name);
-            if (isDisabledForTests(name)) fn = nullptr;
-            if (!fn) throw NotImplemented(name + " is not implemented yet in miniaster");
-            {
-                // Commands run without the GIL: they may use threads; formulas re-acquire it.
-                py::gil_scoped_release noGil;
-                result = (*fn)(kw, ctx);
-            }
-            if (!result && !resultType.empty())
-                throw UserError(fmt::format("internal error: {} returned no {}", name, resultType));
-            if (result && !resultType.empty() && result->typeName() != resultType)
-                throw UserError(fmt::format("internal error: {} returned a concept of type {}, the catalog says {}",
-                                            name, result->typeName(), resultType));
-        }
+        const ConceptPtr result = execute(ctx, kw, context, frame, resultType);
         // The result takes the variable's name, unless it is one of the call's input objects returned
         // as is (it keeps its name; with reuse= the names are the same).
         if (result && !resultName.empty() && (result == reused || !isInput(callArgs, result))) result->name = resultName;
@@ -370,8 +399,12 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
         run.fail("ERROR", name, line, e.what());
     } catch (const NumericalError& e) {
         run.fail("ERROR", name, line, std::string("numerical failure: ") + e.what());
+    } catch (const InternalError& e) {
+        run.fail("ERROR", name, line, std::string("internal error of miniaster (please report it): ") + e.what());
+    } catch (const std::bad_alloc&) {
+        run.fail("ERROR", name, line, outOfMemoryCause());
     } catch (const std::exception& e) {
-        run.fail("ERROR", name, line, std::string("unexpected error: ") + e.what());
+        run.fail("ERROR", name, line, unexpectedErrorCause(e));
     } catch (...) {
         run.fail("ERROR", name, line, "unexpected error of unknown type");
     }
@@ -471,57 +504,6 @@ void RunState::recordTiming(const std::string& command, double seconds) {
         }
     }
     timings.push_back({command, 1, seconds, peakMemoryKb()});
-}
-
-namespace {
-std::string gCrashMessPath;
-
-void writeAll(int fd, const char* data, size_t size) {
-    while (size > 0) {
-        const ssize_t n = ::write(fd, data, size);
-        if (n <= 0) return;
-        data += n;
-        size -= size_t(n);
-    }
-}
-
-extern "C" void onFatalSignal(int sig) {
-    // Best effort: the process is already broken; only write() / rename() are used on prepared data.
-    const auto& run = RunState::current();
-    char where[160];
-    if (run.runningCommand[0])
-        std::snprintf(where, sizeof(where), "%s (%s, line %d)", run.runningCommand, run.commBaseName.c_str(),
-                      run.runningLine);
-    else
-        std::snprintf(where, sizeof(where), "(%s)", run.commBaseName.c_str());
-    char paragraph[640];
-    const int len = std::snprintf(paragraph, sizeof(paragraph),
-                                  "\n<F> <ABNORMAL_ABORT> %s: the process received signal %d (%s); this is a defect "
-                                  "of miniaster, please report it\n\n"
-                                  "------------------------------------------------------------\n"
-                                  "--- DIAGNOSTIC JOB : <F>_ABNORMAL_ABORT\n"
-                                  "------------------------------------------------------------\n",
-                                  where, sig, strsignal(sig));
-    if (len > 0) writeAll(STDOUT_FILENO, paragraph, size_t(std::min<int>(len, sizeof(paragraph) - 1)));
-    if (!gCrashMessPath.empty()) {
-        const std::string temp = gCrashMessPath + ".crash-tmp";
-        const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (fd >= 0) {
-            const auto& text = msg().messText();
-            writeAll(fd, text.data(), text.size());
-            if (len > 0) writeAll(fd, paragraph, size_t(std::min<int>(len, sizeof(paragraph) - 1)));
-            ::close(fd);
-            ::rename(temp.c_str(), gCrashMessPath.c_str());
-        }
-    }
-    std::signal(sig, SIG_DFL);
-    std::raise(sig);
-}
-}  // namespace
-
-void installCrashHandler(const std::string& messPath) {
-    gCrashMessPath = messPath;
-    for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(sig, onFatalSignal);
 }
 
 long peakMemoryKb() {

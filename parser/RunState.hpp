@@ -1,6 +1,7 @@
 #pragma once
 // State of one run of a command file, shared by the supervisor (command line, outputs,
 // diagnostic) and the Python bridge (command calls).
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,12 +30,12 @@ public:
     std::string commFile;      // path of the command file
     std::string commBaseName;  // for messages: "ssnv511a.comm"
     bool checkOnly = false;    // --check-syntax: validate every call, execute none
-    int subcellDegree = 0;     // --subcell-quadrature: 0 catalogue, else the degree (CommandContext)
+    std::map<std::string, std::string> runOptions;  // expert options given (parser/RunOptions.hpp)
     bool debutSeen = false;
     bool finSeen = false;
     bool missingDebutReported = false;
     int commandCount = 0;
-    // The command being executed, for the crash report (see installCrashHandler).
+    // The command being executed, for the crash report and the run guard (parser/RunGuard.hpp).
     char runningCommand[64] = {};
     int runningLine = 0;
     std::optional<RunFailure> failure;
@@ -49,10 +50,9 @@ public:
 // Peak resident memory of the process in kB: max of getrusage ru_maxrss and /proc VmHWM.
 long peakMemoryKb();
 
-// On a fatal signal (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT) write, best effort, the message log
-// so far plus an <F>_ABNORMAL_ABORT diagnostic naming the running command to `messPath`, then die
-// with the signal. No result file is written.
-void installCrashHandler(const std::string& messPath);
+// The cause of an exception no command expected (a defect of miniaster), in words a user can act
+// on: never a bare C++ library message.
+std::string unexpectedErrorCause(const std::exception& e);
 
 // Installs the `_miniaster` module, the builtins (every catalogued command, _F...) and the
 // stdout/stderr redirection into the message log. Needs a running interpreter.

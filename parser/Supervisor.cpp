@@ -7,16 +7,19 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
-#include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/MallocHugePages.hpp"
 #include "core/Messages.hpp"
 #include "core/TestReport.hpp"
+#include "parser/RunOptions.hpp"
+#include "parser/ExportFile.hpp"
+#include "parser/RunGuard.hpp"
+#include "parser/RunOutputs.hpp"
 #include "parser/RunState.hpp"
 #include "parser/StaticCheck.hpp"
-#include "xfem/SubcellQuadrature.hpp"
 
 namespace py = pybind11;
 namespace fs = std::filesystem;
@@ -25,18 +28,20 @@ namespace ma {
 
 namespace {
 
-const char* kUsage =
-    "usage: miniaster run CASE.export [--out-dir DIR] [--check-syntax] [--subcell-quadrature RULE]\n"
-    "       miniaster run CASE.comm [--mesh MESH.med] [--out-dir DIR] [--check-syntax] [--subcell-quadrature RULE]\n"
-    "Runs a code_aster command file. Writes <case>.mess (message log) and <case>.resu (TEST lines,\n"
-    "tables) in DIR (default: the current folder). --check-syntax validates every command call\n"
-    "against the catalog without executing any. --subcell-quadrature (expert option, not a code_aster\n"
-    "keyword): RULE = catalogue (default: the X-FEM sub-cell rules of code_aster's element catalogues)\n"
-    "or a degree 1..6 (every volume sub-cell uses the lowest rule exact for that polynomial degree).\n"
-    "Exit status: 0 OK, 2 a TEST is NOOK, 1 error.\n";
-
-// Highest degree of --subcell-quadrature: the range XfemModel accepts.
-using xfem::kMaxSubcellDegree;
+// The usage text, with the expert run options the engine registered (parser/RunOptions.hpp).
+std::string usage() {
+    std::string options;
+    for (const auto& [name, o] : RunOptionRegistry::instance().options()) options += fmt::format(" [--{} {}]", name, o.valueName);
+    std::string text = fmt::format(
+        "usage: miniaster run CASE.export [--out-dir DIR] [--check-syntax]{0}\n"
+        "       miniaster run CASE.comm [--mesh MESH.med] [--out-dir DIR] [--check-syntax]{0}\n"
+        "Runs a code_aster command file. Writes <case>.mess (message log) and <case>.resu (TEST lines,\n"
+        "tables) in DIR (default: the current folder). --check-syntax validates every command call\n"
+        "against the catalog without executing any.\n",
+        options);
+    for (const auto& [name, o] : RunOptionRegistry::instance().options()) text += o.help + "\n";
+    return text + "Exit status: 0 OK, 2 a TEST is NOOK, 1 error.\n";
+}
 
 struct Options {
     std::string input;
@@ -44,7 +49,7 @@ struct Options {
     bool outDirGiven = false;
     std::string mesh;
     bool checkOnly = false;
-    int subcellDegree = 0;  // --subcell-quadrature: 0 catalogue
+    std::map<std::string, std::string> runOptions;  // registered expert options given
 };
 
 // Bad command line or .export: reported before the command file starts.
@@ -58,63 +63,6 @@ std::string readFile(const std::string& path) {
     std::ostringstream s;
     s << in.rdbuf();
     return s.str();
-}
-
-struct Outputs {
-    std::string mess, resu;
-};
-
-// .export (commands_spec §7.8): `P name value`, `F type path flags unit`. Paths are relative to the
-// .export's folder; relative result (R) paths are relative to --out-dir when it is given.
-Outputs readExport(const std::string& exportPath, const Options& opt, RunState& run) {
-    std::ifstream in(exportPath);
-    if (!in) throw SetupError("cannot read the .export file " + exportPath);
-    const fs::path folder = fs::absolute(exportPath).parent_path();
-    const std::string exportName = fs::path(exportPath).filename().string();
-    Outputs out;
-    std::string line;
-    int lineNo = 0;
-    while (std::getline(in, line)) {
-        ++lineNo;
-        std::istringstream tokens(line);
-        std::vector<std::string> t;
-        for (std::string w; tokens >> w;) t.push_back(w);
-        if (t.empty() || t[0][0] == '#' || t[0] != "F") continue;  // P, A, R lines: nothing to set up
-        if (t.size() != 5)
-            throw SetupError(fmt::format("{}, line {}: expected `F <type> <path> <D|R|...> <unit>`, got `{}`",
-                                         exportName, lineNo, line));
-        const std::string& type = t[1];
-        const std::string& flags = t[3];
-        int unit = 0;
-        try {
-            unit = std::stoi(t[4]);
-        } catch (...) {
-            throw SetupError(fmt::format("{}, line {}: the unit '{}' is not a number", exportName, lineNo, t[4]));
-        }
-        fs::path path = t[2];
-        if (flags.find('D') != std::string::npos) {
-            if (path.is_relative()) path = folder / path;
-            if (!fs::exists(path))
-                throw SetupError(fmt::format("{}, line {}: the data file {} of unit {} does not exist ({})", exportName,
-                                             lineNo, path.string(), unit, line));
-            if (type == "comm") {
-                if (!run.commFile.empty())
-                    throw SetupError(fmt::format("{}, line {}: several command files; miniaster runs one", exportName,
-                                                 lineNo));
-                run.commFile = path.string();
-            } else {
-                run.units.setInput(unit, path.string());
-            }
-        }
-        if (flags.find('R') != std::string::npos) {
-            if (path.is_relative()) path = (opt.outDirGiven ? fs::path(opt.outDir) : folder) / path;
-            if (type == "mess") out.mess = path.string();
-            else if (type == "resu") out.resu = path.string();
-            else run.units.setOutput(unit, path.string());
-        }
-    }
-    if (run.commFile.empty()) throw SetupError(exportName + ": no command file (`F comm <file> D 1`)");
-    return out;
 }
 
 std::string banner() {
@@ -231,17 +179,10 @@ Options parseArguments(int argc, char** argv) {
             opt.mesh = value();
         } else if (a == "--check-syntax") {
             opt.checkOnly = true;
-        } else if (a == "--subcell-quadrature") {
-            const std::string rule = value();
-            if (rule == "catalogue") {
-                opt.subcellDegree = 0;
-            } else if (rule.size() == 1 && rule[0] >= '1' && rule[0] <= '0' + kMaxSubcellDegree) {
-                opt.subcellDegree = rule[0] - '0';
-            } else {
-                throw SetupError(fmt::format("--subcell-quadrature: '{}' is not a rule (catalogue, or a polynomial "
-                                             "degree 1..{})",
-                                             rule, kMaxSubcellDegree));
-            }
+        } else if (const RunOption* o = a.starts_with("--") ? RunOptionRegistry::instance().find(a.substr(2)) : nullptr) {
+            const std::string v = value();
+            if (const std::string why = o->check(v); !why.empty()) throw SetupError(a + ": " + why);
+            opt.runOptions[o->name] = v;
         } else if (!a.empty() && a[0] == '-') {
             throw SetupError("unknown option " + a);
         } else if (opt.input.empty()) {
@@ -254,11 +195,49 @@ Options parseArguments(int argc, char** argv) {
     return opt;
 }
 
+// Where the watchdog's stop ends the run (parser/RunGuard.hpp).
+RunOutputs* gOutputs = nullptr;
+
+void stopFromWatchdog(const std::string& kind, const std::string& cause) {
+    const auto& run = RunState::current();
+    const std::string where =
+        run.runningCommand[0] ? fmt::format("{} ({}, line {})", run.runningCommand, run.commBaseName, run.runningLine)
+        : run.runningLine     ? fmt::format("({}, in the Python code after the command of line {})", run.commBaseName,
+                                            run.runningLine)
+                              : fmt::format("({})", run.commBaseName);
+    stopRunNow(*gOutputs, fmt::format("<F> <{}> {}: {}", kind, where, cause), "<F>_" + kind);
+}
+
+// The .export or the command line, resolved into units and output paths (absolute: the command
+// file may change the current folder). SetupError / UserError / ExportError on a bad input.
+RunLimits setUpRun(const Options& opt, RunState& run, RunOutputs& outputs) {
+    RunLimits limits;
+    if (fs::path(opt.input).extension() == ".export") {
+        const ExportFile exportFile =
+            readExportFile(opt.input, opt.outDirGiven ? std::optional<fs::path>(outputs.outDir) : std::nullopt);
+        applyExport(exportFile, run, outputs);
+        limits.timeLimitSeconds = exportFile.timeLimitSeconds;
+        limits.memoryLimitMb = exportFile.memoryLimitMb;
+    } else {
+        std::error_code ec;
+        if (!fs::exists(opt.input, ec)) throw SetupError("the command file " + opt.input + " does not exist");
+        if (fs::is_directory(opt.input, ec)) throw SetupError("the command file " + opt.input + " is a folder");
+        run.commFile = fs::absolute(opt.input).lexically_normal().string();
+    }
+    if (!opt.mesh.empty()) {
+        std::error_code ec;
+        if (!fs::exists(opt.mesh, ec)) throw SetupError("the mesh file " + opt.mesh + " (--mesh) does not exist");
+        run.units.setInput(20, fs::absolute(opt.mesh).lexically_normal().string());
+    }
+    run.units.setOutputDir(outputs.resultFolders.empty() ? outputs.outDir : outputs.resultFolders.front());
+    return limits;
+}
+
 }  // namespace
 
 int supervisorMain(int argc, char** argv) {
     if (argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
-        std::fputs(kUsage, stdout);
+        std::fputs(usage().c_str(), stdout);
         return 0;
     }
     Options opt;
@@ -266,59 +245,67 @@ int supervisorMain(int argc, char** argv) {
         opt = parseArguments(argc, argv);
     } catch (const SetupError& e) {
         if (*e.what()) std::fprintf(stderr, "miniaster: %s\n", e.what());
-        std::fputs(kUsage, stderr);
+        std::fputs(usage().c_str(), stderr);
         return 1;
     }
 
     RunState& run = RunState::current();
     run.checkOnly = opt.checkOnly;
-    run.subcellDegree = opt.subcellDegree;
-    const bool isExport = fs::path(opt.input).extension() == ".export";
+    run.runOptions = opt.runOptions;
     const std::string caseName = fs::path(opt.input).stem().string();
-    std::error_code ec;
-    fs::create_directories(opt.outDir, ec);
-    run.units.setOutputDir(opt.outDir);
-    Outputs outputs;
+    RunOutputs outputs;
+    gOutputs = &outputs;
+    outputs.outDir = fs::absolute(opt.outDir).lexically_normal().string();
     msg().info(banner());
 
+    // Setup, before the first command: a bad .export or input is logged in the .mess (when the
+    // output folder can hold one); an output that cannot be written stops the run at once.
+    RunLimits limits;
+    std::optional<std::string> setupFailure;
     try {
-        if (isExport) {
-            outputs = readExport(opt.input, opt, run);
-        } else {
-            if (!fs::exists(opt.input)) throw SetupError("the command file " + opt.input + " does not exist");
-            run.commFile = opt.input;
-        }
-        if (!opt.mesh.empty()) {
-            if (!fs::exists(opt.mesh)) throw SetupError("the mesh file " + opt.mesh + " (--mesh) does not exist");
-            run.units.setInput(20, opt.mesh);
-        }
-    } catch (const SetupError& e) {
+        limits = setUpRun(opt, run, outputs);
+    } catch (const std::exception& e) {  // SetupError, ExportError, UserError
+        setupFailure = e.what();
+    }
+    if (outputs.mess.empty()) outputs.mess = (fs::path(outputs.outDir) / (caseName + ".mess")).string();
+    if (outputs.resu.empty()) outputs.resu = (fs::path(outputs.outDir) / (caseName + ".resu")).string();
+    try {
+        prepareOutputs(outputs);
+        openMessageLog(outputs);
+    } catch (const UserError& e) {
+        if (setupFailure) std::fprintf(stderr, "miniaster: %s\n", setupFailure->c_str());
+        std::fprintf(stderr, "miniaster: %s; nothing was run\n", e.what());
+        return 1;
+    }
+    if (setupFailure) {
         run.commBaseName = fs::path(opt.input).filename().string();
-        run.failure = RunFailure{"ERROR", fmt::format("<F> <ERROR> {}", e.what())};
+        run.failure = RunFailure{"ERROR", fmt::format("<F> <ERROR> {}", *setupFailure)};
         msg().info("\n" + run.failure->paragraph + "\n");
     }
-    if (outputs.mess.empty()) outputs.mess = (fs::path(opt.outDir) / (caseName + ".mess")).string();
-    if (outputs.resu.empty()) outputs.resu = (fs::path(opt.outDir) / (caseName + ".resu")).string();
-
     if (!run.failure) {
         run.commBaseName = fs::path(run.commFile).filename().string();
+        std::string announced;
+        for (const auto& [name, value] : opt.runOptions)
+            if (const std::string line = RunOptionRegistry::instance().find(name)->announce(value); !line.empty())
+                announced += "\n  " + line;
+        if (limits.timeLimitSeconds || limits.memoryLimitMb)
+            announced += fmt::format("\n  limits      : {}{}",
+                                     limits.timeLimitSeconds ? fmt::format("time {:g} s (CPU) ", *limits.timeLimitSeconds) : "",
+                                     limits.memoryLimitMb ? fmt::format("memory {:g} MB (resident)", *limits.memoryLimitMb) : "");
         msg().infof("  command file: {}\n  message log : {}\n  result file : {}\n  memory      : {}{}{}", run.commFile,
                     outputs.mess, outputs.resu, mallocHugePagesState(),
-                    opt.checkOnly ? "\n  mode        : syntax check only (--check-syntax)" : "",
-                    opt.subcellDegree ? fmt::format("\n  X-FEM       : --subcell-quadrature {} (volume sub-cells "
-                                                    "integrated to degree {}, not code_aster's catalogue rules)",
-                                                    opt.subcellDegree, opt.subcellDegree)
-                                      : "");
+                    opt.checkOnly ? "\n  mode        : syntax check only (--check-syntax)" : "", announced);
         // The interpreter lives until the process ends: concepts may hold Python objects (FORMULE).
         py::initialize_interpreter();
-        installCrashHandler(outputs.mess);  // after Python, which installs its own handlers
+        installCrashHandler(outputs.messFd);  // after Python, which installs its own handlers
+        startRunGuard(limits, stopFromWatchdog);
         try {
             installPythonBuiltins();
             executeCommandFile(run);
         } catch (py::error_already_set& e) {
             run.fail("ERROR", "", 0, std::string("internal error of the supervisor: ") + e.what());
         } catch (const std::exception& e) {
-            run.fail("ERROR", "", 0, std::string("internal error of the supervisor: ") + e.what());
+            run.fail("ERROR", "", 0, unexpectedErrorCause(e));
         }
         // print() output still buffered.
         try {
@@ -327,6 +314,8 @@ int supervisorMain(int argc, char** argv) {
         }
         if (!run.failure && !run.finSeen) msg().alarm("SUPERVIS_2", "The command file ended without FIN().");
     }
+
+    stopRunGuard();
 
     // Summary, diagnostic, exit status.
     const auto& tests = testReport();
@@ -352,20 +341,8 @@ int supervisorMain(int argc, char** argv) {
     const std::string rule(60, '-');
     msg().info(fmt::format("\n{}\n--- DIAGNOSTIC JOB : {}\n{}", rule, diagnostic, rule));
 
-    try {
-        // On an error the result file is not written: its TEST lines would be incomplete. A result
-        // file of an earlier run of the same case is removed, so that it cannot be taken for this one.
-        if (!run.failure && !opt.checkOnly) {
-            writeFileAtomically(outputs.resu, msg().resuText());
-        } else if (run.failure && fs::is_regular_file(outputs.resu)) {
-            fs::remove(outputs.resu);
-            msg().info("  (removed the result file of an earlier run: " + outputs.resu + ")");
-        }
-        writeFileAtomically(outputs.mess, msg().messText());
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "miniaster: cannot write the outputs: %s\n", e.what());
-        return 1;
-    }
+    if (!finishOutputs(outputs, run.failure.has_value(), opt.checkOnly)) status = 1;
+    installCrashHandler(-1);  // the .mess is closed
     std::fflush(stdout);
     return status;
 }

@@ -48,7 +48,7 @@ add_test(NAME study.check_field
 # docs/xfem.md "Quadrature"): degree 2 keeps every exact answer of the originals (the rigid blocks of
 # ssnv511a-d, the uniform stresses with contact of ssnv511e-h, POST_ERREUR's quadratic integrands);
 # degree 1 keeps the rigid blocks and, on TRIA3, QUAD4 and TETRA4 parents, the uniform stresses with
-# contact (on HEXA8 it fails the patch test, with alarm XFEM_SUBCELL_RULE: tests/unit/xfem_commands.cpp).
+# contact (on HEXA8 it fails the patch test, with alarm XFEM_SUBCELL_RULE: tests/cli/xfem_commands.cpp).
 foreach(_name ${MINIASTER_ORIGINALS})
   set(_opt "")
   if(_name IN_LIST MINIASTER_ORIGINALS_INEXACT_VALE_CALC)

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Independent readers for the visualisation tests (tests/unit/visualisation_outputs.cpp).
+"""Independent readers for the visualisation tests (tests/cli/visualisation_outputs.cpp).
 
   visualisation_check.py vtu OUT.vtu RESULT.med FIELD...   VTK's reader against h5py's MED values:
                                                            every nodal field of the MED file, every

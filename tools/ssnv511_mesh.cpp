@@ -15,7 +15,7 @@
 
 #include "core/Error.hpp"
 #include "med_io/MedWriter.hpp"
-#include "mesh/Ssnv511Mesh.hpp"
+#include "scenes/Ssnv511Mesh.hpp"
 
 namespace {
 

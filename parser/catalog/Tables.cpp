@@ -88,8 +88,8 @@ void addTableCommands(Catalog& c) {
                         {R("VALE_REFE").many(), I("VALE_REFE_I").many(), TXM("VALE_REFE_K").many(),
                          R("PRECISION").def(1.0e-3)},
                         {exclus({"VALE_REFE", "VALE_REFE_I", "VALE_REFE_K"})}),
-                   bloc(whenPresent("VALE"), {R("PRECISION")}),
-                   bloc(whenPresent("VALE_I"), {R("PRECISION")}),
+                   bloc(whenPresent("VALE"), {R("PRECISION").def(1.0e-3)}),
+                   bloc(whenPresent("VALE_I"), {R("PRECISION").def(1.0e-3)}),
                    TXM("VERSION"),  // legacy, ignored
                    info()},
                   unsupported({"VALE_CALC_C", "VALE_REFE_C", "VALE_C"}, "complex values"),

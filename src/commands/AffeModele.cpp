@@ -9,7 +9,7 @@
 #include "commands/MechanicsKeywords.hpp"
 #include "core/Messages.hpp"
 #include "fe/Model.hpp"
-#include "fe/ShapeFunctions.hpp"
+#include "mesh/ShapeFunctions.hpp"
 #include "parser/CommandRegistry.hpp"
 
 namespace ma {
@@ -43,7 +43,7 @@ ConceptPtr affeModele(const KeywordSet& kw, CommandContext&) {
     int dim = 0;
     bool first = true;
     for (const auto& occ : kw.factor("AFFE")) {
-        if (occ.text("PHENOMENE", "MECANIQUE") != "MECANIQUE")
+        if (occ.text("PHENOMENE") != "MECANIQUE")
             throw NotImplemented(occ.pathOf("PHENOMENE") + "='" + occ.text("PHENOMENE") + "': only MECANIQUE");
         const Modelisation m = parseModelisation(occ);
         if (first) model->modelisation = m, first = false;

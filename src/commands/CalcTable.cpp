@@ -5,6 +5,7 @@
 #include "core/Error.hpp"
 #include "core/Function.hpp"
 #include "core/Messages.hpp"
+#include "commands/TableKeywords.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "post/TableOperations.hpp"
 
@@ -31,15 +32,7 @@ ConceptPtr calcTable(const KeywordSet& kw, CommandContext& ctx) {
         if (op == "EXTR") {
             extractColumns(*table, action.texts("NOM_PARA"));
         } else if (op == "FILTRE") {
-            RowFilter f;
-            f.column = action.text("NOM_PARA");
-            f.comparison = action.text("CRIT_COMP", "EQ");
-            if (action.has("VALE")) f.reals = action.reals("VALE");
-            if (action.has("VALE_I")) f.integers = action.integers("VALE_I");
-            if (action.has("VALE_K")) f.texts = action.texts("VALE_K");
-            if (action.has("VALE_C")) throw NotImplemented(action.pathOf("VALE_C") + ": complex tables are not supported");
-            f.relative = action.text("CRITERE", "RELATIF") == "RELATIF";
-            f.precision = action.real("PRECISION", 1.0e-3);
+            const RowFilter f = tables::rowFilter(action);
             try {
                 filterRows(*table, f);
             } catch (const UserError& e) {
@@ -50,7 +43,7 @@ ConceptPtr calcTable(const KeywordSet& kw, CommandContext& ctx) {
             auto other = action.object<Table>("TABLE");
             const std::vector<std::string> keys = action.has("NOM_PARA") ? action.texts("NOM_PARA") : std::vector<std::string>{};
             const std::string format = action.has("FORMAT_R") ? fortranToPrintf(action.text("FORMAT_R")) : std::string();
-            combineTables(*table, *other, keys, action.text("RESTREINT", "NON") == "OUI", format);
+            combineTables(*table, *other, keys, action.text("RESTREINT") == "OUI", format);
             title.insert(title.end(), other->title.begin(), other->title.end());
             title.push_back(fmt::format("MERGE avec labels=[{}]", fmt::join(keys, ", ")));
         } else if (op == "OPER") {
@@ -66,7 +59,7 @@ ConceptPtr calcTable(const KeywordSet& kw, CommandContext& ctx) {
         } else if (op == "SUPPRIME") {
             removeColumns(*table, action.texts("NOM_PARA"));
         } else if (op == "TRI") {
-            sortRows(*table, action.texts("NOM_PARA"), action.text("ORDRE", "CROISSANT") == "CROISSANT");
+            sortRows(*table, action.texts("NOM_PARA"), action.text("ORDRE") == "CROISSANT");
         } else if (op == "AJOUT_COLONNE") {
             std::vector<Cell> values;
             for (const auto& v : action.values("VALE")) values.push_back(toCell(v));

@@ -19,8 +19,8 @@ ConceptPtr creaChamp(const KeywordSet& kw, CommandContext&) {
     if (kw.has("NUME_ORDRE")) {
         step = &result->step(static_cast<int>(kw.integer("NUME_ORDRE")));
     } else if (kw.has("INST")) {
-        const bool relative = kw.text("CRITERE", "RELATIF") == "RELATIF";
-        step = &result->stepAtInst(kw.real("INST"), kw.real("PRECISION", 1e-6), relative);
+        const bool relative = kw.text("CRITERE") == "RELATIF";
+        step = &result->stepAtInst(kw.real("INST"), kw.real("PRECISION"), relative);
     } else {
         throw UserError("CREA_CHAMP: give NUME_ORDRE or INST");
     }

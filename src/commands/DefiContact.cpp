@@ -23,11 +23,11 @@ using contact::ContactAlgorithm;
 
 ConceptPtr defiContact(const KeywordSet& kw, CommandContext& ctx) {
     (void)ctx;
-    const std::string formulation = kw.text("FORMULATION", "DISCRETE");
+    const std::string formulation = kw.text("FORMULATION");
     if (formulation != "XFEM")
         throw NotImplemented(kw.pathOf("FORMULATION") + "='" + formulation +
                              "' is not supported by miniaster (only FORMULATION='XFEM')");
-    if (kw.text("FROTTEMENT", "SANS") != "SANS")
+    if (kw.text("FROTTEMENT") != "SANS")
         throw NotImplemented(kw.pathOf("FROTTEMENT") + "='" + kw.text("FROTTEMENT") +
                              "': friction is not supported by miniaster (frictionless contact only)");
     auto model = kw.object<Model>("MODELE");
@@ -43,7 +43,7 @@ ConceptPtr defiContact(const KeywordSet& kw, CommandContext& ctx) {
 
     auto def = std::make_shared<contact::ContactDefinition>();
     def->model = model;
-    def->maxContactIterations = static_cast<int>(kw.integer("ITER_CONT_MAXI", 30));
+    def->maxContactIterations = static_cast<int>(kw.integer("ITER_CONT_MAXI"));
 
     std::vector<std::string> ignored;
     auto ignore = [&](const KeywordSet& set, const std::string& key, const std::string& why) {
@@ -72,7 +72,7 @@ ConceptPtr defiContact(const KeywordSet& kw, CommandContext& ctx) {
         if (!seen.insert(zone.crackIndex).second)
             throw UserError(fmt::format("{}: interface {} already has a contact zone", z.pathOf("FISS_MAIT"),
                                         zone.crack->name));
-        const std::string algo = z.text("ALGO_CONT", "STANDARD");
+        const std::string algo = z.text("ALGO_CONT");
         if (algo == "PENALISATION") {
             zone.algorithm = ContactAlgorithm::Penalty;
             zone.penalty = z.real("COEF_PENA_CONT");
@@ -82,9 +82,9 @@ ConceptPtr defiContact(const KeywordSet& kw, CommandContext& ctx) {
         } else if (algo != "STANDARD") {
             throw NotImplemented(z.pathOf("ALGO_CONT") + "='" + algo + "' is not supported by miniaster");
         }
-        zone.initiallyActive = z.text("CONTACT_INIT", "NON") == "OUI";
-        zone.bilateral = z.text("GLISSIERE", "NON") == "OUI";
-        zone.integration.scheme = z.text("INTEGRATION", "GAUSS");
+        zone.initiallyActive = z.text("CONTACT_INIT") == "OUI";
+        zone.bilateral = z.text("GLISSIERE") == "OUI";
+        zone.integration.scheme = z.text("INTEGRATION");
         zone.integration.order = zone.integration.scheme == "NOEUD" ? 0 : static_cast<int>(z.integer("ORDRE_INT"));
         if (const std::string why = contact::missingRuleReason(xm->dim(), zone.integration); !why.empty())
             throw NotImplemented(fmt::format(

@@ -22,7 +22,7 @@ ConceptPtr defiFissXfem(const KeywordSet& kw, CommandContext& ctx) {
         auto model = kw.object<Model>("MODELE");  // legacy syntax: only the mesh is used
         mesh = model->mesh;
     }
-    const std::string type = kw.text("TYPE_DISCONTINUITE", "FISSURE");
+    const std::string type = kw.text("TYPE_DISCONTINUITE");
     if (type != "INTERFACE")
         throw NotImplemented(kw.pathOf("TYPE_DISCONTINUITE") + "='" + type +
                              "': miniaster models interfaces only (TYPE_DISCONTINUITE='INTERFACE')");

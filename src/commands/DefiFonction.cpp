@@ -22,10 +22,10 @@ ConceptPtr defiFonction(const KeywordSet& kw, CommandContext&) {
     for (size_t i = 1; i < f->x.size(); ++i)
         if (!(f->x[i] > f->x[i - 1]))
             throw UserError("DEFI_FONCTION: the abscissas of VALE must be strictly increasing");
-    if (kw.text("INTERPOL", "LIN") != "LIN")
+    if (kw.text("INTERPOL") != "LIN")
         throw NotImplemented("DEFI_FONCTION: INTERPOL other than 'LIN' is not supported by miniaster");
-    f->leftExtension = extension(kw.text("PROL_GAUCHE", "EXCLU"));
-    f->rightExtension = extension(kw.text("PROL_DROITE", "EXCLU"));
+    f->leftExtension = extension(kw.text("PROL_GAUCHE"));
+    f->rightExtension = extension(kw.text("PROL_DROITE"));
     msg().infof("    function of {} with {} points", f->parameter_[0], f->x.size());
     return f;
 }

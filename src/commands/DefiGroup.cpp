@@ -78,23 +78,25 @@ void createCellGroup(Mesh& mesh, const KeywordSet& occ, bool alarms) {
     } else if (occ.has("OPTION")) {
         const std::string option = occ.text("OPTION");
         if (option == "FACE_NORMALE") {
-            cells = cellsWithNormal(mesh, vector3(occ, "VECT_NORMALE"), occ.real("ANGL_PREC", 0.5),
-                                    occ.text("VERI_SIGNE", "OUI") == "OUI");
+            cells = cellsWithNormal(mesh, vector3(occ, "VECT_NORMALE"), occ.real("ANGL_PREC"),
+                                    occ.text("VERI_SIGNE") == "OUI");
         } else if (option == "BANDE") {
             cells = cellsInBand(mesh, vector3(occ, "POINT"), vector3(occ, "VECT_NORMALE"), occ.real("DIST"),
-                                occ.text("CRIT_NOEUD", "AU_MOINS_UN"));
+                                occ.text("CRIT_NOEUD"));
         } else {
             throw NotImplemented(occ.pathOf("OPTION") + "='" + option + "' is not supported");
         }
     } else {
         throw UserError(occ.path() + ": give TOUT, GROUP_MA, MAILLE, INTERSEC, UNION, DIFFE or OPTION");
     }
-    cells = filterCellType(mesh, cells, occ.text("TYPE_MAILLE", "TOUT"));
+    cells = filterCellType(mesh, cells, occ.text("TYPE_MAILLE"));
     store(mesh, mesh.cellGroups, name, std::move(cells), occ, alarms, "cell");
 }
 
 NodeCriterion nodeCriterion(const KeywordSet& occ) {
-    const std::string crit = occ.text("CRIT_NOEUD", "TOUS");
+    // CRIT_NOEUD (default TOUS) exists with GROUP_MA only: TOUT_GROUP_MA takes every node.
+    if (!occ.has("CRIT_NOEUD")) return NodeCriterion::All;
+    const std::string crit = occ.text("CRIT_NOEUD");
     if (crit == "SOMMET") return NodeCriterion::Vertices;
     if (crit == "MILIEU") return NodeCriterion::MidNodes;
     if (crit == "CENTRE") return NodeCriterion::Centres;
@@ -155,7 +157,7 @@ ConceptPtr defiGroup(const KeywordSet& kw, CommandContext& ctx) {
     auto mesh = kw.object<Mesh>("MAILLAGE");
     if (ctx.reused && ctx.reused != mesh)
         throw UserError("DEFI_GROUP: reuse= must name the mesh given by MAILLAGE");
-    const bool alarms = kw.text("ALARME", "OUI") == "OUI";
+    const bool alarms = kw.text("ALARME") == "OUI";
     auto destroy = [&](const char* keyword, GroupSet& groups, const char* kind) {
         for (const auto& occ : kw.factor(keyword))
             for (const auto& name : occ.texts("NOM")) {

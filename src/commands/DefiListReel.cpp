@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "core/Function.hpp"
+#include "core/MemoryLimit.hpp"
 #include "core/Messages.hpp"
 #include "parser/CommandRegistry.hpp"
 
@@ -27,6 +28,10 @@ ConceptPtr defiListReel(const KeywordSet& kw, CommandContext&) {
                     throw UserError(interval.pathOf("PAS") + ": the interval is not a whole number of steps");
             }
             if (steps <= 0) throw UserError(interval.pathOf("NOMBRE") + " must be positive");
+            checkAllocation(double(list->values.size() + size_t(steps)) * sizeof(double),
+                            fmt::format("{} ({} instants)", interval.pathOf(interval.has("NOMBRE") ? "NOMBRE" : "PAS"),
+                                        steps));
+            list->values.reserve(list->values.size() + size_t(steps));
             const double start = current;
             for (long long i = 1; i <= steps; ++i)
                 list->values.push_back(i == steps ? end : start + (end - start) * double(i) / double(steps));

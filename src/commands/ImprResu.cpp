@@ -22,8 +22,8 @@ std::vector<const ResultStep*> selectedResultSteps(const Result& result, const K
     if (occ.has("NUME_ORDRE")) {
         for (auto order : occ.integers("NUME_ORDRE")) steps.push_back(&result.step(int(order)));
     } else if (occ.has("INST")) {
-        const bool relative = occ.text("CRITERE", "RELATIF") == "RELATIF";
-        const double precision = occ.real("PRECISION", 1e-6);
+        const bool relative = occ.text("CRITERE") == "RELATIF";
+        const double precision = occ.real("PRECISION");
         for (double inst : occ.reals("INST")) steps.push_back(&result.stepAtInst(inst, precision, relative));
     } else {
         for (const auto& s : result.steps) steps.push_back(&s);
@@ -120,7 +120,7 @@ void printField(med::MedWriter& w, const ConceptPtr& field, const KeywordSet& oc
 }
 
 ConceptPtr imprResu(const KeywordSet& kw, CommandContext& ctx) {
-    const std::string format = kw.text("FORMAT", "MED");
+    const std::string format = kw.text("FORMAT");
     if (format == "GMSH") return imprResuGmsh(kw, ctx);
     if (format != "MED")
         throw NotImplemented("IMPR_RESU: FORMAT='" + format + "' is not supported; use FORMAT='MED' or 'GMSH'");
@@ -128,7 +128,7 @@ ConceptPtr imprResu(const KeywordSet& kw, CommandContext& ctx) {
         for (const char* k : {"TYPE_CHAM", "GROUP_MA", "MAILLE"})
             if (occ.has(k)) throw NotImplemented(occ.pathOf(k) + " is not supported by miniaster's MED output");
     if (!ctx.units) throw UserError("IMPR_RESU: no logical units are defined for this run");
-    const int unit = int(kw.integer("UNITE", 80));
+    const int unit = int(kw.integer("UNITE"));
     const std::string path = ctx.units->output(unit);
     auto& written = filesOfThisRun();
     const bool append = written.count(path) > 0;

@@ -231,9 +231,10 @@ ConceptPtr imprResuGmsh(const KeywordSet& kw, CommandContext& ctx) {
             throw NotImplemented(occ.pathOf("MAILLAGE") + ": FORMAT='GMSH' writes result fields (RESULTAT, CHAM_GD); "
                                                           "the mesh alone (gmsh's mesh format 1.0) is not written by "
                                                           "miniaster");
-        // TYPE_CHAM has no catalog default: the RESU keywords are shared with FORMAT='MED', which has none.
-        const ViewRequest request{occ.text("TYPE_CHAM", "SCALAIRE"), occ.has("NOM_CMP") ? occ.texts("NOM_CMP")
-                                                                                       : std::vector<std::string>{},
+        // TYPE_CHAM has no catalog default: the RESU keywords are shared with FORMAT='MED', which has
+        // none; code_aster's default for GMSH is 'SCALAIRE'.
+        const std::string type = occ.has("TYPE_CHAM") ? occ.text("TYPE_CHAM") : std::string("SCALAIRE");
+        const ViewRequest request{type, occ.has("NOM_CMP") ? occ.texts("NOM_CMP") : std::vector<std::string>{},
                                   version};
         std::vector<View> views;
         std::shared_ptr<const Mesh> mesh;

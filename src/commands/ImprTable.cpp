@@ -38,26 +38,13 @@ void appendToUnit(const std::string& path, const std::string& text) {
 
 ConceptPtr imprTable(const KeywordSet& kw, CommandContext& ctx) {
     auto table = kw.object<Table>("TABLE");
-    const std::string format = kw.text("FORMAT", "TABLEAU");
+    const std::string format = kw.text("FORMAT");
     if (format != "TABLEAU")
         throw NotImplemented(fmt::format("{}: FORMAT='{}' is not supported by miniaster (TABLEAU is)",
                                          kw.pathOf("FORMAT"), format));
 
-    // FILTRE / TRI act on a copy, as in code_aster.
+    // FILTRE and TRI are refused by the catalog (filter or sort with CALC_TABLE first).
     Table printed = *table;
-    for (const auto& f : kw.factor("FILTRE")) {
-        RowFilter filter;
-        filter.column = f.text("NOM_PARA");
-        filter.comparison = f.text("CRIT_COMP", "EQ");
-        if (f.has("VALE")) filter.reals = f.reals("VALE");
-        if (f.has("VALE_I")) filter.integers = f.integers("VALE_I");
-        if (f.has("VALE_K")) filter.texts = f.texts("VALE_K");
-        filter.relative = f.text("CRITERE", "RELATIF") == "RELATIF";
-        filter.precision = f.real("PRECISION", 1.0e-3);
-        filterRows(printed, filter);
-    }
-    for (const auto& t : kw.factor("TRI"))
-        sortRows(printed, t.texts("NOM_PARA"), t.text("ORDRE", "CROISSANT") == "CROISSANT");
     if (kw.has("TITRE")) printed.title = kw.texts("TITRE");
 
     TablePrintOptions options;
@@ -71,10 +58,10 @@ ConceptPtr imprTable(const KeywordSet& kw, CommandContext& ctx) {
             msg().alarm("TABLE0_7", fmt::format("IMPR_TABLE: columns {} are not in table {}; they are not printed.",
                                                 fmt::join(missing, ", "), table->name));
     }
-    options.realFormat = fortranToPrintf(kw.text("FORMAT_R", "E12.5"));
+    options.realFormat = fortranToPrintf(kw.text("FORMAT_R"));
     const std::string text = formatTable(printed, options);
 
-    const long long unit = kw.integer("UNITE", 8);
+    const long long unit = kw.integer("UNITE");
     if (unit == 8) {
         msg().result(text);
     } else {

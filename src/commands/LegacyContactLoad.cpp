@@ -11,7 +11,7 @@ namespace ma::mechanics {
 
 void readLegacyXfemContact(const KeywordSet& kw, MechanicalLoad& load) {
     const Model& model = *load.model;
-    load.xfemLinks = kw.text("LIAISON_XFEM", "NON") == "OUI";
+    load.xfemLinks = kw.has("LIAISON_XFEM") && kw.text("LIAISON_XFEM") == "OUI";
     const auto* xm = dynamic_cast<const xfem::XfemModel*>(model.enrichment.get());
     if (load.xfemLinks && !xm)
         throw UserError(fmt::format("{}='OUI': the model {} is not an X-FEM model (the X-FEM relations need the "

@@ -12,7 +12,7 @@ namespace ma {
 namespace {
 
 std::shared_ptr<Mesh> readMedMesh(const KeywordSet& kw, const std::string& path, int unit, std::string& meshName) {
-    const std::string nomMed = kw.text("NOM_MED", "");
+    const std::string nomMed = kw.has("NOM_MED") ? kw.text("NOM_MED") : std::string();  // "": the first mesh
     med::MeshReadReport report;
     auto mesh = med::readMesh(path, nomMed, &report);
     msg().infof("    mesh '{}' read from unit {} ({}), space dimension {}", report.meshName, unit, path,
@@ -34,17 +34,17 @@ std::shared_ptr<Mesh> readMailMesh(const std::string& path, int unit) {
 }
 
 ConceptPtr lireMaillage(const KeywordSet& kw, CommandContext& ctx) {
-    const std::string format = kw.text("FORMAT", "MED");
+    const std::string format = kw.text("FORMAT");
     if (format != "MED" && format != "ASTER")
         throw NotImplemented("LIRE_MAILLAGE: FORMAT='" + format + "' is not supported; convert the mesh to MED");
     if (!ctx.units) throw UserError("LIRE_MAILLAGE: no logical units are defined for this run");
-    const int unit = int(kw.integer("UNITE", 20));
+    const int unit = int(kw.integer("UNITE"));
     const std::string path = ctx.units->input(unit);
     std::string meshName = "MAILLAGE";
     auto mesh = format == "MED" ? readMedMesh(kw, path, unit, meshName) : readMailMesh(path, unit);
 
     bool check = true;
-    for (const auto& occ : kw.factor("VERI_MAIL")) check = occ.text("VERIF", "OUI") == "OUI";
+    for (const auto& occ : kw.factor("VERI_MAIL")) check = occ.text("VERIF") == "OUI";
     if (check)
         for (const auto& defect : meshDefects(*mesh)) msg().alarm("MODELISA_VERI_MAIL", "mesh " + path + ": " + defect);
 

@@ -44,10 +44,10 @@ ConceptPtr mecaStatique(const KeywordSet& kw, CommandContext& ctx) {
     linear.maxIterations = 0;
     linear.resiGlobMaxi = -1.0;
     linear.resiGlobRela = -1.0;
-    const bool stresses = kw.text("OPTION", "SIEF_ELGA") == "SIEF_ELGA";
+    const bool stresses = kw.text("OPTION") == "SIEF_ELGA";
     int order = 0;
     for (double inst : instants) {
-        std::fill(problem.u.begin(), problem.u.end(), 0.0);
+        problem.resetState();
         const auto report = problem.solveIncrement(inst, linear);
         if (inst == instants.back()) problem.releaseFactorisation();  // no solve follows: SIEF_ELGA without the factors
         ResultStep step;

@@ -91,24 +91,26 @@ inline SolverOptions solverOptions(const KeywordSet& kw, int info) {
     const auto& occ = kw.factor("SOLVEUR");
     if (occ.empty()) return o;
     const KeywordSet& s = occ.front();
-    o.method = s.text("METHODE", "MUMPS");
-    o.renum = s.text("RENUM", "AUTO");
-    if (o.method != "MUMPS") o.renum = "AUTO";  // MD/MDA/METIS/RCMK of the native solvers: Eigen uses AMD
-    o.nprec = static_cast<int>(s.integer("NPREC", 8));
-    o.typeResol = s.text("TYPE_RESOL", "AUTO");
-    o.acceleration = s.text("ACCELERATION", "AUTO");
+    o.method = s.text("METHODE");
+    // The keywords below exist (with their catalog defaults) only in the blocks of the methods
+    // that have them; SolverOptions keeps its own value for the others.
+    if (o.method == "MUMPS") o.renum = s.text("RENUM");  // MD/MDA/METIS/RCMK of the native solvers: Eigen uses AMD
+    if (s.has("NPREC")) o.nprec = static_cast<int>(s.integer("NPREC"));
+    if (s.has("TYPE_RESOL")) o.typeResol = s.text("TYPE_RESOL");
+    if (o.method == "MUMPS") o.acceleration = s.text("ACCELERATION");
     if (s.has("PCENT_PIVOT")) {
         const auto& v = s.values("PCENT_PIVOT")[0];
         o.pcentPivot = std::holds_alternative<long long>(v) ? int(std::get<long long>(v))
                                                             : int(std::get<double>(v));
     }
-    if (s.text("STOP_SINGULIER", "OUI") == "NON") o.nprec = -1;
+    if (s.has("STOP_SINGULIER") && s.text("STOP_SINGULIER") == "NON") o.nprec = -1;
     // MUMPS pre/post-processing with code_aster's meaning (docs/fe.md, "Linear solvers"):
     // PRETRAITEMENTS='SANS' -> no scaling of the matrix; POSTTRAITEMENTS='SANS' -> no iterative
     // refinement, 'MINI' -> one step, 'AUTO' -> at most 4 (code_aster's ICNTL(10)=4), 'FORCE' -> at
     // most 10; the solver stops earlier when a step no longer halves the backward error.
-    const std::string pre = s.text("PRETRAITEMENTS", "AUTO");
-    const std::string post = s.text("POSTTRAITEMENTS", "AUTO");
+    // MUMPS keywords; the other methods are scaled and refined as MUMPS is by default.
+    const std::string pre = s.has("PRETRAITEMENTS") ? s.text("PRETRAITEMENTS") : "AUTO";
+    const std::string post = s.has("POSTTRAITEMENTS") ? s.text("POSTTRAITEMENTS") : "AUTO";
     o.diagonalScaling = pre != "SANS";
     o.maxRefinementSteps = post == "SANS" ? 0 : post == "MINI" ? 1 : post == "FORCE" ? 10 : 4;
     msg().infof("    SOLVEUR: PRETRAITEMENTS='{}' -> {}; POSTTRAITEMENTS='{}' -> {}", pre,

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
@@ -11,11 +12,40 @@
 #include "fe/Quadrature.hpp"
 #include "fe/Model.hpp"
 #include "parser/CommandRegistry.hpp"
+#include "parser/RunOptions.hpp"
+#include "xfem/SubcellQuadrature.hpp"
 #include "xfem/XfemDirichlet.hpp"
 #include "xfem/XfemModel.hpp"
 
 namespace ma {
 namespace {
+
+// Expert run option `--subcell-quadrature RULE` (not a .comm keyword): 'catalogue' (0: the X-FEM
+// sub-cell rules of code_aster's element catalogues) or a polynomial degree 1..kMaxSubcellDegree
+// of the volume sub-cell rules. nullopt: not a rule.
+std::optional<int> subcellDegreeOf(const std::string& rule) {
+    if (rule == "catalogue") return 0;
+    if (rule.size() == 1 && rule[0] >= '1' && rule[0] <= '0' + xfem::kMaxSubcellDegree) return rule[0] - '0';
+    return std::nullopt;
+}
+
+const RunOptionRegistration subcellQuadratureOption(RunOption{
+    "subcell-quadrature", "RULE",
+    "--subcell-quadrature (expert option, not a code_aster keyword): RULE = catalogue (default: the X-FEM\n"
+    "sub-cell rules of code_aster's element catalogues) or a degree 1..6 (every volume sub-cell uses the\n"
+    "lowest rule exact for that polynomial degree).",
+    [](const std::string& rule) {
+        return subcellDegreeOf(rule) ? std::string()
+                                     : fmt::format("'{}' is not a rule (catalogue, or a polynomial degree 1..{})", rule,
+                                                   xfem::kMaxSubcellDegree);
+    },
+    [](const std::string& rule) {
+        const int degree = *subcellDegreeOf(rule);
+        return degree ? fmt::format("X-FEM       : --subcell-quadrature {} (volume sub-cells integrated to degree {}, "
+                                    "not code_aster's catalogue rules)",
+                                    degree, degree)
+                      : std::string();
+    }});
 
 // Which rule each kind of sub-cell uses, and whether it is the catalogue's or the run option's, so
 // that a .mess always tells how the X-FEM elements were integrated.
@@ -89,7 +119,7 @@ ConceptPtr modiModeleXfem(const KeywordSet& kw, CommandContext& ctx) {
                         " is already an X-FEM model; give the classical model made by AFFE_MODELE");
     std::vector<std::shared_ptr<const xfem::Crack>> cracks;
     for (const auto& c : kw.objects<xfem::Crack>("FISSURE")) cracks.push_back(c);
-    const std::string contact = kw.text("CONTACT", "SANS");
+    const std::string contact = kw.text("CONTACT");
     const xfem::XfemContact mode = contact == "SANS" ? xfem::XfemContact::None : xfem::XfemContact::Standard;
     if (contact != "SANS" && contact != "STANDARD" && contact != "P1P1" && contact != "OUI")
         throw NotImplemented(kw.pathOf("CONTACT") + "='" + contact + "' is not supported (SANS, STANDARD)");
@@ -100,10 +130,12 @@ ConceptPtr modiModeleXfem(const KeywordSet& kw, CommandContext& ctx) {
     // region from the discrete space and breaks the exact rigid-block answer (5e-13 at a fraction
     // of 3e-17, interfaces 1e-4 h off a node row near a junction; docs/xfem.md). So 'AUTO'/'FORCE'
     // only drop domains whose linear size is round-off of the cell's (1e-15); 'SANS' keeps 1e-4.
-    const double criterion = kw.text("PRETRAITEMENTS", "AUTO") == "SANS" ? 1e-4 : 1e-15;
+    const double criterion = kw.text("PRETRAITEMENTS") == "SANS" ? 1e-4 : 1e-15;
 
     auto out = std::make_shared<Model>(*in);
-    auto xm = std::make_shared<xfem::XfemModel>(*out, cracks, mode, criterion, ctx.subcellDegree);
+    const auto rule = ctx.runOptions.find("subcell-quadrature");
+    const int degree = rule == ctx.runOptions.end() ? 0 : *subcellDegreeOf(rule->second);
+    auto xm = std::make_shared<xfem::XfemModel>(*out, cracks, mode, criterion, degree);
     out->enrichment = xm;
 
     std::map<std::pair<int, int>, int> types;  // (cracks seen, slots) -> elements

@@ -43,7 +43,7 @@ ConceptPtr postErreur(const KeywordSet& kw, CommandContext&) {
     } else if (option == "ENER_RELA") {
         auto field = std::dynamic_pointer_cast<GaussField>(kw.rawObject("CHAM_GD"));
         if (!field) throw UserError(kw.pathOf("CHAM_GD") + ": a stress field at Gauss points (ELGA_SIEF_R) is expected");
-        const std::string deformation = kw.text("DEFORMATION", "PETIT");
+        const std::string deformation = kw.text("DEFORMATION");
         if (deformation != "PETIT")
             throw NotImplemented(kw.pathOf("DEFORMATION") + ": only DEFORMATION='PETIT' is supported");
         auto material = kw.object<MaterialField>("CHAM_MATER");

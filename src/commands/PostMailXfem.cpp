@@ -17,11 +17,11 @@ ConceptPtr postMailXfem(const KeywordSet& kw, CommandContext&) {
     const auto* xm = dynamic_cast<const xfem::XfemModel*>(model->enrichment.get());
     if (!xm) throw UserError(kw.pathOf("MODELE") + ": " + model->name + " is not an X-FEM model (MODI_MODELE_XFEM)");
     xfem::VisualisationNames names;
-    names.nodeX = kw.text("PREF_NOEUD_X", "NX");
-    names.nodeMinus = kw.text("PREF_NOEUD_M", "NM");
-    names.nodePlus = kw.text("PREF_NOEUD_P", "NP");
-    names.cellX = kw.text("PREF_MAILLE_X", "MX");
-    names.crackGroup = kw.text("PREF_GROUP_CO", "NFISSU");
+    names.nodeX = kw.text("PREF_NOEUD_X");
+    names.nodeMinus = kw.text("PREF_NOEUD_M");
+    names.nodePlus = kw.text("PREF_NOEUD_P");
+    names.cellX = kw.text("PREF_MAILLE_X");
+    names.crackGroup = kw.text("PREF_GROUP_CO");
     auto visu = xfem::buildVisualisation(*model, *xm, names);
     const Mesh& m = *visu.mesh;
     int copiedCells = 0, copiedNodes = 0;

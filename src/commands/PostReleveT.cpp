@@ -18,8 +18,8 @@ namespace {
 // ascending when none is given).
 std::vector<const ResultStep*> selectSteps(const KeywordSet& a, const Result& result) {
     std::vector<const ResultStep*> out;
-    const bool relative = a.text("CRITERE", "RELATIF") == "RELATIF";
-    const double precision = a.real("PRECISION", 1.0e-6);
+    const bool relative = a.text("CRITERE") == "RELATIF";
+    const double precision = a.real("PRECISION");
     auto byInst = [&](const std::vector<double>& insts) {
         for (double t : insts) out.push_back(&result.stepAtInst(t, precision, relative));
     };
@@ -48,7 +48,7 @@ ConceptPtr postReleveT(const KeywordSet& kw, CommandContext& ctx) {
                                              a.pathOf("OPERATION")));
         for (const char* k : {"INVARIANT", "ELEM_PRINCIPAUX", "RESULTANTE", "MOMENT", "GROUP_MA", "MAILLE", "CHEMIN"})
             if (a.has(k)) throw NotImplemented(a.pathOf(k) + " is not supported by miniaster");
-        if (a.text("REPERE", "GLOBAL") != "GLOBAL")
+        if (a.text("REPERE") != "GLOBAL")
             throw NotImplemented(a.pathOf("REPERE") + ": only REPERE='GLOBAL' is supported by miniaster");
         NodalExtraction x;
         x.title = a.text("INTITULE");
@@ -66,7 +66,7 @@ ConceptPtr postReleveT(const KeywordSet& kw, CommandContext& ctx) {
             if (!field) throw NotImplemented(a.pathOf("CHAM_GD") + ": only nodal fields (cham_no) are supported");
             x.field = field;
         }
-        x.allComponents = a.text("TOUT_CMP", "") == "OUI";
+        x.allComponents = a.has("TOUT_CMP");
         if (!x.allComponents) {
             if (!a.has("NOM_CMP")) throw UserError(a.path() + ": give TOUT_CMP='OUI' or NOM_CMP");
             x.components = a.texts("NOM_CMP");

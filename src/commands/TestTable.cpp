@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "core/Error.hpp"
+#include "commands/TableKeywords.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "post/TestCheck.hpp"
 
@@ -41,17 +42,14 @@ ConceptPtr testTable(const KeywordSet& kw, CommandContext& ctx) {
     TestTableRequest rq;
     rq.tableName = table->name;
     rq.column = kw.text("NOM_PARA");
-    rq.typeTest = kw.text("TYPE_TEST", "");
+    if (kw.has("TYPE_TEST")) rq.typeTest = kw.text("TYPE_TEST");
     for (const auto& f : kw.factor("FILTRE")) {
-        TestFilter filter;
-        filter.column = f.text("NOM_PARA");
-        filter.comparison = f.text("CRIT_COMP", "EQ");
-        if (f.has("VALE_C")) throw NotImplemented(f.pathOf("VALE_C") + ": complex tables are not supported");
-        if (f.has("VALE")) filter.value = f.real("VALE");
-        else if (f.has("VALE_I")) filter.value = f.integer("VALE_I");
-        else if (f.has("VALE_K")) filter.value = f.text("VALE_K");
-        filter.relative = f.text("CRITERE", "RELATIF") == "RELATIF";
-        filter.precision = f.real("PRECISION", 1.0e-3);
+        // TEST_TABLE's FILTRE takes one value (catalog), compared with Fortran semantics.
+        const RowFilter r = tables::rowFilter(f);
+        TestFilter filter{r.column, r.comparison, {}, r.relative, r.precision};
+        if (!r.reals.empty()) filter.value = r.reals.front();
+        else if (!r.integers.empty()) filter.value = r.integers.front();
+        else if (!r.texts.empty()) filter.value = r.texts.front();
         rq.filters.push_back(std::move(filter));
     }
 
@@ -76,10 +74,12 @@ ConceptPtr testTable(const KeywordSet& kw, CommandContext& ctx) {
         throw UserError("VALE_REFE is given without REFERENCE (ANALYTIQUE, SOURCE_EXTERNE, AUTRE_ASTER, NON_DEFINI)");
     if (kw.has("ORDRE_GRANDEUR")) rq.orderOfMagnitude = kw.real("ORDRE_GRANDEUR");
     if (kw.has("LEGENDE")) rq.legend = kw.text("LEGENDE");
-    rq.relative = kw.text("CRITERE", "RELATIF") == "RELATIF";
-    rq.absoluteValues = kw.text("VALE_ABS", "NON") == "OUI";
-    rq.machineTolerance = kw.real("TOLE_MACHINE", 1.0e-6);
-    rq.precision = kw.real("PRECISION", 1.0e-3);
+    rq.relative = kw.text("CRITERE") == "RELATIF";
+    rq.absoluteValues = kw.text("VALE_ABS") == "OUI";
+    rq.machineTolerance = kw.real("TOLE_MACHINE");
+    // PRECISION exists (default 1e-3) with REFERENCE or the legacy VALE / VALE_I only: a
+    // non-regression check alone uses TOLE_MACHINE.
+    if (kw.has("PRECISION")) rq.precision = kw.real("PRECISION");
     rq.where = fmt::format("TEST_TABLE ({}line {})",
                            ctx.commFile.empty() ? "" : std::filesystem::path(ctx.commFile).filename().string() + " ",
                            ctx.line);

@@ -142,6 +142,10 @@ std::shared_ptr<ContactTerms> attachContact(MechanicalProblem& problem, const Ma
 
 namespace {
 
+// COEF_PENA_CONT x facet size / E beyond which the penalised equations dominate the elastic ones
+// by more digits than a Newton residual can resolve.
+constexpr double kPenaltyRoundOffRatio = 1e12;
+
 // Points named in a "contact did not converge" error (the others are counted).
 constexpr int kListedPoints = 10;
 
@@ -185,7 +189,7 @@ ContactIncrementReport solveIncrementWithContact(MechanicalProblem& problem, Con
     const int maxIter = terms.definition().maxContactIterations;
     ActiveSetHistory history(terms.active());
     for (int it = 1; it <= maxIter; ++it) {
-        const auto before = terms.inspect(problem.u);
+        const auto before = terms.inspect(problem.state());
         msg().infof("    INST {:g} contact iteration {}: {} active contact points of {}", inst, it, before.active,
                     before.points);
         IncrementReport report;
@@ -194,7 +198,13 @@ ContactIncrementReport solveIncrementWithContact(MechanicalProblem& problem, Con
         } catch (const NumericalError& e) {
             if (before.active > 0) {
                 const std::string hint = penaltySingularHint(terms);
-                if (hint.empty() || std::string(e.what()).find("singular system") == std::string::npos) throw;
+                // A penalty far above the stiffness shows as a singular system or as a Newton loop that
+                // cannot reduce its residual below the round-off of the penalised terms.
+                const std::string what = e.what();
+                const bool singular = what.find("singular system") != std::string::npos;
+                const bool stalled = what.find("Newton did not converge") != std::string::npos &&
+                                     penaltyStrength(terms).second > kPenaltyRoundOffRatio;
+                if (hint.empty() || (!singular && !stalled)) throw;
                 throw NumericalError(fmt::format("{}\n{}", e.what(), hint));
             }
             throw NumericalError(fmt::format("{}\nNo contact point is active (CONTACT_INIT='NON'): blocks held only by the "
@@ -204,7 +214,7 @@ ContactIncrementReport solveIncrementWithContact(MechanicalProblem& problem, Con
         }
         out.newtonIterations += report.iterations;
         out.lastNewton = report;
-        const StatusReport st = terms.updateStatus(problem.u);
+        const StatusReport st = terms.updateStatus(problem.state());
         out.contactIterations = it;
         out.last = st;
         const ActiveSetHistory::Step step = history.record(terms.active());
@@ -218,7 +228,7 @@ ContactIncrementReport solveIncrementWithContact(MechanicalProblem& problem, Con
                 "(the loop would cycle between them whatever ITER_CONT_MAXI); {} active points of {}, contact "
                 "residual {:.3e}.{}",
                 inst, it, step.repeats == 0 ? std::string("it started from") : fmt::format("after iteration {}", step.repeats),
-                st.active, st.points, st.contactResidual, history.flippingPoints(terms, problem.u, kListedPoints)));
+                st.active, st.points, st.contactResidual, history.flippingPoints(terms, problem.state(), kListedPoints)));
         if (st.changed == 0) {
             bool penalty = false;
             for (const auto& z : terms.definition().zones) penalty = penalty || z.algorithm == ContactAlgorithm::Penalty;
@@ -233,14 +243,14 @@ ContactIncrementReport solveIncrementWithContact(MechanicalProblem& problem, Con
     std::string message = fmt::format("contact did not converge at INST {} in {} contact iterations (ITER_CONT_MAXI): "
                                       "{} status change(s) at the last one, {} active points, contact residual {:.3e}.{}",
                                       inst, maxIter, out.last.changed, out.last.active, out.last.contactResidual,
-                                      history.flippingPoints(terms, problem.u, kListedPoints));
+                                      history.flippingPoints(terms, problem.state(), kListedPoints));
     // With a huge penalty the interpenetration of the active points, pressure / COEF_PENA_CONT, can
     // sink below the round-off of the displacements: their gaps then change sign by round-off and the
     // statuses cannot settle (measured: TRIA3 N = 41 at COEF_PENA_CONT = 1e24, p/k = 2e-18 m against
     // displacements of 0.16 m).
     const auto [kappa, ratio] = penaltyStrength(terms);
     double umax = 0.0;
-    for (double v : problem.u) umax = std::max(umax, std::abs(v));
+    for (double v : problem.state()) umax = std::max(umax, std::abs(v));
     if (kappa > 0.0 && out.last.maxPressure / kappa < 1e-12 * umax)
         message += fmt::format("\nPossible cause: ALGO_CONT='PENALISATION' with COEF_PENA_CONT up to {:.3e} "
                                "(COEF_PENA_CONT x facet size / E up to {:.1e}): the interpenetration of the active "

@@ -10,17 +10,17 @@
 #include <utility>
 
 #include "core/Error.hpp"
+#include "core/Vec3.hpp"
+#include "fe/ElasticityKernels.hpp"
 #include "fe/ElementKinematics.hpp"
 #include "fe/Material.hpp"
 #include "fe/Quadrature.hpp"
-#include "fe/ShapeFunctions.hpp"
+#include "mesh/ShapeFunctions.hpp"
 #include "xfem/XfemModel.hpp"
 
 namespace ma::contact {
 
 namespace {
-
-using Vec = std::array<double, 3>;
 
 // Rule of the facets of a zone (ZONE/INTEGRATION, ORDRE_INT; DEFI_CONTACT has refused the schemes
 // without a family). Whatever the rule, the point terms are consistent (docs/contact.md).
@@ -32,7 +32,7 @@ const QuadratureRule& facetRule(int dim, const ContactIntegration& integration) 
 }
 
 // Weights of a point of the reference facet on its vertices (SEG2 on [-1,1], TRIA3 unit triangle).
-std::array<double, 3> facetBarycentric(int dim, const Vec& xi) {
+std::array<double, 3> facetBarycentric(int dim, const Vec3& xi) {
     if (dim == 2) return {0.5 * (1.0 - xi[0]), 0.5 * (1.0 + xi[0]), 0.0};
     return {1.0 - xi[0] - xi[1], xi[0], xi[1]};
 }
@@ -40,16 +40,16 @@ std::array<double, 3> facetBarycentric(int dim, const Vec& xi) {
 // Unit gradient of the level set of the facet's interface at a point of the parent cell (nodal
 // values of the cut, physical shape-function gradients at the point), oriented like the facet's
 // geometric normal (from - to +); the geometric normal when the gradient vanishes.
-Vec levelSetNormal(const xfem::CellCut& cut, const ContactFacet& facet, int nodeCount, const std::vector<double>& gradN) {
+Vec3 levelSetNormal(const xfem::CellCut& cut, const ContactFacet& facet, int nodeCount, const std::vector<double>& gradN) {
     const auto it = std::find(cut.cracks.begin(), cut.cracks.end(), facet.crack);
     if (it == cut.cracks.end()) return facet.normal;
     const size_t j = static_cast<size_t>(it - cut.cracks.begin());
-    Vec g{};
+    Vec3 g{};
     for (int a = 0; a < nodeCount; ++a)
         for (int c = 0; c < 3; ++c) g[c] += cut.points[a].lsn[j] * gradN[size_t(a) * 3 + c];
-    const double len = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    const double len = norm(g);
     if (!(len > 0.0)) return facet.normal;
-    const double orient = g[0] * facet.normal[0] + g[1] * facet.normal[1] + g[2] * facet.normal[2];
+    const double orient = dot(g, facet.normal);
     for (auto& v : g) v *= (orient < 0.0 ? -1.0 : 1.0) / len;
     return g;
 }
@@ -87,6 +87,91 @@ private:
     std::map<std::pair<int, int>, std::vector<std::pair<size_t, Key>>> byFirstDof_;
 };
 
+// The rule of a facet's points: its zone's, unless that rule has a negative weight or is too weak
+// for the traces of the parent shape functions on the facet (counted in `shortfall`).
+const QuadratureRule* facetPointRule(const Mesh& mesh, int dim, const ContactFacet& facet,
+                                     const ContactIntegration& integration, RuleShortfall& shortfall) {
+    const QuadratureRule* rule = &facetRule(dim, integration);
+    ++shortfall.facets;
+    shortfall.ruleDegree = rule->degree;
+    if (!positiveWeights(*rule)) {
+        // A point of negative weight would make the stabilisation indefinite and its status
+        // decision a non-descent (ssnv513g with FPG4: MUMPS negative pivot, the active set cycled):
+        // the lowest positive rule of at least the zone's degree instead (alarm CONTACT_INTEGRATION).
+        shortfall.negativeWeight = true;
+        shortfall.negativeWeightOrder = gaussOrderFor(dim, rule->degree);
+        rule = &facetRule(dim, ContactIntegration{"GAUSS", shortfall.negativeWeightOrder});
+    }
+    int traceDegree = 1;
+    for (const FacetSide* side : {&facet.minus, &facet.plus})
+        traceDegree = std::max(traceDegree, facetTraceDegree(mesh.cellTypes[size_t(side->cell)], side->ref));
+    if (traceDegree > rule->degree) {
+        // The zone's rule would integrate g(v) only approximately on this facet and lose the
+        // solutions the elements represent exactly (ssnv511g with the vertex rule: energy error
+        // 5.8e-4): the facet takes the lowest Gauss rule exact for its traces instead, announced by
+        // the alarm CONTACT_INTEGRATION (ContactLoop).
+        const int order = gaussOrderFor(dim, traceDegree);
+        ++shortfall.replaced;
+        shortfall.traceDegree = std::max(shortfall.traceDegree, traceDegree);
+        shortfall.replacementOrder = std::max(shortfall.replacementOrder, order);
+        rule = &facetRule(dim, ContactIntegration{"GAUSS", order});
+    }
+    return rule;
+}
+
+// Gap and normal-stress coefficients of side s (0: -, 1: +) of a contact point at facet point
+// `bary`; the - side also gives the normal nv (the level-set gradient of the facet's interface).
+void addSideTerms(const xfem::XfemModel& xm, const Model& model, const DofNumbering& numbering,
+                  const MaterialField& material, const ContactFacet& facet, int s, const std::array<double, 3>& bary,
+                  double wMinus, ElementIntegration& ei, PointGeometry& geo, Vec3& nv, ContactPoint& cp) {
+    const Mesh& mesh = *model.mesh;
+    const int dim = model.dim;
+    const FacetSide& side = s == 0 ? facet.minus : facet.plus;
+    const double sign = s == 0 ? -1.0 : 1.0;
+    const double weight = s == 0 ? wMinus : 1.0 - wMinus;
+    const auto* cut = xm.cut(side.cell);
+    Vec3 ref{};
+    for (int v = 0; v < dim; ++v)
+        for (int j = 0; j < 3; ++j) ref[j] += bary[v] * side.ref[v][j];
+    const auto nodes = mesh.cellNodes(side.cell);
+    const int n = static_cast<int>(nodes.size());
+    ei = ElementIntegration{};
+    ei.cell = side.cell;
+    ei.nodeCount = n;
+    ei.refPoints = {ref};
+    ei.refWeights = {1.0};
+    ei.pointSubcell = {side.subcell};
+    ei.slots.assign(n, 1);
+    computePointGeometry(mesh, side.cell, dim, false, ei, geo);
+    if (s == 0) nv = levelSetNormal(*cut, facet, n, geo.gradN);
+    const Material& mat = material.at(side.cell);
+    const IsotropicLaw law = IsotropicLaw::from(mat, model.modelisation, mat.name);
+    for (int a = 0; a < n; ++a) {
+        const double Na = geo.N[a];
+        const double* g = &geo.gradN[size_t(a) * 3];
+        const double dn = g[0] * nv[0] + g[1] * nv[1] + g[2] * nv[2];
+        const int slots = 1 + xm.activeSlots(nodes[a]);
+        for (int k = 0; k < slots; ++k) {
+            const double psi = k == 0 ? 1.0 : xm.psi(nodes[a], k, *cut, side.subcell);
+            if (psi == 0.0) continue;
+            for (int c = 0; c < dim; ++c) {
+                const int d = numbering.dof(nodes[a], k, c);
+                if (d < 0)
+                    throw std::logic_error(fmt::format("contact: node {} has no slot {}", mesh.nodeNames[nodes[a]], k));
+                auto it = std::find(cp.dofs.begin(), cp.dofs.end(), d);
+                size_t i = static_cast<size_t>(it - cp.dofs.begin());
+                if (it == cp.dofs.end()) {
+                    cp.dofs.push_back(d);
+                    cp.gap.push_back(0.0);
+                    cp.stress.push_back(0.0);
+                }
+                cp.gap[i] += sign * psi * Na * nv[c];
+                cp.stress[i] += weight * psi * (law.lambdaEff * g[c] + 2.0 * law.mu * nv[c] * dn);
+            }
+        }
+    }
+}
+
 }  // namespace
 
 ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField& material,
@@ -108,32 +193,7 @@ ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField
         const ContactFacet& facet = facets_[f];
         const int zone = definition_->zoneOfCrack(facet.crack);
         if (zone < 0) continue;
-        const QuadratureRule* rule = &facetRule(dim, definition_->zones[zone].integration);
-        RuleShortfall& shortfall = shortfalls_[zone];
-        ++shortfall.facets;
-        shortfall.ruleDegree = rule->degree;
-        if (!positiveWeights(*rule)) {
-            // A point of negative weight would make the stabilisation indefinite and its status
-            // decision a non-descent (ssnv513g with FPG4: MUMPS negative pivot, the active set cycled):
-            // the lowest positive rule of at least the zone's degree instead (alarm CONTACT_INTEGRATION).
-            shortfall.negativeWeight = true;
-            shortfall.negativeWeightOrder = gaussOrderFor(dim, rule->degree);
-            rule = &facetRule(dim, ContactIntegration{"GAUSS", shortfall.negativeWeightOrder});
-        }
-        int traceDegree = 1;
-        for (const FacetSide* side : {&facet.minus, &facet.plus})
-            traceDegree = std::max(traceDegree, facetTraceDegree(mesh.cellTypes[size_t(side->cell)], side->ref));
-        if (traceDegree > rule->degree) {
-            // The zone's rule would integrate g(v) only approximately on this facet and lose the
-            // solutions the elements represent exactly (ssnv511g with the vertex rule: energy error
-            // 5.8e-4): the facet takes the lowest Gauss rule exact for its traces instead, announced by
-            // the alarm CONTACT_INTEGRATION (ContactLoop).
-            const int order = gaussOrderFor(dim, traceDegree);
-            ++shortfall.replaced;
-            shortfall.traceDegree = std::max(shortfall.traceDegree, traceDegree);
-            shortfall.replacementOrder = std::max(shortfall.replacementOrder, order);
-            rule = &facetRule(dim, ContactIntegration{"GAUSS", order});
-        }
+        const QuadratureRule* rule = facetPointRule(mesh, dim, facet, definition_->zones[zone].integration, shortfalls_[zone]);
         // Nitsche parameter on the stiffest normal response of the two sides, the P-wave modulus
         // lambda + 2 mu (E (1 - nu) / ((1 + nu)(1 - 2 nu)) in 3D / D_PLAN): sigma_n(v) is bounded by it,
         // not by E. With E the symmetric Nitsche matrix lost positive definiteness near
@@ -161,53 +221,8 @@ ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField
             // from the - side's parent; the facet's own vertices can be off the interface by CellCut's
             // merge tolerance (1e-9 h), which tilts a sliver facet (length 1e-5 h) by 1e-5 rad: then
             // the exact uniform stress has a shear on it and frictionless contact is no longer exact.
-            Vec nv = facet.normal;
-            for (int s = 0; s < 2; ++s) {
-                const FacetSide& side = s == 0 ? facet.minus : facet.plus;
-                const double sign = s == 0 ? -1.0 : 1.0;
-                const double weight = s == 0 ? wMinus : 1.0 - wMinus;
-                const auto* cut = xm.cut(side.cell);
-                Vec ref{};
-                for (int v = 0; v < dim; ++v)
-                    for (int j = 0; j < 3; ++j) ref[j] += bary[v] * side.ref[v][j];
-                const auto nodes = mesh.cellNodes(side.cell);
-                const int n = static_cast<int>(nodes.size());
-                ei = ElementIntegration{};
-                ei.cell = side.cell;
-                ei.nodeCount = n;
-                ei.refPoints = {ref};
-                ei.refWeights = {1.0};
-                ei.pointSubcell = {side.subcell};
-                ei.slots.assign(n, 1);
-                computePointGeometry(mesh, side.cell, dim, false, ei, geo);
-                if (s == 0) nv = levelSetNormal(*cut, facet, n, geo.gradN);
-                const Material& mat = material.at(side.cell);
-                const IsotropicLaw law = IsotropicLaw::from(mat, model.modelisation, mat.name);
-                for (int a = 0; a < n; ++a) {
-                    const double Na = geo.N[a];
-                    const double* g = &geo.gradN[size_t(a) * 3];
-                    const double dn = g[0] * nv[0] + g[1] * nv[1] + g[2] * nv[2];
-                    const int slots = 1 + xm.activeSlots(nodes[a]);
-                    for (int k = 0; k < slots; ++k) {
-                        const double psi = k == 0 ? 1.0 : xm.psi(nodes[a], k, *cut, side.subcell);
-                        if (psi == 0.0) continue;
-                        for (int c = 0; c < dim; ++c) {
-                            const int d = numbering.dof(nodes[a], k, c);
-                            if (d < 0)
-                                throw std::logic_error(fmt::format("contact: node {} has no slot {}", mesh.nodeNames[nodes[a]], k));
-                            auto it = std::find(cp.dofs.begin(), cp.dofs.end(), d);
-                            size_t i = static_cast<size_t>(it - cp.dofs.begin());
-                            if (it == cp.dofs.end()) {
-                                cp.dofs.push_back(d);
-                                cp.gap.push_back(0.0);
-                                cp.stress.push_back(0.0);
-                            }
-                            cp.gap[i] += sign * psi * Na * nv[c];
-                            cp.stress[i] += weight * psi * (law.lambdaEff * g[c] + 2.0 * law.mu * nv[c] * dn);
-                        }
-                    }
-                }
-            }
+            Vec3 nv = facet.normal;
+            for (int s = 0; s < 2; ++s) addSideTerms(xm, model, numbering, material, facet, s, bary, wMinus, ei, geo, nv, cp);
             if (definition_->zones[zone].algorithm == ContactAlgorithm::Penalty) {
                 cp.scale = youngMax;
                 if (ContactPoint* same = penaltyPoints.find(cp, points_)) {

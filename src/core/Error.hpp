@@ -24,4 +24,11 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// A bug of miniaster, not of the input: e.g. a command reads a keyword that the call does not
+// hold and the catalog gives no default for. Reported as an internal error naming the command.
+class InternalError : public std::logic_error {
+public:
+    using std::logic_error::logic_error;
+};
+
 }  // namespace ma

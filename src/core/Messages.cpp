@@ -1,5 +1,8 @@
 #include "core/Messages.hpp"
 
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
 
 namespace ma {
@@ -9,9 +12,34 @@ Messages& Messages::instance() {
     return m;
 }
 
+void Messages::write(const std::string& text) {
+    if (fd_ < 0 || streamError_) return;
+    const char* data = text.data();
+    size_t left = text.size();
+    while (left > 0) {
+        const ssize_t n = ::write(fd_, data, left);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            streamError_ = n < 0 ? errno : ENOSPC;
+            return;
+        }
+        data += n;
+        left -= size_t(n);
+    }
+}
+
+void Messages::streamTo(int fd) {
+    std::lock_guard lock(mutex_);
+    fd_ = fd;
+    write(mess_);
+}
+
 void Messages::info(const std::string& text) {
+    std::lock_guard lock(mutex_);
+    const size_t from = mess_.size();
     mess_ += text;
     if (text.empty() || text.back() != '\n') mess_ += '\n';
+    write(mess_.substr(from));
     if (echo_) {
         std::fwrite(text.data(), 1, text.size(), stdout);
         if (text.empty() || text.back() != '\n') std::fputc('\n', stdout);
@@ -19,6 +47,7 @@ void Messages::info(const std::string& text) {
 }
 
 void Messages::alarm(const std::string& id, const std::string& text) {
+    std::lock_guard lock(mutex_);
     ++alarms_;
     std::string box = "   !" + std::string(70, '-') + "!\n";
     std::string out = box + "   ! <A> <" + id + ">\n";
@@ -39,12 +68,14 @@ void Messages::alarm(const std::string& id, const std::string& text) {
 }
 
 void Messages::result(const std::string& text) {
+    std::lock_guard lock(mutex_);
     resu_ += text;
     if (text.empty() || text.back() != '\n') resu_ += '\n';
     info(text);
 }
 
 void Messages::reset() {
+    std::lock_guard lock(mutex_);
     mess_.clear();
     resu_.clear();
     alarms_ = 0;

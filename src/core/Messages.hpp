@@ -3,6 +3,7 @@
 // Everything a command wants the user to read goes through here.
 #include <fmt/format.h>
 
+#include <mutex>
 #include <string>
 
 namespace ma {
@@ -22,6 +23,16 @@ public:
     // Text for the result file (.resu): TEST lines, IMPR_TABLE output. Also echoed in the log.
     void result(const std::string& text);
 
+    // The .mess is a log: from this call on, every line is also written to `fd` at once (the text
+    // logged so far first), so that `tail -f` follows the run and a killed run keeps its log.
+    void streamTo(int fd);
+    int streamFd() const { return fd_; }
+    // errno of the first write to the stream that failed (0: none).
+    int streamError() const { return streamError_; }
+    // Emergency stop from another thread: the calling thread keeps the log, every other thread
+    // blocks at its next message (the process is about to end).
+    void freeze() { mutex_.lock(); }
+
     int alarmCount() const { return alarms_; }
     const std::string& messText() const { return mess_; }
     const std::string& resuText() const { return resu_; }
@@ -29,6 +40,11 @@ public:
     void reset();
 
 private:
+    void write(const std::string& text);
+
+    std::recursive_mutex mutex_;
+    int fd_ = -1;
+    int streamError_ = 0;
     std::string mess_, resu_;
     int alarms_ = 0;
     bool echo_ = true;

@@ -16,6 +16,11 @@ std::string Units::input(int unit) const {
 std::string Units::output(int unit) const {
     auto it = outputs_.find(unit);
     if (it != outputs_.end()) return it->second;
+    auto data = inputs_.find(unit);
+    if (data != inputs_.end())
+        throw UserError("logical unit " + std::to_string(unit) + " is the data file " + data->second +
+                        ": a result cannot be written on it (choose another UNITE, or declare the unit as a "
+                        "result with an F ... R line)");
     return outDir_ + "/fort." + std::to_string(unit);
 }
 

@@ -11,8 +11,9 @@
 #include <array>
 
 #include "fe/Quadrature.hpp"
-#include "fe/ShapeFunctions.hpp"
+#include "mesh/ElementGeometry.hpp"
 #include "mesh/Mesh.hpp"
+#include "mesh/ShapeFunctions.hpp"
 
 namespace ma::classical {
 
@@ -68,41 +69,16 @@ inline void computeGeometry(const Ref& ref, const Mesh& mesh, int cell, Geometry
     for (int a = 0; a < NN; ++a) X[a] = &mesh.coords[nodes[a]];
     for (int p = 0; p < Ref::points; ++p) {
         std::array<double, 3> x{};
-        double J[D][D] = {};  // J[i][j] = dx_i / dxi_j
-        for (int a = 0; a < NN; ++a) {
-            const auto& Xa = *X[a];
-            for (int i = 0; i < 3; ++i) x[i] += ref.N[p][a] * Xa[i];
-            for (int i = 0; i < D; ++i)
-                for (int j = 0; j < D; ++j) J[i][j] += Xa[i] * ref.dN[p][a][j];
-        }
+        for (int a = 0; a < NN; ++a)
+            for (int i = 0; i < 3; ++i) x[i] += ref.N[p][a] * (*X[a])[i];
         g.xyz[p] = x;
-        double inv[D][D];
-        double det;
-        if constexpr (D == 2) {
-            det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-            inv[0][0] = J[1][1] / det, inv[0][1] = -J[0][1] / det;
-            inv[1][0] = -J[1][0] / det, inv[1][1] = J[0][0] / det;
-        } else {
-            det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) - J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
-                  J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
-            inv[0][0] = (J[1][1] * J[2][2] - J[1][2] * J[2][1]) / det;
-            inv[0][1] = (J[0][2] * J[2][1] - J[0][1] * J[2][2]) / det;
-            inv[0][2] = (J[0][1] * J[1][2] - J[0][2] * J[1][1]) / det;
-            inv[1][0] = (J[1][2] * J[2][0] - J[1][0] * J[2][2]) / det;
-            inv[1][1] = (J[0][0] * J[2][2] - J[0][2] * J[2][0]) / det;
-            inv[1][2] = (J[0][2] * J[1][0] - J[0][0] * J[1][2]) / det;
-            inv[2][0] = (J[1][0] * J[2][1] - J[1][1] * J[2][0]) / det;
-            inv[2][1] = (J[0][1] * J[2][0] - J[0][0] * J[2][1]) / det;
-            inv[2][2] = (J[0][0] * J[1][1] - J[0][1] * J[1][0]) / det;
-        }
+        double J[D][D], inv[D][D];
+        jacobian<D, D>(NN, [&](int a) -> const Vec3& { return *X[a]; }, [&](int a, int j) { return ref.dN[p][a][j]; }, J);
+        const double det = invertJacobian<D>(J, inv);
         if (!(det > 0.0)) badJacobian(mesh, cell, det);
         g.weight[p] = ref.weight[p] * det;
         for (int a = 0; a < NN; ++a)
-            for (int j = 0; j < D; ++j) {
-                double s = 0.0;
-                for (int i = 0; i < D; ++i) s += inv[i][j] * ref.dN[p][a][i];
-                g.grad[p][a][j] = s;
-            }
+            physicalGradient<D>(inv, [&](int i) { return ref.dN[p][a][i]; }, g.grad[p][a]);
     }
 }
 

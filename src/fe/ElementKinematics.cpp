@@ -8,7 +8,8 @@
 #include "fe/ClassicalElement.hpp"
 #include "fe/Enrichment.hpp"
 #include "fe/Quadrature.hpp"
-#include "fe/ShapeFunctions.hpp"
+#include "mesh/ElementGeometry.hpp"
+#include "mesh/ShapeFunctions.hpp"
 
 namespace ma {
 
@@ -47,29 +48,21 @@ void computePointGeometry(const Mesh& mesh, int cell, int spaceDim, bool boundar
     if (boundary) geo.normal.resize(np);
     else geo.gradN.resize(size_t(np) * n * 3);
     std::array<double, 24> dN{};
+    auto X = [&](int a) -> const Vec3& { return mesh.coords[nodes[a]]; };
+    auto d = [&](int a, int j) { return dN[3 * a + j]; };
     for (int p = 0; p < np; ++p) {
         double* N = &geo.N[size_t(p) * n];
         shapeValues(type, integration.refPoints[p], std::span<double>(N, n));
         shapeDerivatives(type, integration.refPoints[p], dN);
         std::array<double, 3> x{};
-        double J[3][3] = {};  // J[i][j] = dx_i / dxi_j
-        for (int a = 0; a < n; ++a) {
-            const auto& X = mesh.coords[nodes[a]];
-            for (int i = 0; i < 3; ++i) {
-                x[i] += N[a] * X[i];
-                for (int j = 0; j < rdim; ++j) J[i][j] += X[i] * dN[3 * a + j];
-            }
-        }
+        for (int a = 0; a < n; ++a)
+            for (int i = 0; i < 3; ++i) x[i] += N[a] * X(a)[i];
         geo.xyz[p] = x;
+        double J[3][3] = {};
+        jacobian(3, rdim, n, X, d, J);
         if (boundary) {
-            std::array<double, 3> nrm{};
-            if (rdim == 1) {  // 2D skin: n = (t_y, -t_x), t from node 1 to node 2
-                nrm = {J[1][0], -J[0][0], 0.0};
-            } else {  // 3D face: right-hand rule
-                nrm = {J[1][0] * J[2][1] - J[2][0] * J[1][1], J[2][0] * J[0][1] - J[0][0] * J[2][1],
-                       J[0][0] * J[1][1] - J[1][0] * J[0][1]};
-            }
-            const double measure = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+            Vec3 nrm = boundaryNormal(J, rdim);
+            const double measure = norm(nrm);
             if (!(measure > 0.0))
                 throw NumericalError(fmt::format("boundary cell {} ({}) is degenerate (zero Jacobian)",
                                                  mesh.cellNames[cell], cellTypeName(type)));
@@ -78,34 +71,14 @@ void computePointGeometry(const Mesh& mesh, int cell, int spaceDim, bool boundar
             geo.weight[p] = integration.refWeights[p] * measure;
             continue;
         }
-        // Volume element: invert J (spaceDim x spaceDim).
         double inv[3][3] = {};
-        double det = 0.0;
-        if (spaceDim == 2) {
-            det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-            inv[0][0] = J[1][1] / det, inv[0][1] = -J[0][1] / det;
-            inv[1][0] = -J[1][0] / det, inv[1][1] = J[0][0] / det;
-        } else {
-            det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) - J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
-                  J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
-            inv[0][0] = (J[1][1] * J[2][2] - J[1][2] * J[2][1]) / det;
-            inv[0][1] = (J[0][2] * J[2][1] - J[0][1] * J[2][2]) / det;
-            inv[0][2] = (J[0][1] * J[1][2] - J[0][2] * J[1][1]) / det;
-            inv[1][0] = (J[1][2] * J[2][0] - J[1][0] * J[2][2]) / det;
-            inv[1][1] = (J[0][0] * J[2][2] - J[0][2] * J[2][0]) / det;
-            inv[1][2] = (J[0][2] * J[1][0] - J[0][0] * J[1][2]) / det;
-            inv[2][0] = (J[1][0] * J[2][1] - J[1][1] * J[2][0]) / det;
-            inv[2][1] = (J[0][1] * J[2][0] - J[0][0] * J[2][1]) / det;
-            inv[2][2] = (J[0][0] * J[1][1] - J[0][1] * J[1][0]) / det;
-        }
+        const double det = invertJacobian(spaceDim, J, inv);
         if (!(det > 0.0)) classical::badJacobian(mesh, cell, det);
         geo.weight[p] = integration.refWeights[p] * det;
-        // grad N_a = J^-T dN_a
         for (int a = 0; a < n; ++a) {
             double* g = &geo.gradN[(size_t(p) * n + a) * 3];
-            for (int j = 0; j < 3; ++j) g[j] = 0.0;
-            for (int j = 0; j < spaceDim; ++j)
-                for (int i = 0; i < spaceDim; ++i) g[j] += inv[i][j] * dN[3 * a + i];
+            g[0] = g[1] = g[2] = 0.0;
+            physicalGradient(spaceDim, inv, [&](int i) { return dN[3 * a + i]; }, g);
         }
     }
 }

@@ -4,10 +4,9 @@
 #include <type_traits>
 
 #include "core/Error.hpp"
-#include "fe/ClassicalElement.hpp"
 #include "fe/DofNumbering.hpp"
 #include "fe/Enrichment.hpp"
-#include "fe/ElementKinematics.hpp"
+#include "fe/ElementLoop.hpp"
 
 namespace ma {
 
@@ -35,57 +34,43 @@ void appendDisplacementSamples(const Model& model, const NodalField& depl, const
         if (component[key] == -2) component[key] = depl.componentIndex(displacementComponentName(slot, c));
         return component[key];
     };
-    ElementIntegration ei;
-    PointGeometry geo;
+    GeneralElementScratch scratch;
     for (size_t e = first; e < last; ++e) {
         const auto& element = model.elements[e];
         if (!wanted.empty() && !wanted[element.cell]) continue;
         const bool enriched = model.enrichment && model.enrichment->isEnriched(element.cell);
-        // Classical elements: fixed-size geometry, slot 0 only (psi = 1).
-        const bool fixedSize = !enriched && classical::dispatch(mesh.cellTypes[element.cell], dim, [&](const auto& ref) {
-            using Ref = std::decay_t<decltype(ref)>;
-            classical::Geometry<Ref> g;
-            classical::computeGeometry(ref, mesh, element.cell, g);
-            const int* nodes = mesh.connectivity.data() + mesh.cellOffsets[element.cell];
-            for (int p = 0; p < Ref::points; ++p) {
-                DisplacementSample s;
-                s.cell = element.cell;
-                s.xyz = g.xyz[p];
-                s.weight = g.weight[p];
-                for (int a = 0; a < Ref::nodes; ++a) {
-                    const double factor = ref.N[p][a];
-                    if (factor == 0.0) continue;
-                    for (int c = 0; c < Ref::dim; ++c) {
-                        const int comp = componentIndex(0, c);
-                        if (comp >= 0 && depl.has(nodes[a], comp)) s.u[c] += factor * depl.at(nodes[a], comp);
-                    }
-                }
-                out.push_back(s);
+        const int* nodes = mesh.connectivity.data() + mesh.cellOffsets[element.cell];
+        // Adds factor * U(node, slot) to s.u.
+        auto add = [&](DisplacementSample& s, int node, int slot, double factor) {
+            if (factor == 0.0) return;
+            for (int c = 0; c < dim; ++c) {
+                const int comp = componentIndex(slot, c);
+                if (comp >= 0 && depl.has(node, comp)) s.u[c] += factor * depl.at(node, comp);
             }
-        });
-        if (fixedSize) continue;
-        elementIntegration(model, element.cell, false, ei);
-        computePointGeometry(mesh, element.cell, dim, false, ei, geo);
-        const auto nodes = mesh.cellNodes(element.cell);
-        const int n = ei.nodeCount;
-        for (size_t p = 0; p < ei.refPoints.size(); ++p) {
-            DisplacementSample s;
-            s.cell = element.cell;
-            s.xyz = geo.xyz[p];
-            s.weight = geo.weight[p];
-            for (int a = 0; a < n; ++a) {
-                const double Na = geo.N[p * n + a];
-                for (int k = 0; k < ei.slots[a]; ++k) {
-                    const double factor = Na * ei.multiplier(int(p), a, k);
-                    if (factor == 0.0) continue;
-                    for (int c = 0; c < dim; ++c) {
-                        const int comp = componentIndex(k, c);
-                        if (comp >= 0 && depl.has(nodes[a], comp)) s.u[c] += factor * depl.at(nodes[a], comp);
-                    }
+        };
+        visitVolumeElement(
+            mesh, dim, element.cell, enriched, scratch,
+            [&](ElementIntegration& ei) -> const ElementIntegration& {
+                elementIntegration(model, element.cell, false, ei);
+                return ei;
+            },
+            [&](const auto& ref, const auto& g) {  // classical: slot 0 only (psi = 1)
+                using Ref = std::decay_t<decltype(ref)>;
+                for (int p = 0; p < Ref::points; ++p) {
+                    DisplacementSample s{element.cell, g.xyz[p], g.weight[p], {}};
+                    for (int a = 0; a < Ref::nodes; ++a) add(s, nodes[a], 0, ref.N[p][a]);
+                    out.push_back(s);
                 }
-            }
-            out.push_back(s);
-        }
+            },
+            [&](const ElementIntegration& ei, const PointGeometry& geo) {
+                const int n = ei.nodeCount;
+                for (size_t p = 0; p < ei.refPoints.size(); ++p) {
+                    DisplacementSample s{element.cell, geo.xyz[p], geo.weight[p], {}};
+                    for (int a = 0; a < n; ++a)
+                        for (int k = 0; k < ei.slots[a]; ++k) add(s, nodes[a], k, geo.N[p * n + a] * ei.multiplier(int(p), a, k));
+                    out.push_back(s);
+                }
+            });
     }
 }
 

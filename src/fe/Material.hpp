@@ -9,6 +9,7 @@
 namespace ma {
 
 class Model;
+class MaterialField;
 
 class Material : public Concept {
 public:
@@ -18,6 +19,12 @@ public:
     bool hasRho = false;
     double rho = 0.0;
 };
+
+// "" for an ordinary material; else why Hooke's law is near its limit (NU close to 0.5:
+// nearly incompressible, or to -1), which makes the stiffness matrix singular to working precision.
+std::string nearlyDegenerateElasticity(const Material& m);
+// The materials of `field` that are nearly degenerate, as the likely cause of a singular system ("" when none).
+std::string degenerateMaterialCause(const MaterialField& field);
 
 class MaterialField : public Concept {
 public:

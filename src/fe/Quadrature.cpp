@@ -5,7 +5,7 @@
 #include <mutex>
 
 #include "core/Error.hpp"
-#include "fe/ShapeFunctions.hpp"
+#include "mesh/ShapeFunctions.hpp"
 
 namespace ma {
 

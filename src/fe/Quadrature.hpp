@@ -1,5 +1,5 @@
 #pragma once
-// Integration rules on the reference elements of fe/ShapeFunctions.hpp, named as code_aster's
+// Integration rules on the reference elements of mesh/ShapeFunctions.hpp, named as code_aster's
 // integration families (FPG1, FPG4, NOEU ...; points and weights of bibfor/elements/elraga.F90).
 // Weights sum to the reference measure (SEG 2, TRIA 1/2, QUAD 4, TETRA 1/6, HEXA 8).
 //

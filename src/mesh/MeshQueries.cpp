@@ -56,14 +56,9 @@ Vec3 cellNormal(const Mesh& mesh, int cell) {
     if (cellDimension(t) == 2) {
         const auto& p2 = mesh.coords[size_t(nodes[1])];
         const auto& p3 = mesh.coords[size_t(nodes[2])];
-        const Vec3 u{p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2]};
-        const Vec3 v{p3[0] - p1[0], p3[1] - p1[1], p3[2] - p1[2]};
-        return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        return cross(difference(p2, p1), difference(p3, p1));
     }
     return {0, 0, 0};
 }
-
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 
 }  // namespace ma

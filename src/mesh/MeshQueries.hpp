@@ -2,11 +2,10 @@
 // Geometric questions about cells, shared by DEFI_GROUP, MODI_MAILLAGE and the mesh tools.
 #include <array>
 
+#include "core/Vec3.hpp"
 #include "mesh/Mesh.hpp"
 
 namespace ma {
-
-using Vec3 = std::array<double, 3>;
 
 // Vertices come first in the internal node order; then mid-edge nodes, then face/volume centres.
 int vertexCount(CellType t);
@@ -22,8 +21,5 @@ Vec3 vertexCentroid(const Mesh& mesh, int cell);
 // code_aster's normal of a boundary cell (not normalised): SEG (y2-y1, -(x2-x1), 0) from its
 // first two nodes; TRIA/QUAD (P2-P1)x(P3-P1). Zero vector for other cells.
 Vec3 cellNormal(const Mesh& mesh, int cell);
-
-double dot(const Vec3& a, const Vec3& b);
-double norm(const Vec3& a);
 
 }  // namespace ma

@@ -66,6 +66,14 @@ void checkFormulaCounts(const ReferenceFormulas& ref, size_t groups) {
 std::shared_ptr<Table> errorTable(const std::vector<std::string>& groups, const std::vector<double>& difference,
                                   const std::vector<double>& reference, double totalDifference,
                                   double totalReference, bool withRelative, double relative, const std::string& title) {
+    // An overflow (loads of 1e300: squares beyond 1.8e308) would print inf/nan as if it were a
+    // value, or a "zero reference": the norm is refused instead.
+    for (double v : {totalDifference, totalReference, withRelative ? relative : 0.0})
+        if (!std::isfinite(v))
+            throw NumericalError(fmt::format("{}: the norm is not finite (DIFFERENCE = {}, REFERENCE = {}): the field "
+                                             "or the reference values overflow (a value beyond about 1e154 squares "
+                                             "beyond the largest double); check the loads and the units",
+                                             title, totalDifference, totalReference));
     auto table = std::make_shared<Table>();
     size_t width = 5;  // "TOTAL"
     for (const auto& g : groups) width = std::max(width, g.size());

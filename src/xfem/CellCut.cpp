@@ -5,7 +5,8 @@
 #include <map>
 
 #include "core/Error.hpp"
-#include "fe/ShapeFunctions.hpp"
+#include "core/Vec3.hpp"
+#include "mesh/ShapeFunctions.hpp"
 #include "xfem/CellGeometry.hpp"
 #include "xfem/Crack.hpp"
 
@@ -23,18 +24,6 @@ constexpr double kVertexOnInterface = 1e-9;   // zero closer than this (relative
 // Round-off of reference coordinates (magnitude <= 1), with a margin: the determinant of a piece
 // whose measure is below it times its cofactors is numerically zero.
 constexpr double kMeasureRoundOff = 16 * 2.2e-16;
-
-std::array<double, 3> difference(const std::array<double, 3>& a, const std::array<double, 3>& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-double length(const std::array<double, 3>& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
-std::array<double, 3> cross(const std::array<double, 3>& a, const std::array<double, 3>& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-double distance(const std::array<double, 3>& a, const std::array<double, 3>& b) {
-    return length(difference(a, b));
-}
 
 // Characteristic length of the parent (loncar).
 double characteristicLength(const Mesh& mesh, int cell) {
@@ -235,11 +224,11 @@ private:
         std::array<std::array<double, 3>, 3> e{};
         for (size_t a = 1; a < piece.size(); ++a) e[a - 1] = difference(cut_.points[piece[a]].ref, cut_.points[piece[0]].ref);
         double det = 0.0, cofactors = 1.0;
-        if (cut_.dim == 1) det = length(e[0]);
-        if (cut_.dim == 2) det = 2.0 * std::abs(measure(piece)), cofactors = length(e[0]) + length(e[1]);
+        if (cut_.dim == 1) det = norm(e[0]);
+        if (cut_.dim == 2) det = 2.0 * std::abs(measure(piece)), cofactors = norm(e[0]) + norm(e[1]);
         if (cut_.dim == 3) {
             det = 6.0 * std::abs(measure(piece));
-            cofactors = length(cross(e[0], e[1])) + length(cross(e[1], e[2])) + length(cross(e[0], e[2]));
+            cofactors = norm(cross(e[0], e[1])) + norm(cross(e[1], e[2])) + norm(cross(e[0], e[2]));
         }
         return det <= kMeasureRoundOff * cofactors;
     }

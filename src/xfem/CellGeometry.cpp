@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/Error.hpp"
+#include "mesh/ShapeFunctions.hpp"
 
 namespace ma::xfem {
 
@@ -20,16 +21,8 @@ constexpr std::array<Edge, 12> kHexa8{{{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {
 }
 }  // namespace
 
-bool xfemSupports(CellType type) {
-    switch (type) {
-        case CellType::SEG2:
-        case CellType::TRIA3:
-        case CellType::QUAD4:
-        case CellType::TETRA4:
-        case CellType::HEXA8: return true;
-        default: return false;
-    }
-}
+// The linear cells of the elasticity engine (those with shape functions).
+bool xfemSupports(CellType type) { return hasShapeFunctions(type); }
 
 std::span<const Edge> cellEdges(CellType type) {
     switch (type) {

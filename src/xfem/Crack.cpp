@@ -2,14 +2,14 @@
 
 #include <fmt/format.h>
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <limits>
 
 #include "core/Error.hpp"
-#include "fe/ShapeFunctions.hpp"
+#include "mesh/ElementGeometry.hpp"
+#include "mesh/ShapeFunctions.hpp"
 #include "xfem/CellGeometry.hpp"
 
 namespace ma::xfem {
@@ -38,22 +38,14 @@ std::vector<std::array<double, 3>> nodalGradient(const Mesh& mesh, const std::ve
         const auto ref = referenceNodes(type);
         for (size_t a = 0; a < nodes.size(); ++a) {
             shapeDerivatives(type, ref[a], dN);
-            Eigen::Matrix3d J = Eigen::Matrix3d::Zero();  // J(i, j) = dx_i / dxi_j
-            Eigen::Vector3d g = Eigen::Vector3d::Zero();  // dLSN / dxi_j
+            auto d = [&](int b, int j) { return dN[3 * b + j]; };
+            double J[3][3] = {}, inv[3][3] = {};  // J[i][j] = dx_i / dxi_j
+            jacobian(dim, dim, int(nodes.size()), [&](int b) -> const Vec3& { return mesh.coords[nodes[b]]; }, d, J);
+            if (invertJacobian(dim, J, inv) == 0.0) continue;
+            Vec3 g{}, gx{};  // dLSN / dxi_j, dLSN / dx_j
             for (size_t b = 0; b < nodes.size(); ++b)
-                for (int j = 0; j < dim; ++j) {
-                    g[j] += lsn[nodes[b]] * dN[3 * b + j];
-                    for (int i = 0; i < dim; ++i) J(i, j) += mesh.coords[nodes[b]][i] * dN[3 * b + j];
-                }
-            Eigen::Vector3d gx = Eigen::Vector3d::Zero();
-            if (dim == 2) {
-                Eigen::Matrix2d J2 = J.topLeftCorner<2, 2>();
-                if (J2.determinant() == 0.0) continue;
-                gx.head<2>() = J2.transpose().inverse() * g.head<2>();
-            } else {
-                if (J.determinant() == 0.0) continue;
-                gx = J.transpose().inverse() * g;
-            }
+                for (int j = 0; j < dim; ++j) g[j] += lsn[nodes[b]] * dN[3 * b + j];
+            physicalGradient(dim, inv, [&](int j) { return g[j]; }, gx);
             for (int j = 0; j < 3; ++j) grad[nodes[a]][j] += gx[j];
             ++count[nodes[a]];
         }

@@ -8,7 +8,7 @@
 
 namespace ma::xfem {
 
-// Degrees the override accepts (the supervisor parses `--subcell-quadrature` with the same range).
+// Degrees the override accepts (`--subcell-quadrature`, registered by MODI_MODELE_XFEM, checks the same range).
 constexpr int kMaxSubcellDegree = 6;
 
 // Kind of sub-cell a rule is chosen for.

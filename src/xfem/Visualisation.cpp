@@ -8,9 +8,10 @@
 #include <map>
 
 #include "core/Error.hpp"
-#include "fe/MechanicalProblem.hpp"
+#include "fe/ElasticityKernels.hpp"
 #include "fe/Quadrature.hpp"
-#include "fe/ShapeFunctions.hpp"
+#include "mesh/ElementGeometry.hpp"
+#include "mesh/ShapeFunctions.hpp"
 #include "xfem/CellGeometry.hpp"
 #include "xfem/XfemModel.hpp"
 
@@ -77,31 +78,18 @@ double contactPressure(const XfemModel& xm, const MaterialField& material, Model
     shapeValues(cut.type, point.ref, N);
     shapeDerivatives(cut.type, point.ref, dN);
     // Jacobian and physical gradients.
-    double J[3][3] = {};
-    for (int a = 0; a < n; ++a)
-        for (int i = 0; i < dim; ++i)
-            for (int k = 0; k < dim; ++k) J[i][k] += mesh.coords[nodes[a]][i] * dN[3 * a + k];
-    double inv[3][3] = {};
-    if (dim == 2) {
-        const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-        inv[0][0] = J[1][1] / det, inv[0][1] = -J[0][1] / det, inv[1][0] = -J[1][0] / det, inv[1][1] = J[0][0] / det;
-    } else {
-        const double det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) - J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
-                           J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
-        for (int i = 0; i < 3; ++i)
-            for (int k = 0; k < 3; ++k) {
-                const int i1 = (k + 1) % 3, i2 = (k + 2) % 3, k1 = (i + 1) % 3, k2 = (i + 2) % 3;
-                inv[i][k] = (J[i1][k1] * J[i2][k2] - J[i1][k2] * J[i2][k1]) / det;  // (J^-1)_{ik}
-            }
-    }
+    double J[3][3] = {}, inv[3][3] = {};
+    auto X = [&](int a) -> const Vec3& { return mesh.coords[nodes[a]]; };
+    auto d = [&](int a, int k) { return dN[3 * a + k]; };
+    jacobian(dim, dim, n, X, d, J);
+    invertJacobian(dim, J, inv);
     // du_c/dx_j of the node's side and the interface normal (level-set gradient).
     double G[3][3] = {};
     std::array<double, 3> normal{};
     const Crack& c = *cut.lsnCracks[crack];
     for (int a = 0; a < n; ++a) {
         double g[3] = {};
-        for (int j = 0; j < dim; ++j)
-            for (int k = 0; k < dim; ++k) g[j] += inv[k][j] * dN[3 * a + k];
+        physicalGradient(dim, inv, [&](int k) { return dN[3 * a + k]; }, g);
         for (int j = 0; j < dim; ++j) normal[j] += c.lsn[nodes[a]] * g[j];
         for (int k = 0; k <= xm.activeSlots(nodes[a]); ++k) {
             const double psi = k == 0 ? 1.0 : xm.psi(nodes[a], k, cut, vn.subcell);
@@ -246,6 +234,129 @@ Visualisation buildVisualisation(const Model& model, const XfemModel& xm, const 
     return out;
 }
 
+namespace {
+
+// DEPL on the visualisation mesh: each new node takes the displacement of its side of the
+// interface in its parent cell (all active Heaviside slots); contact models add LAGS_C.
+std::shared_ptr<NodalField> visualisationDisplacement(const XfemModel* xm, const Model& model, const Visualisation& visu,
+                                                      const std::shared_ptr<Mesh>& vmesh, const NodalField* depl,
+                                                      const std::vector<std::string>& comps, const Result& input,
+                                                      bool withContact) {
+    const Mesh& mesh = xm->mesh();
+    const int dim = model.dim;
+    std::array<double, 8> N{};
+    auto field = std::make_shared<NodalField>();
+    field->resize(vmesh, comps);
+    // (slot, component) -> column of the input field
+    const int maxSlot = 5;
+    std::vector<int> column(maxSlot * 3, -1);
+    for (int k = 0; k < maxSlot; ++k)
+        for (int j = 0; j < dim; ++j)
+            column[k * 3 + j] =
+                depl->componentIndex(k == 0 ? comps[j] : fmt::format("H{}{}", k, "XYZ"[j]));
+    auto value = [&](int node, int k, int j) {
+        const int col = k < maxSlot ? column[k * 3 + j] : -1;
+        return col >= 0 && depl->has(node, col) ? depl->at(node, col) : 0.0;
+    };
+    for (int v = 0; v < vmesh->nodeCount(); ++v) {
+        const auto& vn = visu.nodes[v];
+        std::array<double, 3> u{0, 0, 0};
+        if (vn.original >= 0) {
+            for (int j = 0; j < dim; ++j) u[j] = value(vn.original, 0, j);
+        } else {
+            const CellCut& cut = *xm->cut(vn.parentCell);
+            const auto cn = mesh.cellNodes(vn.parentCell);
+            shapeValues(cut.type, cut.points[vn.point].ref, N);
+            for (size_t a = 0; a < cn.size(); ++a) {
+                if (N[a] == 0.0) continue;
+                for (int j = 0; j < dim; ++j) u[j] += N[a] * value(cn[a], 0, j);
+                for (int k = 1; k <= xm->activeSlots(cn[a]); ++k) {
+                    const double psi = xm->psi(cn[a], k, cut, vn.subcell);
+                    if (psi == 0.0) continue;
+                    for (int j = 0; j < dim; ++j) u[j] += N[a] * psi * value(cn[a], k, j);
+                }
+            }
+        }
+        for (int j = 0; j < dim; ++j) field->set(v, j, u[j]);
+        if (withContact && vn.onCrack && vn.original < 0) {
+            const double lagsC = contactPressure(*xm, *input.material, model.modelisation, vn, value);
+            if (!std::isnan(lagsC)) field->set(v, dim, lagsC);
+        }
+    }
+    return field;
+}
+
+// SIEF_ELGA on the visualisation mesh: classical elements keep their points; a sub-cell element
+// takes the mean of its parent's points of that sub-cell at each of its own points.
+std::shared_ptr<GaussField> visualisationStress(const XfemModel* xm, const Visualisation& visu,
+                                                const std::shared_ptr<Mesh>& vmesh, const Model& modelVisu,
+                                                const GaussField* sief) {
+    const Mesh& mesh = xm->mesh();
+    auto field = std::make_shared<GaussField>();
+    field->mesh = vmesh;
+    field->quantity = sief->quantity;
+    field->components = sief->components;
+    const size_t nc = sief->components.size();
+    std::vector<int> elementOf(size_t(mesh.cellCount()), -1);  // input cell -> element of the input field
+    for (size_t e = 0; e < sief->cells.size(); ++e)
+        if (sief->cells[e] >= 0 && sief->cells[e] < mesh.cellCount())
+            elementOf[size_t(sief->cells[e])] = static_cast<int>(e);
+    const size_t reserve = sief->pointWeights.size() + sief->pointWeights.size() / 8;
+    field->cells.reserve(modelVisu.elements.size());
+    field->pointOffsets.reserve(modelVisu.elements.size() + 1);
+    field->pointCoords.reserve(reserve);
+    field->pointWeights.reserve(reserve);
+    field->pointSubcell.reserve(reserve);
+    field->pointRefCoords.reserve(reserve);
+    field->values.reserve(reserve * nc);
+    for (const auto& el : modelVisu.elements) {
+        const int vc = el.cell;
+        const auto& info = visu.cells[vc];
+        const int parent = info.original >= 0 ? info.original : info.parentCell;
+        const int e = parent >= 0 && parent < mesh.cellCount() ? elementOf[size_t(parent)] : -1;
+        if (e < 0) continue;
+        const int p0 = sief->pointOffsets[e], p1 = sief->pointOffsets[e + 1];
+        field->cells.push_back(vc);
+        if (info.original >= 0) {  // classical element: same points
+            for (int p = p0; p < p1; ++p) {
+                field->pointCoords.push_back(sief->pointCoords[p]);
+                field->pointWeights.push_back(sief->pointWeights[p]);
+                field->pointSubcell.push_back(0);
+                field->pointRefCoords.push_back(p < int(sief->pointRefCoords.size()) ? sief->pointRefCoords[p]
+                                                                                     : std::array<double, 3>{});
+                field->values.insert(field->values.end(), sief->values.begin() + size_t(p) * nc,
+                                     sief->values.begin() + size_t(p + 1) * nc);
+            }
+        } else {  // sub-cell: mean of the parent's points of that sub-cell, at every point
+            std::vector<double> mean(nc, 0.0);
+            int count = 0;
+            for (int p = p0; p < p1; ++p)
+                if (sief->pointSubcell[p] == info.subcell) {
+                    ++count;
+                    for (size_t j = 0; j < nc; ++j) mean[j] += sief->values[size_t(p) * nc + j];
+                }
+            for (auto& m : mean) m = count ? m / count : 0.0;
+            const CellType type = vmesh->cellTypes[vc];
+            const QuadratureRule& rule = stiffnessRule(type);
+            const auto xs = nodeCoords(*vmesh, vc);
+            std::vector<std::array<double, 3>> corners(xs.begin(), xs.end());
+            const double measure = std::abs(simplexMeasure(cellDimension(type), corners));
+            const double refMeasure = cellDimension(type) == 2 ? 0.5 : 1.0 / 6.0;
+            for (int q = 0; q < rule.size(); ++q) {
+                field->pointCoords.push_back(mapToPhysical(type, xs, rule.points[q]));
+                field->pointWeights.push_back(rule.weights[q] * measure / refMeasure);
+                field->pointSubcell.push_back(0);
+                field->pointRefCoords.push_back(rule.points[q]);
+                field->values.insert(field->values.end(), mean.begin(), mean.end());
+            }
+        }
+        field->pointOffsets.push_back(static_cast<int>(field->pointWeights.size()));
+    }
+    return field;
+}
+
+}  // namespace
+
 std::shared_ptr<Result> visualisationResult(const Result& input, const std::shared_ptr<Model>& modelVisu) {
     if (!input.model) throw UserError("RESULTAT " + input.name + " has no model");
     const Model& model = *input.model;
@@ -262,7 +373,6 @@ std::shared_ptr<Result> visualisationResult(const Result& input, const std::shar
                                     "RESULTAT {} ({} nodes and {} cells expected)",
                                     modelVisu->name, model.name, input.name, visu.mesh->nodeCount(),
                                     visu.mesh->cellCount()));
-    const Mesh& mesh = xm->mesh();
     const int dim = model.dim;
     auto out = std::make_shared<Result>(input.typeName());
     out->mesh = vmesh;
@@ -274,115 +384,15 @@ std::shared_ptr<Result> visualisationResult(const Result& input, const std::shar
     // interface nodes, after the displacement components (docs/contact.md).
     const bool withContact = xm->contact() == XfemContact::Standard && input.material;
     if (withContact) comps.push_back("LAGS_C");
-    std::array<double, 8> N{};
     for (const auto& step : input.steps) {
         ResultStep s;
         s.order = step.order;
         s.inst = step.inst;
-        if (auto depl = step.nodal("DEPL")) {
-            auto field = std::make_shared<NodalField>();
-            field->resize(vmesh, comps);
-            // (slot, component) -> column of the input field
-            const int maxSlot = 5;
-            std::vector<int> column(maxSlot * 3, -1);
-            for (int k = 0; k < maxSlot; ++k)
-                for (int j = 0; j < dim; ++j)
-                    column[k * 3 + j] =
-                        depl->componentIndex(k == 0 ? comps[j] : fmt::format("H{}{}", k, "XYZ"[j]));
-            auto value = [&](int node, int k, int j) {
-                const int col = k < maxSlot ? column[k * 3 + j] : -1;
-                return col >= 0 && depl->has(node, col) ? depl->at(node, col) : 0.0;
-            };
-            for (int v = 0; v < vmesh->nodeCount(); ++v) {
-                const auto& vn = visu.nodes[v];
-                std::array<double, 3> u{0, 0, 0};
-                if (vn.original >= 0) {
-                    for (int j = 0; j < dim; ++j) u[j] = value(vn.original, 0, j);
-                } else {
-                    const CellCut& cut = *xm->cut(vn.parentCell);
-                    const auto cn = mesh.cellNodes(vn.parentCell);
-                    shapeValues(cut.type, cut.points[vn.point].ref, N);
-                    for (size_t a = 0; a < cn.size(); ++a) {
-                        if (N[a] == 0.0) continue;
-                        for (int j = 0; j < dim; ++j) u[j] += N[a] * value(cn[a], 0, j);
-                        for (int k = 1; k <= xm->activeSlots(cn[a]); ++k) {
-                            const double psi = xm->psi(cn[a], k, cut, vn.subcell);
-                            if (psi == 0.0) continue;
-                            for (int j = 0; j < dim; ++j) u[j] += N[a] * psi * value(cn[a], k, j);
-                        }
-                    }
-                }
-                for (int j = 0; j < dim; ++j) field->set(v, j, u[j]);
-                if (withContact && vn.onCrack && vn.original < 0) {
-                    const double lagsC = contactPressure(*xm, *input.material, model.modelisation, vn, value);
-                    if (!std::isnan(lagsC)) field->set(v, dim, lagsC);
-                }
-            }
-            s.nodalFields.emplace_back("DEPL", field);
-        }
-        if (auto sief = step.gauss("SIEF_ELGA")) {
-            auto field = std::make_shared<GaussField>();
-            field->mesh = vmesh;
-            field->quantity = sief->quantity;
-            field->components = sief->components;
-            const size_t nc = sief->components.size();
-            std::vector<int> elementOf(size_t(mesh.cellCount()), -1);  // input cell -> element of the input field
-            for (size_t e = 0; e < sief->cells.size(); ++e)
-                if (sief->cells[e] >= 0 && sief->cells[e] < mesh.cellCount())
-                    elementOf[size_t(sief->cells[e])] = static_cast<int>(e);
-            const size_t reserve = sief->pointWeights.size() + sief->pointWeights.size() / 8;
-            field->cells.reserve(modelVisu->elements.size());
-            field->pointOffsets.reserve(modelVisu->elements.size() + 1);
-            field->pointCoords.reserve(reserve);
-            field->pointWeights.reserve(reserve);
-            field->pointSubcell.reserve(reserve);
-            field->pointRefCoords.reserve(reserve);
-            field->values.reserve(reserve * nc);
-            for (const auto& el : modelVisu->elements) {
-                const int vc = el.cell;
-                const auto& info = visu.cells[vc];
-                const int parent = info.original >= 0 ? info.original : info.parentCell;
-                const int e = parent >= 0 && parent < mesh.cellCount() ? elementOf[size_t(parent)] : -1;
-                if (e < 0) continue;
-                const int p0 = sief->pointOffsets[e], p1 = sief->pointOffsets[e + 1];
-                field->cells.push_back(vc);
-                if (info.original >= 0) {  // classical element: same points
-                    for (int p = p0; p < p1; ++p) {
-                        field->pointCoords.push_back(sief->pointCoords[p]);
-                        field->pointWeights.push_back(sief->pointWeights[p]);
-                        field->pointSubcell.push_back(0);
-                        field->pointRefCoords.push_back(p < int(sief->pointRefCoords.size()) ? sief->pointRefCoords[p]
-                                                                                             : std::array<double, 3>{});
-                        field->values.insert(field->values.end(), sief->values.begin() + size_t(p) * nc,
-                                             sief->values.begin() + size_t(p + 1) * nc);
-                    }
-                } else {  // sub-cell: mean of the parent's points of that sub-cell, at every point
-                    std::vector<double> mean(nc, 0.0);
-                    int count = 0;
-                    for (int p = p0; p < p1; ++p)
-                        if (sief->pointSubcell[p] == info.subcell) {
-                            ++count;
-                            for (size_t j = 0; j < nc; ++j) mean[j] += sief->values[size_t(p) * nc + j];
-                        }
-                    for (auto& m : mean) m = count ? m / count : 0.0;
-                    const CellType type = vmesh->cellTypes[vc];
-                    const QuadratureRule& rule = stiffnessRule(type);
-                    const auto xs = nodeCoords(*vmesh, vc);
-                    std::vector<std::array<double, 3>> corners(xs.begin(), xs.end());
-                    const double measure = std::abs(simplexMeasure(cellDimension(type), corners));
-                    const double refMeasure = cellDimension(type) == 2 ? 0.5 : 1.0 / 6.0;
-                    for (int q = 0; q < rule.size(); ++q) {
-                        field->pointCoords.push_back(mapToPhysical(type, xs, rule.points[q]));
-                        field->pointWeights.push_back(rule.weights[q] * measure / refMeasure);
-                        field->pointSubcell.push_back(0);
-                        field->pointRefCoords.push_back(rule.points[q]);
-                        field->values.insert(field->values.end(), mean.begin(), mean.end());
-                    }
-                }
-                field->pointOffsets.push_back(static_cast<int>(field->pointWeights.size()));
-            }
-            s.gaussFields.emplace_back("SIEF_ELGA", field);
-        }
+        if (auto depl = step.nodal("DEPL"))
+            s.nodalFields.emplace_back("DEPL", visualisationDisplacement(xm, model, visu, vmesh, depl.get(), comps, input,
+                                                                         withContact));
+        if (auto sief = step.gauss("SIEF_ELGA"))
+            s.gaussFields.emplace_back("SIEF_ELGA", visualisationStress(xm, visu, vmesh, *modelVisu, sief.get()));
         out->steps.push_back(std::move(s));
     }
     return out;

@@ -2,14 +2,14 @@
 
 #include <fmt/format.h>
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "fe/Quadrature.hpp"
-#include "fe/ShapeFunctions.hpp"
+#include "mesh/ElementGeometry.hpp"
+#include "mesh/ShapeFunctions.hpp"
 #include "xfem/CellGeometry.hpp"
 
 namespace ma::xfem {
@@ -34,26 +34,13 @@ double physicalGradients(const Mesh& mesh, int cell, const std::array<double, 3>
     const int n = static_cast<int>(nodes.size());
     std::array<double, 24> dN{};
     shapeDerivatives(type, xi, dN);
-    Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
-    for (int a = 0; a < n; ++a)
-        for (int i = 0; i < d; ++i)
-            for (int j = 0; j < d; ++j) J(i, j) += mesh.coords[nodes[a]][i] * dN[3 * a + j];
+    double J[3][3] = {}, inv[3][3] = {};
+    jacobian(d, d, n, [&](int a) -> const Vec3& { return mesh.coords[nodes[a]]; },
+             [&](int a, int j) { return dN[3 * a + j]; }, J);
     grad.assign(3 * n, 0.0);
-    if (d == 2) {
-        const Eigen::Matrix2d J2 = J.topLeftCorner<2, 2>();
-        const double det = J2.determinant();
-        if (det == 0.0) return 0.0;
-        const Eigen::Matrix2d inv = J2.inverse();
-        for (int a = 0; a < n; ++a)
-            for (int i = 0; i < 2; ++i) grad[3 * a + i] = inv(0, i) * dN[3 * a] + inv(1, i) * dN[3 * a + 1];
-        return std::abs(det);
-    }
-    const double det = J.determinant();
+    const double det = invertJacobian(d, J, inv);
     if (det == 0.0) return 0.0;
-    const Eigen::Matrix3d inv = J.inverse();
-    for (int a = 0; a < n; ++a)
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) grad[3 * a + i] += inv(j, i) * dN[3 * a + j];
+    for (int a = 0; a < n; ++a) physicalGradient(d, inv, [&](int j) { return dN[3 * a + j]; }, &grad[3 * a]);
     return std::abs(det);
 }
 

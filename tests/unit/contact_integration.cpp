@@ -2,22 +2,20 @@
 // the facet family of every scheme is code_aster's (xminte.F90), the points of each facet integrate
 // the polynomials of their rule's degree and sum to the facet measure, 'NOEUD' puts them on the facet
 // vertices, each zone keeps its own rule, and the command refuses what code_aster does not define
-// (3D SIMPSON of order > 1 and NCOTES) and orders out of the catalogue's ranges.
+// (3D SIMPSON of order > 1 and NCOTES) and orders out of the catalogue's ranges (those through the
+// binary: tests/cli/contact_integration_runs.cpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "contact/ContactIntegration.hpp"
 #include "contact_test_scene.hpp"
 #include "fe/Quadrature.hpp"
-#include "parser_run.hpp"
 
 namespace {
 
@@ -229,6 +227,9 @@ TEST(ContactIntegration, TraceDegreeOfTheParentShapeFunctions) {
 TEST(ContactIntegration, RulesTooWeakForTheTracesAreCounted) {
     // ssnv511 cut along grid lines: linear traces except on HEXA8 (bilinear on every facet).
     const auto hexa = contacttest::scene(CellType::HEXA8, 5, ContactAlgorithm::Nitsche, false, {"NOEUD", 0});
+    ASSERT_FALSE(hexa.definition->zones.empty());
+    ASSERT_EQ(hexa.terms->ruleShortfalls().size(), hexa.definition->zones.size());  // one per zone
+    ASSERT_FALSE(hexa.terms->points().empty());
     for (const auto& s : hexa.terms->ruleShortfalls()) {
         EXPECT_GT(s.facets, 0);
         EXPECT_EQ(s.replaced, s.facets);
@@ -245,10 +246,19 @@ TEST(ContactIntegration, RulesTooWeakForTheTracesAreCounted) {
         }
     }
     const auto gauss = contacttest::scene(CellType::HEXA8, 5, ContactAlgorithm::Nitsche, false, {"GAUSS", 1});
-    for (const auto& s : gauss.terms->ruleShortfalls()) EXPECT_EQ(s.replaced, 0);
+    ASSERT_EQ(gauss.terms->ruleShortfalls().size(), gauss.definition->zones.size());
+    for (const auto& s : gauss.terms->ruleShortfalls()) {
+        EXPECT_GT(s.facets, 0);
+        EXPECT_EQ(s.replaced, 0);
+    }
     for (CellType type : {CellType::QUAD4, CellType::TRIA3, CellType::TETRA4}) {
         const auto s = contacttest::scene(type, 5, ContactAlgorithm::Nitsche, false, {"NOEUD", 0});
-        for (const auto& r : s.terms->ruleShortfalls()) EXPECT_EQ(r.replaced, 0) << cellTypeName(type);
+        ASSERT_FALSE(s.definition->zones.empty()) << cellTypeName(type);
+        ASSERT_EQ(s.terms->ruleShortfalls().size(), s.definition->zones.size()) << cellTypeName(type);
+        for (const auto& r : s.terms->ruleShortfalls()) {
+            EXPECT_GT(r.facets, 0) << cellTypeName(type);
+            EXPECT_EQ(r.replaced, 0) << cellTypeName(type);
+        }
     }
 }
 
@@ -300,118 +310,4 @@ TEST(ContactIntegration, DegreeOneRulesAreExactOnLinearFacetTracesOnly) {
         for (int i = 0; i < rule.size(); ++i) q += rule.weights[i] * rule.points[i][0] * rule.points[i][1];
         EXPECT_GT(std::abs(q - 1.0 / 24.0), 1e-3) << family;
     }
-}
-
-namespace {
-
-using namespace ma::test;
-
-const std::string kMesh2d = std::string("--mesh '") + MINIASTER_SHARED_DIR + "/astest/ssnv511a.mmed'";
-const std::string kMesh3d = std::string("--mesh '") + MINIASTER_SOURCE_DIR + "/astest/contact_tetra4_n5.mmed'";
-
-// DEFI_CONTACT on the ssnv511 interfaces with `zone` in every ZONE (2D D_PLAN or 3D), then FIN.
-std::string definition(bool threeD, const std::string& zone) {
-    const std::string para = threeD ? "['X', 'Y', 'Z']" : "['X', 'Y']";
-    return std::string("DEBUT()\n"
-                       "MA = LIRE_MAILLAGE(FORMAT='MED')\n") +
-           (threeD ? "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(GROUP_MA='VOLU', PHENOMENE='MECANIQUE', "
-                     "MODELISATION='3D'))\n"
-                   : "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(GROUP_MA='SURF', PHENOMENE='MECANIQUE', "
-                     "MODELISATION='D_PLAN'))\n") +
-           "LN1 = FORMULE(VALE='Y', NOM_PARA=" + para + ")\n"
-           "LN2 = FORMULE(VALE='X', NOM_PARA=" + para + ")\n"
-           "F1 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN1))\n"
-           "F2 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2), "
-           "JONCTION=_F(FISSURE=F1, POINT=(0, 5" + (threeD ? ", 0" : "") + ")))\n"
-           "F3 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2), "
-           "JONCTION=_F(FISSURE=F1, POINT=(0, -5" + (threeD ? ", 0" : "") + ")))\n"
-           "MX = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(F1, F2, F3), CONTACT='STANDARD')\n"
-           "CT = DEFI_CONTACT(MODELE=MX, FORMULATION='XFEM',\n"
-           "                  ZONE=(_F(FISS_MAIT=F1, " + zone + "), _F(FISS_MAIT=F2), _F(FISS_MAIT=F3, " + zone + ")))\n"
-           "FIN()\n";
-}
-
-}  // namespace
-
-TEST(ContactIntegration, EachZoneIsLoggedWithItsRule) {
-    const auto r = runComm(definition(false, "INTEGRATION='NOEUD'"), kMesh2d);
-    ASSERT_EQ(r.status, 0) << r.output;
-    EXPECT_NE(r.output.find("contact zone on F1: ALGO_CONT='STANDARD'"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("INTEGRATION='NOEUD' (facet vertices)"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("INTEGRATION='GAUSS', ORDRE_INT=6 (SE2 FPG4)"), std::string::npos) << r.output;
-    EXPECT_EQ(r.output.find("ZONE[1]/INTEGRATION ("), std::string::npos) << r.output;  // not in the ignored list
-    const auto n = runComm(definition(false, "INTEGRATION='NCOTES', ORDRE_INT=5"), kMesh2d);
-    ASSERT_EQ(n.status, 0) << n.output;
-    EXPECT_NE(n.output.find("INTEGRATION='NCOTES', ORDRE_INT=5 (SE2 COTES1)"), std::string::npos) << n.output;
-    const auto t = runComm(definition(true, "INTEGRATION='GAUSS', ORDRE_INT=2"), kMesh3d);
-    ASSERT_EQ(t.status, 0) << t.output;
-    EXPECT_NE(t.output.find("INTEGRATION='GAUSS', ORDRE_INT=2 (TR3 FPG3)"), std::string::npos) << t.output;
-    EXPECT_NE(t.output.find("INTEGRATION='GAUSS', ORDRE_INT=6 (TR3 FPG12)"), std::string::npos) << t.output;
-}
-
-TEST(ContactIntegration, OrdersOutOfTheCatalogueRangeAreRefused) {
-    const std::pair<const char*, const char*> cases[] = {{"INTEGRATION='GAUSS', ORDRE_INT=7", "[1, 6]"},
-                                                        {"INTEGRATION='GAUSS', ORDRE_INT=0", "[1, 6]"},
-                                                        {"INTEGRATION='SIMPSON', ORDRE_INT=5", "[1, 4]"},
-                                                        {"INTEGRATION='NCOTES', ORDRE_INT=2", "[3, 8]"},
-                                                        {"INTEGRATION='NCOTES', ORDRE_INT=9", "[3, 8]"}};
-    for (const auto& [zone, range] : cases) {
-        const auto r = runComm(definition(false, zone), kMesh2d);
-        EXPECT_EQ(r.status, 1) << zone << "\n" << r.output;
-        EXPECT_NE(r.output.find("ZONE[1]/ORDRE_INT"), std::string::npos) << r.output;
-        EXPECT_NE(r.output.find(std::string("out of range ") + range), std::string::npos) << r.output;
-    }
-    // NOEUD has no order.
-    const auto r = runComm(definition(false, "INTEGRATION='NOEUD', ORDRE_INT=2"), kMesh2d);
-    EXPECT_EQ(r.status, 1) << r.output;
-    EXPECT_NE(r.output.find("ORDRE_INT"), std::string::npos) << r.output;
-}
-
-TEST(ContactIntegration, SchemesWithoutATriangleRuleAreNotImplementedIn3D) {
-    for (const char* zone : {"INTEGRATION='SIMPSON', ORDRE_INT=2", "INTEGRATION='NCOTES'",
-                             "INTEGRATION='NCOTES', ORDRE_INT=8"}) {
-        const auto r = runComm(definition(true, zone), kMesh3d);
-        EXPECT_EQ(r.status, 1) << zone;
-        EXPECT_FALSE(r.exists("out/t.resu")) << "no result file after an error";
-        EXPECT_NE(r.output.find("DEFI_CONTACT (t.comm, line 10): ZONE[1]/INTEGRATION='"), std::string::npos) << r.output;
-        EXPECT_NE(r.output.find("does not substitute another one"), std::string::npos) << r.output;
-    }
-    // The same schemes are defined on 2D segment facets.
-    const auto r = runComm(definition(false, "INTEGRATION='SIMPSON', ORDRE_INT=2"), kMesh2d);
-    EXPECT_EQ(r.status, 0) << r.output;
-}
-
-namespace {
-
-// contact_compression_3d.comm (exact uniform compression, TEST_TABLEs of the errors to 1e-8 / 1e-10)
-// with `zone` added to every ZONE.
-std::string compression3d(const std::string& zone) {
-    std::ifstream in(std::string(MINIASTER_SOURCE_DIR) + "/astest/contact_compression_3d.comm");
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string comm = text.str();
-    const std::string key = "CONTACT_INIT='OUI')";
-    const auto at = comm.find(key);
-    EXPECT_NE(at, std::string::npos);
-    return comm.replace(at, key.size(), "CONTACT_INIT='OUI', " + zone + ")");
-}
-
-}  // namespace
-
-TEST(ContactIntegration, TheVertexRuleOnHexa8IsReplacedAnnouncedAndExact) {
-    const std::string hexa = std::string("--mesh '") + MINIASTER_SOURCE_DIR + "/astest/contact_hexa8_n5.mmed'";
-    const auto r = runComm(compression3d("INTEGRATION='NOEUD'"), hexa);
-    EXPECT_EQ(r.status, 0) << r.output;  // the round-off TEST_TABLEs pass: the facets took TR3 FPG3
-    EXPECT_NE(r.output.find("<A> <CONTACT_INTEGRATION>"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("FISS"), std::string::npos);
-    EXPECT_NE(r.output.find("with INTEGRATION='GAUSS', ORDRE_INT=1 (TR3 FPG3) instead"), std::string::npos) << r.output;
-    // GAUSS 1 (TR3 FPG3, degree 2) integrates the bilinear traces as asked: exact, no alarm.
-    const auto g = runComm(compression3d("INTEGRATION='GAUSS', ORDRE_INT=1"), hexa);
-    EXPECT_EQ(g.status, 0) << g.output;
-    EXPECT_EQ(g.output.find("CONTACT_INTEGRATION"), std::string::npos);
-    // TETRA4: linear traces, the vertex rule is exact and kept, silently.
-    const std::string tetra = std::string("--mesh '") + MINIASTER_SOURCE_DIR + "/astest/contact_tetra4_n5.mmed'";
-    const auto t = runComm(compression3d("INTEGRATION='NOEUD'"), tetra);
-    EXPECT_EQ(t.status, 0) << t.output;
-    EXPECT_EQ(t.output.find("CONTACT_INTEGRATION"), std::string::npos);
 }

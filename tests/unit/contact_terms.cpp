@@ -110,7 +110,7 @@ TEST(ContactTerms, ActiveSetKeepsCompressionReleasesTension) {
 // set to opposite contributions).
 std::vector<double> cancelling(const Scene& s, double relative) {
     const ContactPoint& cp = s.terms->points()[0];
-    std::vector<double> u(s.problem->u.size(), 0.0);
+    std::vector<double> u(s.problem->state().size(), 0.0);
     std::vector<size_t> used;
     for (size_t i = 0; i < cp.dofs.size() && used.size() < 2; ++i)
         if (std::abs(cp.stress[i] + cp.gamma * cp.gap[i]) > 1e-3 * cp.gamma) used.push_back(i);
@@ -168,12 +168,12 @@ TEST(ContactTerms, PenaltyCarriesOnePressureUnknownPerPoint) {
     Scene s = scene(CellType::QUAD4, 5, ContactAlgorithm::Penalty);
     const int n = static_cast<int>(s.terms->points().size());
     EXPECT_EQ(s.terms->extraUnknowns(), n);
-    EXPECT_EQ(int(s.problem->u.size()), s.problem->numbering().size() + n);
-    expectSymmetric(tangent(*s.terms, s.problem->u));
+    EXPECT_EQ(int(s.problem->state().size()), s.problem->numbering().size() + n);
+    expectSymmetric(tangent(*s.terms, s.problem->state()));
     // Statuses from the gap; a gap that is zero (to round-off) decides nothing: the points keep the
     // status they have.
     const auto before = s.terms->active();
-    auto st = s.terms->updateStatus(s.problem->u);
+    auto st = s.terms->updateStatus(s.problem->state());
     EXPECT_EQ(st.changed, 0);
     EXPECT_EQ(s.terms->active(), before);
 }

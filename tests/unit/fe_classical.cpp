@@ -141,8 +141,8 @@ TEST(FeClassical, ThreadsDoNotChangeABit) {
         conv.maxIterations = 0;
         conv.resiGlobRela = -1.0;
         problem.solveIncrement(0.0, conv);
-        u[threads - 1] = problem.u;
-        problem.internalForces(problem.u, fint[threads - 1]);
+        u[threads - 1] = problem.state();
+        problem.internalForces(problem.state(), fint[threads - 1]);
         sigma[threads - 1] = problem.stressField()->values;
     }
     setWorkerCount(0);

@@ -190,7 +190,7 @@ TEST(FeAdditionalTerms, SpringsJoinMatrixAndResidual) {
     conv.resiGlobRela = 1e-12;
     EXPECT_TRUE(sprung.solveIncrement(0.0, conv).converged);
     double scale = 0;
-    for (double v : pinned.u) scale = std::max(scale, std::abs(v));
+    for (double v : pinned.state()) scale = std::max(scale, std::abs(v));
     ASSERT_GT(scale, 0.0);
-    for (size_t i = 0; i < pinned.u.size(); ++i) EXPECT_NEAR(pinned.u[i], sprung.u[i], 1e-11 * scale) << i;
+    for (size_t i = 0; i < pinned.state().size(); ++i) EXPECT_NEAR(pinned.state()[i], sprung.state()[i], 1e-11 * scale) << i;
 }

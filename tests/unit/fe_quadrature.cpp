@@ -6,7 +6,7 @@
 
 #include "core/Error.hpp"
 #include "fe/Quadrature.hpp"
-#include "fe/ShapeFunctions.hpp"
+#include "mesh/ShapeFunctions.hpp"
 
 using namespace ma;
 

@@ -8,12 +8,14 @@
 #include <fstream>
 #include <regex>
 
+#include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "core/Units.hpp"
 #include "fields/Fields.hpp"
 #include "med_io/MedReader.hpp"
 #include "med_test_support.hpp"
+#include "parser/Catalog.hpp"
 #include "parser/CommandRegistry.hpp"
 
 using namespace ma;
@@ -36,7 +38,7 @@ protected:
         ctx.command = command;
         ctx.resultName = resultName;
         ctx.units = &units;
-        auto out = (*fn)(kw, ctx);
+        auto out = (*fn)(validateKeywords(command, kw), ctx);
         if (out) out->name = resultName;
         return out;
     }
@@ -157,7 +159,7 @@ TEST_F(MedCommands, RoundTripGivesTheSameFileForMdump4AndMeshio) {
         call("IMPR_RESU", kw);
         const std::string written = dir + "/" + file + ".rmed";
         ASSERT_TRUE(std::filesystem::exists(written));
-        EXPECT_FALSE(std::filesystem::exists(written + ".tmp" + std::to_string(::getpid())));
+        EXPECT_FALSE(std::filesystem::exists(temporaryPathFor(written)));
         // mdump4: nodes, names, cells, numbers, families and groups identical to the original.
         EXPECT_EQ(mdumpBody(written), mdumpBody(original)) << file;
         // meshio: same nodes, cells and groups.

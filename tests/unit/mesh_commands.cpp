@@ -9,6 +9,7 @@
 #include "mesh/MeshQueries.hpp"
 #include "mesh/SkinOrientation.hpp"
 #include "med_test_support.hpp"
+#include "parser/Catalog.hpp"
 #include "parser/CommandRegistry.hpp"
 
 using namespace ma;
@@ -27,7 +28,7 @@ ConceptPtr call(const std::string& command, const KeywordSet& kw, ConceptPtr reu
     CommandContext ctx;
     ctx.command = command;
     ctx.reused = std::move(reused);
-    return (*fn)(kw, ctx);
+    return (*fn)(validateKeywords(command, kw), ctx);
 }
 
 KeywordSet withMesh(const std::shared_ptr<Mesh>& m) {

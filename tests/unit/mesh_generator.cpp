@@ -11,7 +11,7 @@
 #include "med_io/MedReader.hpp"
 #include "med_io/MedWriter.hpp"
 #include "mesh/MeshQueries.hpp"
-#include "mesh/Ssnv511Mesh.hpp"
+#include "scenes/Ssnv511Mesh.hpp"
 #include "med_test_support.hpp"
 
 using namespace ma;

@@ -9,6 +9,7 @@
 #include "core/Function.hpp"
 #include "core/Messages.hpp"
 #include "core/Units.hpp"
+#include "parser/Catalog.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "post/TablePrinter.hpp"
 #include "post/TableOperations.hpp"
@@ -80,7 +81,7 @@ ConceptPtr runCommand(const char* name, KeywordSet kw, ConceptPtr reused = nullp
     ctx.units = units;
     const CommandFunction* fn = CommandRegistry::instance().find(name);
     EXPECT_NE(fn, nullptr);
-    return (*fn)(kw, ctx);
+    return (*fn)(validateKeywords(name, kw), ctx);
 }
 
 class CalcTableTest : public ::testing::Test {

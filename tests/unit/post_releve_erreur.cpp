@@ -11,6 +11,7 @@
 #include "fe/Material.hpp"
 #include "fe/Model.hpp"
 #include "fields/Fields.hpp"
+#include "parser/Catalog.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "post/ErrorNorms.hpp"
 #include "post/NodalExtraction.hpp"
@@ -130,7 +131,7 @@ ConceptPtr runCommand(const char* name, const KeywordSet& kw, const std::string&
     ctx.resultName = resultName;
     const CommandFunction* fn = CommandRegistry::instance().find(name);
     EXPECT_NE(fn, nullptr);
-    return (*fn)(kw, ctx);
+    return (*fn)(validateKeywords(name, kw), ctx);
 }
 
 double pressure(double x) { return x < 0 ? 1e6 : 2e6; }

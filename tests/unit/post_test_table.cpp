@@ -6,6 +6,7 @@
 
 #include "core/Messages.hpp"
 #include "core/TestReport.hpp"
+#include "parser/Catalog.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "post/TestCheck.hpp"
 
@@ -39,7 +40,7 @@ protected:
         ctx.line = 42;
         const CommandFunction* fn = CommandRegistry::instance().find("TEST_TABLE");
         ASSERT_NE(fn, nullptr);
-        (*fn)(kw, ctx);
+        (*fn)(validateKeywords("TEST_TABLE", kw), ctx);
     }
 
     // The result text with each line's trailing blanks removed (the spec's examples (a)-(d) are

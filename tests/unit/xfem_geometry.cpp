@@ -8,7 +8,7 @@
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
-#include "fe/ShapeFunctions.hpp"
+#include "mesh/ShapeFunctions.hpp"
 #include "xfem/CellGeometry.hpp"
 #include "xfem_test_meshes.hpp"
 

@@ -7,7 +7,7 @@
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
-#include "fe/ShapeFunctions.hpp"
+#include "mesh/ShapeFunctions.hpp"
 #include "xfem/Visualisation.hpp"
 #include "xfem_test_meshes.hpp"
 

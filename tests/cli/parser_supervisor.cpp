@@ -152,16 +152,23 @@ TEST(ParserSupervisor, CodeAsterCommandsModule) {
     EXPECT_NE(r.output.find("--- DIAGNOSTIC JOB : OK"), std::string::npos);
 }
 
-TEST(ParserSupervisor, ErrorRemovesTheResultOfAnEarlierRun) {
+// A failed run without result lines leaves the .resu of an earlier run as it was (the run cannot
+// tell it from somebody else's file) and says so in its .mess.
+TEST(ParserSupervisor, ErrorLeavesTheResultOfAnEarlierRunAsItWas) {
     auto dir = freshDir();
     writeText(dir / "t.comm", "DEBUT()\nFIN()\n");
     auto first = runMiniaster(dir, "t.comm");
     ASSERT_EQ(first.status, 0) << first.output;
     ASSERT_TRUE(first.exists("out/t.resu"));
+    const std::string earlier = first.file("out/t.resu");
     writeText(dir / "t.comm", "DEBUT()\nx = 1/0\n");
     auto second = runMiniaster(dir, "t.comm");
-    expectError(second, "<F> <ERROR> (t.comm, line 2): error in the Python code of the command file: ZeroDivisionError: "
-                        "division by zero");
+    EXPECT_EQ(second.status, 1);
+    const std::string paragraph = "<F> <ERROR> (t.comm, line 2): error in the Python code of the command file: "
+                                  "ZeroDivisionError: division by zero";
+    EXPECT_NE(second.file("out/t.mess").find(paragraph), std::string::npos) << second.output;
+    EXPECT_EQ(second.file("out/t.resu"), earlier);
+    EXPECT_NE(second.file("out/t.mess").find("is not from this run and is left as it was"), std::string::npos);
 }
 
 TEST(ParserSupervisor, Latin1CommandFileIsRead) {

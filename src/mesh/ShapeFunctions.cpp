@@ -1,9 +1,9 @@
-#include "fe/ShapeFunctions.hpp"
+#include "mesh/ShapeFunctions.hpp"
 
-#include <Eigen/Dense>
 #include <cmath>
 
 #include "core/Error.hpp"
+#include "mesh/ElementGeometry.hpp"
 
 namespace ma {
 
@@ -143,25 +143,17 @@ bool mapToReference(CellType type, std::span<const std::array<double, 3>> nodes,
     std::array<double, 24> dN{};
     for (int it = 0; it < 50; ++it) {
         const auto cur = mapToPhysical(type, nodes, xi);
-        Eigen::Matrix3d J = Eigen::Matrix3d::Zero();  // J(i, j) = dx_i / dxi_j
         shapeDerivatives(type, xi, dN);
-        for (int a = 0; a < n; ++a)
-            for (int i = 0; i < d; ++i)
-                for (int j = 0; j < d; ++j) J(i, j) += nodes[a][i] * dN[3 * a + j];
-        Eigen::Vector3d r(x[0] - cur[0], x[1] - cur[1], d == 3 ? x[2] - cur[2] : 0.0);
-        if (r.norm() <= 1e-15 * size) return true;
-        Eigen::Vector3d step;
-        if (d == 2) {
-            Eigen::Matrix2d J2 = J.topLeftCorner<2, 2>();
-            if (std::abs(J2.determinant()) == 0.0) return false;
-            Eigen::Vector2d s = J2.inverse() * r.head<2>();
-            step = {s[0], s[1], 0};
-        } else {
-            if (std::abs(J.determinant()) == 0.0) return false;
-            step = J.inverse() * r;
-        }
+        double J[3][3] = {}, inv[3][3] = {};
+        jacobian(d, d, n, [&](int a) -> const Vec3& { return nodes[a]; }, [&](int a, int j) { return dN[3 * a + j]; }, J);
+        const Vec3 r{x[0] - cur[0], x[1] - cur[1], d == 3 ? x[2] - cur[2] : 0.0};
+        if (norm(r) <= 1e-15 * size) return true;
+        if (invertJacobian(d, J, inv) == 0.0) return false;
+        Vec3 step{};  // J^-1 r
+        for (int i = 0; i < d; ++i)
+            for (int j = 0; j < d; ++j) step[i] += inv[i][j] * r[j];
         for (int j = 0; j < d; ++j) xi[j] += step[j];
-        if (step.norm() <= 1e-15) return true;
+        if (norm(step) <= 1e-15) return true;
     }
     return false;
 }

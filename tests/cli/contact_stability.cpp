@@ -15,6 +15,7 @@
 #include <string>
 
 #include "parser_run.hpp"
+#include "ssnv511_scene.hpp"
 
 using namespace ma::test;
 
@@ -22,17 +23,7 @@ namespace {
 
 // ssnv511e-type compression (pressures 1e6 / 2e6, rollers), DEFI_CONTACT on the three interfaces.
 std::string compression(const std::string& zone) {
-    return "DEBUT()\n"
-           "MA = LIRE_MAILLAGE(FORMAT='MED')\n"
-           "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(GROUP_MA=('SURF', 'LH', 'LD'), PHENOMENE='MECANIQUE', "
-           "MODELISATION='D_PLAN'))\n"
-           "LN1 = FORMULE(VALE='Y', NOM_PARA=['X', 'Y'])\n"
-           "LN2 = FORMULE(VALE='X', NOM_PARA=['X', 'Y'])\n"
-           "F1 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN1))\n"
-           "F2 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2), "
-           "JONCTION=_F(FISSURE=F1, POINT=(0, 5)))\n"
-           "F3 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2), "
-           "JONCTION=_F(FISSURE=F1, POINT=(0, -5)))\n"
+    return ssnv511Preamble({.groups = "('SURF', 'LH', 'LD')"}) +
            "MX = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(F1, F2, F3), CONTACT='STANDARD')\n"
            "CT = DEFI_CONTACT(MODELE=MX, FORMULATION='XFEM', ZONE=[_F(FISS_MAIT=F, CONTACT_INIT='OUI', " +
            zone +

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "parser_run.hpp"
+#include "ssnv511_scene.hpp"
 
 using namespace ma::test;
 
@@ -18,16 +19,7 @@ const std::string kMesh = std::string("--mesh '") + MINIASTER_SHARED_DIR + "/ast
 
 // ssnv511a's rigid scene with the given SOLVEUR keywords; POST_ERREUR against the exact field.
 std::string rigid(const std::string& solveur) {
-    return "DEBUT()\n"
-           "MA = LIRE_MAILLAGE(FORMAT='MED')\n"
-           "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(GROUP_MA='SURF', PHENOMENE='MECANIQUE', MODELISATION='D_PLAN'))\n"
-           "LN1 = FORMULE(VALE='Y', NOM_PARA=['X', 'Y'])\n"
-           "LN2 = FORMULE(VALE='X', NOM_PARA=['X', 'Y'])\n"
-           "F1 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN1))\n"
-           "F2 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2), "
-           "JONCTION=_F(FISSURE=F1, POINT=(0, 5)))\n"
-           "F3 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2), "
-           "JONCTION=_F(FISSURE=F1, POINT=(0, -5)))\n"
+    return ssnv511Preamble() +
            "MX = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(F1, F2, F3))\n"
            "MAT = DEFI_MATERIAU(ELAS=_F(E=1.0e8, NU=0.3))\n"
            "CM = AFFE_MATERIAU(MAILLAGE=MA, AFFE=_F(TOUT='OUI', MATER=MAT))\n"

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "parser_run.hpp"
+#include "ssnv511_scene.hpp"
 
 using namespace ma::test;
 
@@ -17,17 +18,7 @@ namespace {
 const std::string kMesh = std::string("--mesh '") + MINIASTER_SHARED_DIR + "/astest/ssnv511a.mmed'";
 
 std::string scene(const std::string& contact) {
-    return "DEBUT()\n"
-           "MA = LIRE_MAILLAGE(FORMAT='MED')\n"
-           "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(GROUP_MA='SURF', PHENOMENE='MECANIQUE', MODELISATION='D_PLAN'))\n"
-           "LN1 = FORMULE(VALE='Y', NOM_PARA=['X', 'Y'])\n"
-           "LN2 = FORMULE(VALE='X', NOM_PARA=['X', 'Y'])\n"
-           "F1 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN1))\n"
-           "F2 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2), "
-           "JONCTION=_F(FISSURE=F1, POINT=(0, 5)))\n"
-           "F3 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2), "
-           "JONCTION=_F(FISSURE=F1, POINT=(0, -5)))\n" +
-           contact;
+    return ssnv511Preamble() + contact;
 }
 
 const std::string kXfemContact = "MX = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(F1, F2, F3), CONTACT='OUI')\n";

@@ -13,7 +13,7 @@
 
 #include "med_io/MedWriter.hpp"
 #include "med_test_support.hpp"
-#include "mesh/Ssnv511Mesh.hpp"
+#include "scenes/Ssnv511Mesh.hpp"
 
 namespace fs = std::filesystem;
 using ma::test::runCommand;

@@ -1,4 +1,4 @@
-#include "mesh/Ssnv511Mesh.hpp"
+#include "scenes/Ssnv511Mesh.hpp"
 
 #include <fmt/format.h>
 

@@ -14,6 +14,7 @@
 #include "fe/Model.hpp"
 #include "fields/Fields.hpp"
 #include "mesh/Mesh.hpp"
+#include "parser/Catalog.hpp"
 #include "parser/CommandRegistry.hpp"
 
 namespace fetest {
@@ -52,7 +53,7 @@ inline ConceptPtr run(const std::string& command, const KeywordSet& kw, const st
     CommandContext ctx;
     ctx.command = command;
     ctx.resultName = resultName;
-    auto out = (*fn)(kw, ctx);
+    auto out = (*fn)(validateKeywords(command, kw), ctx);
     if (out) out->name = resultName;
     return out;
 }

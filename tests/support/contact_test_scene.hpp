@@ -60,7 +60,7 @@ inline Scene scene(CellType type, int n, ContactAlgorithm algo, bool bilateral =
 
 // u = eps x on the standard dofs (no jump anywhere), Heaviside dofs 0.
 inline std::vector<double> uniformStrain(const Scene& s, double eps) {
-    std::vector<double> u(s.problem->u.size(), 0.0);
+    std::vector<double> u(s.problem->state().size(), 0.0);
     const auto& num = s.problem->numbering();
     const Mesh& mesh = *s.model->mesh;
     for (int node = 0; node < mesh.nodeCount(); ++node)

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "parser_run.hpp"
+#include "ssnv511_scene.hpp"
 
 using namespace ma::test;
 
@@ -17,22 +18,13 @@ namespace {
 const std::string kMesh = std::string("--mesh '") + MINIASTER_SHARED_DIR + "/astest/ssnv511a.mmed'";
 
 std::string head(const std::string& ln1) {
-    return "DEBUT()\n"
-           "MA = LIRE_MAILLAGE(FORMAT='MED')\n"
-           "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(GROUP_MA='SURF', PHENOMENE='MECANIQUE', MODELISATION='D_PLAN'))\n"
-           "LN1 = FORMULE(VALE='" + ln1 + "', NOM_PARA=['X', 'Y'])\n"
-           "LN2 = FORMULE(VALE='X', NOM_PARA=['X', 'Y'])\n"
-           "FISS1 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN1))\n";
+    return ssnv511Preamble({.ln1 = ln1, .prefix = "FISS", .interfaces = 1});
 }
 
 }  // namespace
 
 TEST(XfemCommands, CountsInTheLog) {
-    const auto r = runComm(head("Y") +
-                               "FISS2 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', "
-                               "DEFI_FISS=_F(FONC_LN=LN2), JONCTION=_F(FISSURE=FISS1, POINT=(0, 5)))\n"
-                               "FISS3 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', "
-                               "DEFI_FISS=_F(FONC_LN=LN2), JONCTION=_F(FISSURE=FISS1, POINT=(0, -5)))\n"
+    const auto r = runComm(ssnv511Preamble({.prefix = "FISS"}) +
                                "MX = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(FISS1, FISS2, FISS3))\n"
                                "MV = POST_MAIL_XFEM(MODELE=MX)\n"
                                "FIN()\n",
@@ -91,17 +83,7 @@ TEST(XfemCommands, OutsideAndUnsupported) {
 // from the catalogue or from `--subcell-quadrature` (the skin keeps the catalogue's rule).
 TEST(XfemCommands, SubcellQuadratureInTheLog) {
     const std::string comm =
-        "DEBUT()\n"
-        "MA = LIRE_MAILLAGE(FORMAT='MED')\n"
-        "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(GROUP_MA=('SURF', 'LH', 'LD'), PHENOMENE='MECANIQUE', "
-        "MODELISATION='D_PLAN'))\n"
-        "LN1 = FORMULE(VALE='Y', NOM_PARA=['X', 'Y'])\n"
-        "LN2 = FORMULE(VALE='X', NOM_PARA=['X', 'Y'])\n"
-        "FISS1 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN1))\n"
-        "FISS2 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', "
-        "DEFI_FISS=_F(FONC_LN=LN2), JONCTION=_F(FISSURE=FISS1, POINT=(0, 5)))\n"
-        "FISS3 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', "
-        "DEFI_FISS=_F(FONC_LN=LN2), JONCTION=_F(FISSURE=FISS1, POINT=(0, -5)))\n"
+        ssnv511Preamble({.groups = "('SURF', 'LH', 'LD')", .prefix = "FISS"}) +
         "MX = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(FISS1, FISS2, FISS3))\n"
         "FIN()\n";
     // Sub-cells per kind, read from the catalogue run and checked against the rule sizes.

@@ -1,0 +1,32 @@
+#pragma once
+// The run guard: what stops a run from outside the command file, and how it ends.
+// - `P time_limit` (CPU seconds of the process, as code_aster counts it), `P memory_limit`
+//   (megabytes of resident memory), SIGTERM, SIGINT, SIGHUP and SIGXCPU: a watchdog thread ends
+//   the run through the stop handler (an <F> paragraph naming the running command, the .mess and
+//   the TEST lines so far kept, temporaries removed, exit 1), whatever the main thread is doing.
+// - Fatal signals (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT): the crash handler appends an
+//   <F>_ABNORMAL_ABORT diagnostic to the streamed .mess and dies with the signal.
+// - SIGXFSZ and SIGPIPE are ignored: a write beyond the file size limit or to a closed pipe fails
+//   (and is reported) instead of killing the run.
+#include <optional>
+#include <string>
+
+namespace ma {
+
+struct RunLimits {
+    std::optional<double> timeLimitSeconds;
+    std::optional<double> memoryLimitMb;
+};
+
+// Called on the watchdog thread; never returns. `kind` is TIME_LIMIT, MEMORY_LIMIT or INTERRUPTED.
+using StopHandler = void (*)(const std::string& kind, const std::string& cause);
+
+// Starts the watchdog (after the interpreter, whose own SIGINT handler it replaces).
+void startRunGuard(const RunLimits& limits, StopHandler stop);
+// The run is ending normally: the watchdog stops and the signals get their default action back.
+void stopRunGuard();
+
+// Crash handler (see above); `messFd` is the streamed .mess, -1 when it is not open.
+void installCrashHandler(int messFd);
+
+}  // namespace ma

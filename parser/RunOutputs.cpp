@@ -1,0 +1,250 @@
+#include "parser/RunOutputs.hpp"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <unistd.h>
+#include <zlib.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <set>
+
+#include "core/AtomicFile.hpp"
+#include "core/Error.hpp"
+#include "core/Messages.hpp"
+#include "core/TestReport.hpp"
+#include "parser/RunState.hpp"
+
+namespace fs = std::filesystem;
+
+namespace ma {
+
+namespace {
+
+// ---- gzip (.export flag C)
+
+std::string stripGz(const fs::path& p) {
+    std::string name = p.filename().string();
+    if (name.size() > 3 && name.ends_with(".gz")) name.resize(name.size() - 3);
+    return name;
+}
+
+void gunzipTo(const std::string& source, const std::string& target) {
+    gzFile in = gzopen(source.c_str(), "rb");
+    if (!in) throw UserError(systemError("cannot read the compressed data file", source, errno));
+    const int fd = ::open(target.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0) {
+        gzclose_r(in);
+        throw UserError(systemError("cannot create", target, errno));
+    }
+    std::string failure;
+    if (gzdirect(in)) failure = "the data file " + source + " (flag C) is not gzip-compressed";
+    char buffer[1 << 16];
+    for (int n = 0; failure.empty() && (n = gzread(in, buffer, sizeof(buffer))) != 0;) {
+        if (n < 0) {
+            failure = "the compressed data file " + source + " is damaged or truncated (gzip)";
+        } else if (::write(fd, buffer, size_t(n)) != n) {
+            failure = systemError("cannot write", target, errno);
+        }
+    }
+    if (failure.empty() && gzclose_r(in) != Z_OK) failure = "the compressed data file " + source + " is damaged (gzip)";
+    ::close(fd);
+    if (!failure.empty()) throw UserError(failure);
+}
+
+// Compresses `source` (a file) or `text` into `target` atomically.
+void gzipTo(const std::string& target, const std::string* source, const std::string* text) {
+    AtomicPath out(target);
+    gzFile gz = gzopen(out.tempPath().c_str(), "wb");
+    if (!gz) throw UserError(systemError("cannot create", out.tempPath(), errno));
+    bool ok = true;
+    if (text) {
+        ok = text->empty() || gzwrite(gz, text->data(), unsigned(text->size())) == int(text->size());
+    } else {
+        FILE* in = std::fopen(source->c_str(), "rb");
+        ok = in != nullptr;
+        char buffer[1 << 16];
+        for (size_t n; ok && in && (n = std::fread(buffer, 1, sizeof(buffer), in)) > 0;)
+            ok = gzwrite(gz, buffer, unsigned(n)) == int(n);
+        if (in) std::fclose(in);
+    }
+    const int error = errno;
+    if (gzclose_w(gz) != Z_OK || !ok) throw UserError(systemError("cannot write", out.tempPath(), error ? error : EIO));
+    out.commit();
+}
+
+std::string& scratchFolder(RunOutputs& out) {
+    if (out.scratch.empty()) {
+        std::error_code ec;
+        fs::create_directories(out.outDir, ec);
+        const std::string folder = temporaryPathFor((fs::path(out.outDir) / "export-files").string());
+        registerTemporary(folder);
+        if (!fs::create_directory(folder, ec) || ec)
+            throw UserError("cannot create the scratch folder " + folder + ": " + ec.message());
+        out.scratch = folder;
+    }
+    return out.scratch;
+}
+
+// ---- checks
+
+// The folder exists (created if needed) and a file can be created in it.
+void checkWritableFolder(const fs::path& folder, const std::string& role) {
+    std::error_code ec;
+    if (fs::exists(folder, ec) && !fs::is_directory(folder, ec))
+        throw UserError(fmt::format("the {} {} is not a folder (a file of that name exists)", role, folder.string()));
+    fs::create_directories(folder, ec);
+    if (ec) throw UserError(fmt::format("cannot create the {} {}: {}", role, folder.string(), ec.message()));
+    const std::string probe = temporaryPathFor((folder / "write-check").string());
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    if (fd < 0) throw UserError(systemError(fmt::format("cannot write in the {}", role), folder.string(), errno));
+    ::close(fd);
+    ::unlink(probe.c_str());
+}
+
+void writeResultFile(const RunOutputs& out, const std::string& text) {
+    if (out.resuCompressed) gzipTo(out.resu, nullptr, &text);
+    else writeFileAtomically(out.resu, text);
+}
+
+void reportOnStderr(const std::string& text) { std::fprintf(stderr, "miniaster: %s\n", text.c_str()); }
+
+}  // namespace
+
+void applyExport(const ExportFile& exportFile, RunState& run, RunOutputs& out) {
+    for (const auto& e : exportFile.entries) {
+        const std::string path = e.path.string();
+        if (e.directory) {
+            if (e.result && !out.resultFolders.empty())
+                throw UserError(exportFile.where(e) + ": a second result directory; miniaster writes the units "
+                                                      "without an F line into one (the first R line)");
+            if (e.result) out.resultFolders.push_back(path);
+            continue;
+        }
+        if (e.data) {
+            std::string input = path;
+            if (e.compressed) {
+                input = (fs::path(scratchFolder(out)) / stripGz(e.path)).string();
+                gunzipTo(path, input);
+            }
+            if (e.type == "comm") run.commFile = input;
+            else if (e.unit > 0) run.units.setInput(e.unit, input);
+        }
+        if (!e.result) continue;
+        out.resultFiles.push_back(path);
+        if (e.type == "mess") {
+            if (e.compressed)
+                throw UserError(exportFile.where(e) + ": the message log is written as the run goes: it cannot be "
+                                                      "compressed (flag C)");
+            out.mess = path;
+        } else if (e.type == "resu") {
+            out.resu = path;
+            out.resuCompressed = e.compressed;
+        } else if (e.unit > 0 && e.compressed) {
+            const std::string plain = (fs::path(scratchFolder(out)) / stripGz(e.path)).string();
+            run.units.setOutput(e.unit, plain);
+            out.compressedResults.push_back({plain, path});
+        } else if (e.unit > 0) {
+            run.units.setOutput(e.unit, path);
+        }
+    }
+}
+
+void prepareOutputs(RunOutputs& out) {
+    std::set<fs::path> folders;
+    checkWritableFolder(out.outDir, "output folder");
+    folders.insert(out.outDir);
+    for (const auto& f : out.resultFolders) {
+        checkWritableFolder(f, "result directory");
+        folders.insert(f);
+    }
+    std::vector<std::string> files = out.resultFiles;
+    files.push_back(out.mess);
+    files.push_back(out.resu);
+    for (const auto& file : files) {
+        std::error_code ec;
+        if (fs::is_directory(file, ec)) throw UserError("the result file " + file + " is a folder");
+        const fs::path folder = fs::path(file).parent_path();
+        if (folders.insert(folder).second) checkWritableFolder(folder, "folder of the result file " + file + ",");
+    }
+    for (const auto& folder : folders)
+        for (const auto& name : removeStaleTemporaries(folder.string()))
+            msg().info(fmt::format("  removed {} (a temporary file of a run that no longer exists)",
+                                   (folder / name).string()));
+}
+
+void openMessageLog(RunOutputs& out) {
+    out.messFd = ::open(out.mess.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (out.messFd < 0) throw UserError(systemError("cannot create the message log", out.mess, errno));
+    msg().streamTo(out.messFd);
+}
+
+bool finishOutputs(RunOutputs& out, bool failed, bool checkOnly) {
+    bool ok = true;
+    const std::string& text = msg().resuText();
+    std::error_code ec;
+    if (msg().streamError()) {
+        // The log is incomplete: a result file beside it would look like a finished run.
+        reportOnStderr(systemError("cannot write the message log", out.mess, msg().streamError()) +
+                       "; no result file written");
+        ok = false;
+    } else if (!checkOnly && (!failed || !text.empty())) {
+        try {
+            writeResultFile(out, text);
+        } catch (const UserError& e) {
+            msg().info(std::string("\n<F> <ERROR> ") + e.what());
+            reportOnStderr(e.what());
+            ok = false;
+        }
+    } else if (failed && fs::exists(out.resu, ec)) {
+        msg().info("  (no result file written: " + out.resu + " is not from this run and is left as it was)");
+    }
+    for (const auto& c : out.compressedResults) {
+        if (!fs::exists(c.plain, ec)) continue;
+        try {
+            gzipTo(c.final, &c.plain, nullptr);
+        } catch (const UserError& e) {
+            msg().info(std::string("\n<F> <ERROR> ") + e.what());
+            reportOnStderr(e.what());
+            ok = false;
+        }
+    }
+    if (!out.scratch.empty()) {
+        fs::remove_all(out.scratch, ec);
+        forgetTemporary(out.scratch);
+    }
+    if (out.messFd >= 0) {
+        if (!msg().streamError() && ::fsync(out.messFd) != 0 && errno != EINVAL) ok = false;
+        if (::close(out.messFd) != 0) ok = false;
+        out.messFd = -1;
+        if (ok && msg().streamError()) {
+            reportOnStderr(systemError("cannot write the message log", out.mess, msg().streamError()));
+            ok = false;
+        }
+    }
+    return ok;
+}
+
+void stopRunNow(RunOutputs& out, const std::string& paragraph, const std::string& diagnostic) {
+    msg().freeze();
+    msg().info("\n" + paragraph + "\n");
+    const auto& tests = testReport();
+    if (!tests.empty()) msg().info(fmt::format("\n{}", tests.summary()));
+    const std::string rule(60, '-');
+    msg().info(fmt::format("\n{}\n--- DIAGNOSTIC JOB : {}\n{}", rule, diagnostic, rule));
+    if (!msg().resuText().empty() && !msg().streamError()) {
+        try {
+            writeResultFile(out, msg().resuText());
+        } catch (const UserError& e) {
+            reportOnStderr(e.what());
+        }
+    }
+    removeLiveTemporaries();
+    if (out.messFd >= 0) ::fsync(out.messFd);
+    std::fflush(stdout);
+    ::_exit(1);
+}
+
+}  // namespace ma

@@ -1,0 +1,56 @@
+#include "fe/Discretisation.hpp"
+
+#include "fe/ElasticityKernels.hpp"
+#include "fe/Enrichment.hpp"
+#include "fe/Quadrature.hpp"
+
+namespace ma {
+
+Discretisation::Discretisation(std::shared_ptr<const Model> model, std::shared_ptr<const MaterialField> material,
+                               const ExtraUnknowns& extra)
+    : model_(std::move(model)), material_(std::move(material)), numbering_(*model_, extra) {
+    const Mesh& mesh = *model_->mesh;
+    attached_.assign(numbering_.size(), 0);
+    std::vector<int> dofs;
+    const bool enriched = model_->enrichment != nullptr;
+    if (enriched) enrichedIndex_.assign(model_->elements.size(), -1);
+    LawCache laws(*material_);
+    for (size_t e = 0; e < model_->elements.size(); ++e) {
+        const auto& element = model_->elements[e];
+        (void)laws.of(element);
+        if (enriched && model_->enrichment->isEnriched(element.cell)) {
+            enrichedIndex_[e] = static_cast<int>(enrichedIntegrations_.size());
+            model_->enrichment->integration(element.cell, enrichedIntegrations_.emplace_back());
+            markAttached(enrichedIntegrations_.back(), dofs);
+        } else {
+            for (int node : mesh.cellNodes(element.cell))
+                for (int c = 0; c < numbering_.dim(); ++c) attached_[numbering_.dof(node, 0, c)] = 1;
+        }
+    }
+}
+
+// An enriched slot is used when its psi is not zero at one point at least.
+void Discretisation::markAttached(const ElementIntegration& x, std::vector<int>& dofs) {
+    localDofs(*model_->mesh, numbering_, x, dofs);
+    int i = 0;
+    for (int a = 0; a < x.nodeCount; ++a)
+        for (int k = 0; k < x.slots[a]; ++k) {
+            bool used = k == 0;
+            for (size_t p = 0; p < x.refPoints.size() && !used; ++p) used = x.multiplier(int(p), a, k) != 0.0;
+            for (int c = 0; c < numbering_.dim(); ++c, ++i)
+                if (used) attached_[dofs[i]] = 1;
+        }
+}
+
+const ElementIntegration& Discretisation::integrationOf(size_t e, ElementIntegration& scratch) const {
+    if (isEnriched(e)) return enrichedIntegrations_[enrichedIndex_[e]];
+    classicalIntegration(*model_->mesh, model_->elements[e].cell, false, scratch);
+    return scratch;
+}
+
+size_t Discretisation::pointCount(size_t e) const {
+    if (isEnriched(e)) return enrichedIntegrations_[enrichedIndex_[e]].refPoints.size();
+    return stiffnessRule(model_->mesh->cellTypes[model_->elements[e].cell]).points.size();
+}
+
+}  // namespace ma

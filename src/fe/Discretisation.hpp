@@ -1,0 +1,58 @@
+#pragma once
+// The discrete space of a mechanical problem: the model's elements, the material of each, the
+// unknowns (DofNumbering), the X-FEM description of every enriched element (computed once) and
+// which dofs some element really uses. Built once per problem; every assembly, force and field
+// loop reads it.
+#include <memory>
+#include <vector>
+
+#include "fe/DofNumbering.hpp"
+#include "fe/ElementIntegration.hpp"
+#include "fe/ElementLoop.hpp"
+#include "fe/Material.hpp"
+#include "fe/Model.hpp"
+
+namespace ma {
+
+class Discretisation {
+public:
+    // Checks every element's material (IsotropicLaw::from) and marks the dofs elements use.
+    Discretisation(std::shared_ptr<const Model> model, std::shared_ptr<const MaterialField> material,
+                   const ExtraUnknowns& extra);
+
+    const Model& model() const { return *model_; }
+    const Mesh& mesh() const { return *model_->mesh; }
+    const MaterialField& material() const { return *material_; }
+    const DofNumbering& numbering() const { return numbering_; }
+    int dim() const { return numbering_.dim(); }
+    size_t elementCount() const { return model_->elements.size(); }
+
+    bool isEnriched(size_t e) const { return !enrichedIndex_.empty() && enrichedIndex_[e] >= 0; }
+    // The X-FEM description of element e when it is enriched, else its classical one (in scratch).
+    const ElementIntegration& integrationOf(size_t e, ElementIntegration& scratch) const;
+    // Integration points of element e.
+    size_t pointCount(size_t e) const;
+    // True when some element uses dof d (psi not zero at one of its points at least).
+    bool attached(int d) const { return attached_[d] != 0; }
+
+    // Element e on its fastest path (visitVolumeElement): onClassical(ref, g) or onGeneral(ei, geo).
+    template <class OnClassical, class OnGeneral>
+    void visit(size_t e, GeneralElementScratch& scratch, OnClassical&& onClassical, OnGeneral&& onGeneral) const {
+        visitVolumeElement(
+            mesh(), dim(), model_->elements[e].cell, isEnriched(e), scratch,
+            [&](ElementIntegration& s) -> const ElementIntegration& { return integrationOf(e, s); }, onClassical,
+            onGeneral);
+    }
+
+private:
+    void markAttached(const ElementIntegration& ei, std::vector<int>& dofs);
+
+    std::shared_ptr<const Model> model_;
+    std::shared_ptr<const MaterialField> material_;
+    DofNumbering numbering_;
+    std::vector<ElementIntegration> enrichedIntegrations_;  // X-FEM elements only
+    std::vector<int> enrichedIndex_;  // element -> index in enrichedIntegrations_, -1 (empty: no X-FEM)
+    std::vector<char> attached_;      // per dof: used by some element
+};
+
+}  // namespace ma

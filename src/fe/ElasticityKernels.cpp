@@ -1,0 +1,142 @@
+#include "fe/ElasticityKernels.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "core/Error.hpp"
+
+namespace ma {
+
+IsotropicLaw IsotropicLaw::from(const Material& m, Modelisation modelisation, const std::string& where) {
+    IsotropicLaw law;
+    const double E = m.E, nu = m.nu;
+    law.mu = E / (2.0 * (1.0 + nu));
+    if (modelisation == Modelisation::C_PLAN) {
+        law.lambdaEff = E * nu / (1.0 - nu * nu);
+        law.lambdaZ = 0.0;
+        return law;
+    }
+    if (nu >= 0.5)
+        throw UserError(fmt::format("material {} has NU = {}: an incompressible material cannot be modelled "
+                                    "with {} displacement elements (lambda is infinite); use NU < 0.5",
+                                    where, nu, modelisationName(modelisation)));
+    law.lambdaEff = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
+    law.lambdaZ = modelisation == Modelisation::D_PLAN ? law.lambdaEff : 0.0;
+    return law;
+}
+
+const IsotropicLaw& LawCache::of(const ModelElement& element) {
+    const Material& mat = field_.at(element.cell);
+    if (&mat != last_ || element.modelisation != modelisation_) {
+        law_ = IsotropicLaw::from(mat, element.modelisation, mat.name);
+        last_ = &mat;
+        modelisation_ = element.modelisation;
+    }
+    return law_;
+}
+
+void localDofs(const Mesh& mesh, const DofNumbering& numbering, const ElementIntegration& ei, std::vector<int>& dofs) {
+    const auto nodes = mesh.cellNodes(ei.cell);
+    const int dim = numbering.dim();
+    dofs.clear();
+    for (int a = 0; a < ei.nodeCount; ++a)
+        for (int k = 0; k < ei.slots[a]; ++k)
+            for (int c = 0; c < dim; ++c) {
+                const int d = numbering.dof(nodes[a], k, c);
+                if (d < 0)
+                    throw std::logic_error(fmt::format("element on cell {} uses slot {} of node {}, which the "
+                                                       "enrichment does not give to the node",
+                                                       mesh.cellNames[ei.cell], k, mesh.nodeNames[nodes[a]]));
+                dofs.push_back(d);
+            }
+}
+
+void displacementGradient(const ElementIntegration& ei, const PointGeometry& geo, const std::vector<int>& dofs,
+                          const std::vector<double>& u, size_t p, int dim, double G[3][3]) {
+    for (int c = 0; c < 3; ++c)
+        for (int j = 0; j < 3; ++j) G[c][j] = 0.0;
+    const int n = ei.nodeCount;
+    int i = 0;
+    for (int a = 0; a < n; ++a) {
+        const double* ga = &geo.gradN[(p * n + a) * 3];
+        for (int k = 0; k < ei.slots[a]; ++k) {
+            const double pa = ei.multiplier(int(p), a, k);
+            for (int c = 0; c < dim; ++c, ++i)
+                if (pa != 0.0)
+                    for (int j = 0; j < dim; ++j) G[c][j] += pa * u[dofs[i]] * ga[j];
+        }
+    }
+}
+
+void storeStress(const double G[3][3], const IsotropicLaw& law, int dim, double* out) {
+    double tr = 0.0;
+    for (int c = 0; c < dim; ++c) tr += G[c][c];
+    auto sigma = [&](int a, int b) { return law.mu * (G[a][b] + G[b][a]) + (a == b ? law.lambdaEff * tr : 0.0); };
+    if (dim == 2) {
+        out[0] = sigma(0, 0), out[1] = sigma(1, 1), out[2] = law.lambdaZ * (G[0][0] + G[1][1]), out[3] = sigma(0, 1);
+    } else {
+        out[0] = sigma(0, 0), out[1] = sigma(1, 1), out[2] = sigma(2, 2);
+        out[3] = sigma(0, 1), out[4] = sigma(0, 2), out[5] = sigma(1, 2);
+    }
+}
+
+void generalStiffness(const ElementIntegration& ei, const PointGeometry& geo, const IsotropicLaw& law, int dim, int nd,
+                      std::vector<double>& Ke) {
+    const int n = ei.nodeCount;
+    std::vector<int> base(n + 1, 0);  // local index of (a, slot 0)
+    for (int a = 0; a < n; ++a) base[a + 1] = base[a] + ei.slots[a] * dim;
+    Ke.assign(size_t(nd) * nd, 0.0);
+    for (size_t p = 0; p < ei.refPoints.size(); ++p) {
+        const double w = geo.weight[p];
+        for (int a = 0; a < n; ++a) {
+            const double* ga = &geo.gradN[(p * n + a) * 3];
+            for (int k = 0; k < ei.slots[a]; ++k) {
+                const double pa = ei.multiplier(int(p), a, k);
+                if (pa == 0.0) continue;
+                const int ia = base[a] + k * dim;
+                for (int b = 0; b < n; ++b) {
+                    const double* gb = &geo.gradN[(p * n + b) * 3];
+                    const double dot = ga[0] * gb[0] + ga[1] * gb[1] + ga[2] * gb[2];
+                    for (int l = 0; l < ei.slots[b]; ++l) {
+                        const double pb = ei.multiplier(int(p), b, l);
+                        if (pb == 0.0) continue;
+                        const double s = w * pa * pb;
+                        const int ib = base[b] + l * dim;
+                        for (int ci = 0; ci < dim; ++ci)
+                            for (int di = 0; di < dim; ++di)
+                                Ke[size_t(ia + ci) * nd + ib + di] +=
+                                    s * (law.lambdaEff * ga[ci] * gb[di] + law.mu * ga[di] * gb[ci] +
+                                         (ci == di ? law.mu * dot : 0.0));
+                    }
+                }
+            }
+        }
+    }
+}
+
+void generalInternalForce(const ElementIntegration& ei, const PointGeometry& geo, const std::vector<int>& dofs,
+                          const std::vector<double>& u, const IsotropicLaw& law, int dim, std::vector<double>& fe) {
+    fe.assign(dofs.size(), 0.0);
+    const int n = ei.nodeCount;
+    for (size_t p = 0; p < ei.refPoints.size(); ++p) {
+        double G[3][3], S[3][3];
+        displacementGradient(ei, geo, dofs, u, p, dim, G);
+        stressOf(G, law, dim, S);
+        const double wp = geo.weight[p];
+        int i = 0;
+        for (int a = 0; a < n; ++a) {
+            const double* ga = &geo.gradN[(p * n + a) * 3];
+            for (int k = 0; k < ei.slots[a]; ++k) {
+                const double pa = ei.multiplier(int(p), a, k);
+                for (int c = 0; c < dim; ++c, ++i) {
+                    double sum = 0.0;
+                    for (int j = 0; j < dim; ++j) sum += S[c][j] * ga[j];
+                    fe[i] += wp * pa * sum;
+                }
+            }
+        }
+    }
+}
+
+}  // namespace ma

@@ -1,0 +1,14 @@
+#pragma once
+// Internal forces F_int(u) = sum_e int B^T sigma(u) of a mechanical problem, in dof order. Element
+// vectors are computed on the workers and added in element order by the worker owning each block
+// of 64 dofs: the sums of the serial loop, bit for bit.
+#include <vector>
+
+#include "fe/Discretisation.hpp"
+
+namespace ma {
+
+// f: numbering().size() entries (u may have more: the additional terms' unknowns are not read).
+void assembleInternalForces(const Discretisation& space, const std::vector<double>& u, std::vector<double>& f);
+
+}  // namespace ma

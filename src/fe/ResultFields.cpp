@@ -1,0 +1,91 @@
+#include "fe/ResultFields.hpp"
+
+#include "fe/ElasticityKernels.hpp"
+#include "fe/Parallel.hpp"
+
+namespace ma {
+
+std::shared_ptr<NodalField> displacementField(const Discretisation& space, const std::vector<double>& u) {
+    auto field = space.numbering().toNodalField(u, space.model().mesh);
+    field->quantity = "DEPL_R";
+    return field;
+}
+
+namespace {
+
+// An empty SIEF_ELGA field with the point offsets of every element; the points still to fill.
+std::shared_ptr<GaussField> emptyStressField(const Discretisation& space) {
+    auto field = std::make_shared<GaussField>();
+    field->mesh = space.model().mesh;
+    field->quantity = "SIEF_R";
+    field->components = space.dim() == 2 ? std::vector<std::string>{"SIXX", "SIYY", "SIZZ", "SIXY"}
+                                         : std::vector<std::string>{"SIXX", "SIYY", "SIZZ", "SIXY", "SIXZ", "SIYZ"};
+    const size_t nElements = space.elementCount();
+    field->cells.resize(nElements);
+    field->pointOffsets.assign(nElements + 1, 0);
+    for (size_t e = 0; e < nElements; ++e) {
+        field->cells[e] = space.model().elements[e].cell;
+        field->pointOffsets[e + 1] = field->pointOffsets[e] + static_cast<int>(space.pointCount(e));
+    }
+    const size_t points = size_t(field->pointOffsets.back());
+    field->pointCoords.resize(points);
+    field->pointWeights.resize(points);
+    field->pointSubcell.resize(points);
+    field->pointRefCoords.resize(points);
+    field->values.resize(points * field->components.size());
+    return field;
+}
+
+}  // namespace
+
+std::shared_ptr<GaussField> stressField(const Discretisation& space, const std::vector<double>& u) {
+    auto field = emptyStressField(space);
+    const int dim = space.dim();
+    const size_t nc = field->components.size();
+    const size_t nElements = space.elementCount();
+    // Every element writes its own points (element ranges on the workers).
+    parallelRanges(nElements, nElements >= 4096 ? workerCount() : 1, [&](size_t begin, size_t end, int) {
+        GeneralElementScratch scratch;
+        std::vector<int> dofs;
+        LawCache laws(space.material());
+        for (size_t e = begin; e < end; ++e) {
+            const auto& element = space.model().elements[e];
+            const IsotropicLaw& law = laws.of(element);
+            const size_t first = size_t(field->pointOffsets[e]);
+            auto store = [&](size_t p, const std::array<double, 3>& xyz, double weight, int subcell,
+                             const std::array<double, 3>& ref, const double G[3][3]) {
+                field->pointCoords[first + p] = xyz;
+                field->pointWeights[first + p] = weight;
+                field->pointSubcell[first + p] = subcell;
+                field->pointRefCoords[first + p] = ref;
+                storeStress(G, law, dim, field->values.data() + (first + p) * nc);
+            };
+            space.visit(
+                e, scratch,
+                [&](const auto& ref, const auto& g) {
+                    using Ref = std::decay_t<decltype(ref)>;
+                    int edofs[Ref::dofs];
+                    classicalDofs<Ref>(space.mesh(), space.numbering(), element.cell, edofs);
+                    double ue[Ref::dofs];
+                    for (int i = 0; i < Ref::dofs; ++i) ue[i] = u[edofs[i]];
+                    for (int p = 0; p < Ref::points; ++p) {
+                        double G[3][3];
+                        classicalGradient(g.grad[p], ue, G);
+                        store(size_t(p), g.xyz[p], g.weight[p], 0, ref.point[p], G);
+                    }
+                },
+                [&](const ElementIntegration& ei, const PointGeometry& geo) {
+                    localDofs(space.mesh(), space.numbering(), ei, dofs);
+                    for (size_t p = 0; p < ei.refPoints.size(); ++p) {
+                        double G[3][3];
+                        displacementGradient(ei, geo, dofs, u, p, dim, G);
+                        store(p, geo.xyz[p], geo.weight[p], ei.pointSubcell.empty() ? 0 : ei.pointSubcell[p],
+                              ei.refPoints[p], G);
+                    }
+                });
+        }
+    });
+    return field;
+}
+
+}  // namespace ma
