@@ -11,6 +11,7 @@
 #include <filesystem>
 
 #include "core/Error.hpp"
+#include "core/Messages.hpp"
 
 namespace py = pybind11;
 
@@ -49,6 +50,7 @@ except ImportError:
     _np = None
 
 _VECTOR_MIN = 16
+_MAX_BRANCHES = 64
 
 def _scope(context, comm_globals, math_names):
     # Name lookup, innermost first: parameters, context objects, math, the command file's globals
@@ -59,36 +61,111 @@ def _scope(context, comm_globals, math_names):
     g["__builtins__"] = _builtins
     return g
 
-def _evaluate_vector(code, context, comm_globals, array, npar, n):
-    math_names = dict(_MATH)
-    math_names.update(_NUMPY_MATH)
+if _np is not None:
+    class _Split(BaseException):
+        # Raised by the truth value of a condition that differs between points; BaseException so
+        # that a user's `except Exception` does not swallow it.
+        def __init__(self, mask):
+            self.mask = mask
+
+    class _PointArray(_np.ndarray):
+        # The parameters' arrays. Arithmetic and comparisons keep the type; asking for a truth
+        # value (`if`, `and`, `or`, min/max, a conditional expression) gives the common value of
+        # all points, or raises _Split with the condition's mask when the points disagree.
+        def __bool__(self):
+            mask = _np.asarray(self, dtype=bool)
+            if mask.ndim != 1:
+                raise TypeError("not a per-point condition")
+            if mask.all():
+                return True
+            if not mask.any():
+                return False
+            raise _Split(mask)
+
+def _branches(f, columns, n, budget):
+    # f on the points of `columns` (plain arrays of length n): the whole set when every condition
+    # f meets holds or fails on all points alike, else each side of the first disagreeing
+    # condition on its own, recursively. Returns (values, list of (index array, branch)) or None.
     try:
-        f = eval(code, _scope(context, comm_globals, math_names))
         with _np.errstate(all="ignore"):
-            r = _np.asarray(f(*[array[:, j] for j in range(npar)]), dtype=float)
+            r = f(*[c.view(_PointArray) for c in columns])
+        r = _np.asarray(r, dtype=float)
+    except _Split as split:
+        mask = split.mask
+        if mask.shape != (n,) or budget[0] <= 1:
+            return None
+        budget[0] -= 1
+        out = _np.empty(n)
+        leaves = []
+        for side in (mask, ~mask):
+            index = _np.flatnonzero(side)
+            sub = _branches(f, [c[index] for c in columns], len(index), budget)
+            if sub is None:
+                return None
+            out[index] = sub[0]
+            leaves += [index[i] for i in sub[1]]
+        return out, leaves
     except Exception:
         return None
     if r.shape == ():
         r = _np.full(n, float(r))
-    if r.shape != (n,) or not _np.isfinite(r).all():
+    if r.shape != (n,):
         return None
-    return r
+    return r, [_np.arange(n)]
+
+def _evaluate_vector(code, context, comm_globals, array, npar, n):
+    # (values, branches) or None. The points of each branch are checked at their first and last
+    # point against the scalar evaluation: a function that is not evaluated point by point on
+    # arrays (indexing, reductions...) falls back to the point loop.
+    math_names = dict(_MATH)
+    math_names.update(_NUMPY_MATH)
+    try:
+        f = eval(code, _scope(context, comm_globals, math_names))
+    except Exception:
+        return None
+    result = _branches(f, [_np.ascontiguousarray(array[:, j]) for j in range(npar)], n, [_MAX_BRANCHES])
+    if result is None:
+        return None
+    r, leaves = result
+    if not _np.isfinite(r).all():
+        return None
+    scalar = eval(code, _scope(context, comm_globals, _MATH))
+    tolerance = 1e-12 * float(_np.max(_np.abs(r)))
+    try:
+        for index in leaves:
+            for i in (index[0], index[-1]):
+                if abs(float(scalar(*array[i].tolist())) - r[i]) > tolerance:
+                    return None
+    except Exception:
+        return None
+    return r, len(leaves)
+
+def _distinct_rows(array):
+    # (distinct rows, inverse) when repeated points make it worth it, else (array, None).
+    distinct, inverse = _np.unique(array, axis=0, return_inverse=True)
+    if len(distinct) > 0.8 * len(array):
+        return array, None
+    return distinct, inverse.reshape(-1)
 
 def evaluate_many(code, context, comm_globals, array, npar):
-    # `array`: numpy (n, npar) array when numpy is there, else a flat list.
+    # `array`: numpy (n, npar) array when numpy is there, else a flat list. Returns (values,
+    # failing index or -1, Python's message, path: "vector:<branches>", "points:<evaluated>").
     if _np is not None:
         n = array.shape[0]
         if n >= _VECTOR_MIN:
-            r = _evaluate_vector(code, context, comm_globals, array, npar, n)
-            if r is not None:
-                return r, -1, ""
+            v = _evaluate_vector(code, context, comm_globals, array, npar, n)
+            if v is not None:
+                return v[0], -1, "", "vector:%d" % v[1]
         f = eval(code, _scope(context, comm_globals, _MATH))
         if npar > 0:
-            # Point by point without a Python-level loop (float() of each value as below); on any
-            # error the loop below runs again for the failing index and Python's own message.
+            # Once per distinct point, without a Python-level loop (float() of each value as
+            # below); on any error the loop below runs again for the failing index and Python's
+            # own message.
+            points, inverse = _distinct_rows(array) if n >= _VECTOR_MIN else (array, None)
             try:
-                return _np.fromiter(map(float, map(f, *[array[:, j].tolist() for j in range(npar)])),
-                                    dtype=float, count=n), -1, ""
+                r = _np.fromiter(map(float, map(f, *[points[:, j].tolist() for j in range(npar)])),
+                                 dtype=float, count=len(points))
+                return (r if inverse is None else r[inverse]), -1, "", "points:%d" % len(points)
             except Exception:
                 pass
         rows = array.tolist()
@@ -102,8 +179,8 @@ def evaluate_many(code, context, comm_globals, array, npar):
         for i in range(n):
             out[i] = float(f(*rows[i]))
     except Exception as e:
-        return None, i, "%s: %s" % (type(e).__name__, e)
-    return out, -1, ""
+        return None, i, "%s: %s" % (type(e).__name__, e), "points:%d" % n
+    return out, -1, "", "points:%d" % n
 )PY";
 
 // Leaked on purpose: a static py::object would be released after the interpreter is gone.
@@ -175,6 +252,23 @@ void Formula::fail(std::span<const double> args, const std::string& why) const {
                                 values.empty() ? "no parameter" : values, why));
 }
 
+void Formula::logPath(const std::string& path, size_t npoints) const {
+    const auto colon = path.find(':');
+    const std::string kind = path.substr(0, colon);
+    if (kind == loggedPath_) return;
+    loggedPath_ = kind;
+    const long count = std::stol(path.substr(colon + 1));
+    if (kind == "vector")
+        msg().infof("    FORMULE {}: evaluated on numpy arrays, {} points per batch{}", name.empty() ? expression_ : name,
+                    npoints,
+                    count > 1 ? fmt::format(" (its conditions split the points into {} branches, each on arrays)", count)
+                              : std::string());
+    else
+        msg().infof("    FORMULE {}: numpy arrays do not go through its expression: Python is called once per distinct "
+                    "point ({} of {} points in the first batch)",
+                    name.empty() ? expression_ : name, count, npoints);
+}
+
 double Formula::evaluate(std::span<const double> args) const { return evaluateMany(args, 1).at(0); }
 
 std::vector<double> Formula::evaluateMany(std::span<const double> args, size_t npoints) const {
@@ -197,6 +291,7 @@ std::vector<double> Formula::evaluateMany(std::span<const double> args, size_t n
     py::tuple result = python_->evaluator(python_->code, python_->context, python_->commGlobals, batch, np);
     const long failed = result[1].cast<long>();
     if (failed >= 0) fail(args.subspan(size_t(failed) * np, np), result[2].cast<std::string>());
+    if (npoints >= kBatchLogged) logPath(result[3].cast<std::string>(), npoints);
     std::vector<double> out(npoints);
     if (py::isinstance<py::array>(result[0])) {
         auto values = result[0].cast<py::array_t<double, py::array::c_style | py::array::forcecast>>();

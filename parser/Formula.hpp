@@ -1,6 +1,8 @@
 #pragma once
 // FORMULE: a function whose value is a Python expression of its parameters (commands_spec §7.4).
-// The expression is compiled once; evaluateMany() enters Python once per batch. Names are looked
+// The expression is compiled once; evaluateMany() enters Python once per batch, which runs on
+// numpy arrays when the expression allows it (a Python if/else included: the points are split by
+// its conditions) and otherwise calls Python once per distinct point; the .mess says which. Names are looked
 // up in: parameters, the context objects given as extra keywords (depx=depx), the math module,
 // then (files older than 2018 do not pass their functions) the globals of the command file.
 #include <pybind11/pybind11.h>
@@ -31,11 +33,15 @@ public:
 
 private:
     [[noreturn]] void fail(std::span<const double> args, const std::string& why) const;
+    // .mess line when a batch takes another path than the previous one ("vector" / "points").
+    void logPath(const std::string& path, size_t npoints) const;
+    static constexpr size_t kBatchLogged = 16;  // smaller batches: single points, not worth a line
 
     std::string expression_;
     std::vector<std::string> parameters_;
     std::string commFile_;
     int line_ = 0;
+    mutable std::string loggedPath_;
     struct Python;  // compiled expression, batch evaluator, name scope (Formula.cpp)
     std::unique_ptr<Python> python_;
 };

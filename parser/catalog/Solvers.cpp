@@ -18,6 +18,8 @@ Keyword solveur() {
               TXM("PRETRAITEMENTS").into({"SANS", "AUTO"}).def("AUTO"),
               TXM("POSTTRAITEMENTS").into({"SANS", "AUTO", "FORCE", "MINI"}).def("AUTO"),
               TXM("GESTION_MEMOIRE").into({"AUTO", "IN_CORE", "OUT_OF_CORE", "EVAL"}).def("AUTO"),
+              TXM("ACCELERATION").into({"AUTO", "FR", "FR+", "FR++", "LR", "LR+", "LR++"}).def("AUTO"),
+              R("LOW_RANK_SEUIL").def(0.0).range(0.0, {}),  // only with ACCELERATION='LR*', refused
               yesNo("MATR_DISTRIBUEE"), yesNo("STOP_SINGULIER").def("OUI")}),
         bloc(when("METHODE", {"MULT_FRONT"}),
              {TXM("RENUM").into({"MD", "MDA", "METIS"}).def("METIS"), I("NPREC").def(8),

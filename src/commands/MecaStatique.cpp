@@ -49,6 +49,7 @@ ConceptPtr mecaStatique(const KeywordSet& kw, CommandContext& ctx) {
     for (double inst : instants) {
         problem.resetState();
         const auto report = problem.solveIncrement(inst, linear);
+        if (inst == instants.back()) problem.releaseFactorisation();  // no solve follows: SIEF_ELGA without the factors
         ResultStep step;
         step.order = ++order;
         step.inst = inst;

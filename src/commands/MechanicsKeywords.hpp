@@ -10,6 +10,7 @@
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "fe/MechanicalProblem.hpp"
+#include "fe/Parallel.hpp"
 #include "mesh/Mesh.hpp"
 #include "parser/KeywordTree.hpp"
 
@@ -85,6 +86,7 @@ inline std::vector<int> selectedNodes(const Mesh& mesh, const KeywordSet& occ, c
 inline SolverOptions solverOptions(const KeywordSet& kw, int info) {
     SolverOptions o;
     o.info = info;
+    o.threads = workerCount();
     o.conditionEstimate = info >= 2;  // MUMPS ICNTL(11)=1 costs a few extra solves: INFO=2 only
     const auto& occ = kw.factor("SOLVEUR");
     if (occ.empty()) return o;
@@ -95,6 +97,7 @@ inline SolverOptions solverOptions(const KeywordSet& kw, int info) {
     if (o.method == "MUMPS") o.renum = s.text("RENUM");  // MD/MDA/METIS/RCMK of the native solvers: Eigen uses AMD
     if (s.has("NPREC")) o.nprec = static_cast<int>(s.integer("NPREC"));
     if (s.has("TYPE_RESOL")) o.typeResol = s.text("TYPE_RESOL");
+    if (o.method == "MUMPS") o.acceleration = s.text("ACCELERATION");
     if (s.has("PCENT_PIVOT")) {
         const auto& v = s.values("PCENT_PIVOT")[0];
         o.pcentPivot = std::holds_alternative<long long>(v) ? int(std::get<long long>(v))

@@ -115,4 +115,9 @@ std::shared_ptr<NodalField> MechanicalProblem::displacementField() const { retur
 
 std::shared_ptr<GaussField> MechanicalProblem::stressField() const { return ma::stressField(*space_, u_); }
 
+void MechanicalProblem::releaseFactorisation() {
+    solver_ = makeLinearSolver(solverOptions_);
+    factorised_ = false;
+}
+
 }  // namespace ma

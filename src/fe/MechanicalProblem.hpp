@@ -60,6 +60,10 @@ public:
     std::shared_ptr<NodalField> displacementField() const;
     std::shared_ptr<GaussField> stressField() const;  // SIEF_ELGA
 
+    // Frees the factors (MUMPS's memory) when no further solve will come; a later solve
+    // factorises again.
+    void releaseFactorisation();
+
 private:
     // The constraints at `inst`; the pattern is rebuilt when their structure changed.
     void setupSystem(double inst);

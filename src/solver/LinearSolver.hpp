@@ -21,14 +21,17 @@ enum class MatrixKind {
 
 struct SolverOptions {
     std::string method = "MUMPS";  // MUMPS | MULT_FRONT | LDLT
-    std::string renum = "AUTO";    // MUMPS ordering: AUTO AMD AMF QAMD PORD SCOTCH (METIS -> SCOTCH)
+    std::string renum = "AUTO";    // MUMPS ordering: AUTO (= METIS) METIS AMD AMF QAMD PORD SCOTCH
     int nprec = 8;                 // singular pivot threshold 10^-NPREC; < 0 disables the detection
     int pcentPivot = 20;           // MUMPS workspace relaxation (%)
     std::string typeResol = "AUTO";  // MUMPS TYPE_RESOL: SYMDEF forces SYM=1 on SPD systems
+    // MUMPS ACCELERATION: AUTO and FR* full rank; LR* refused (MumpsSolver.cpp says why).
+    std::string acceleration = "AUTO";
     bool conditionEstimate = false;  // MUMPS ICNTL(11)=1: condition numbers (costs a few solves)
     bool diagonalScaling = true;     // factorise D^-1/2 A D^-1/2 (code_aster: PRETRAITEMENTS)
     int maxRefinementSteps = 3;      // iterative refinement while it helps; 0 = none (POSTTRAITEMENTS)
     int info = 1;
+    int threads = 1;  // the METIS ordering's two halves in two processes when >= 2
     // Appended to the "singular system" message: what the caller knows about likely causes.
     std::string singularHint =
         "a missing boundary condition (rigid body motion) or an unattached enriched dof";

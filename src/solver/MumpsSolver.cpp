@@ -4,39 +4,65 @@
 // libmpiseq and do not clash with OpenMPI's C symbols (verified by test solver_med_mumps).
 #include <dmumps_c.h>
 #include <fmt/format.h>
+#include <malloc.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <vector>
 
 #include "core/Error.hpp"
+#include "core/MemoryUsage.hpp"
 #include "core/Messages.hpp"
+#include "solver/MetisOrdering.hpp"
 #include "solver/LinearSolverImpl.hpp"
 
 namespace ma {
 
 namespace {
 
-constexpr int kJobInit = -1, kJobEnd = -2, kJobAnalyseFactorise = 4, kJobSolve = 3;
+constexpr int kJobInit = -1, kJobEnd = -2, kJobAnalyse = 1, kJobFactorise = 2, kJobSolve = 3;
 constexpr int kUseCommWorld = -987654;
+constexpr int kUserOrdering = 1;  // ICNTL(7)=1: PERM_IN
 
 double seconds(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// RENUM -> MUMPS's ICNTL(7), or kUserOrdering for METIS, which MUMPS seq lacks and miniaster
+// computes itself (solver/MetisOrdering). AUTO is METIS: on the ssnv511 grids it is the cheapest
+// factorisation of all the orderings (docs/study.md, "Orderings").
 int orderingCode(const std::string& renum, std::string& used) {
     if (renum == "AMD") return used = "AMD", 0;
     if (renum == "AMF") return used = "AMF", 2;
     if (renum == "SCOTCH") return used = "SCOTCH", 3;
     if (renum == "PORD") return used = "PORD", 4;
     if (renum == "QAMD") return used = "QAMD", 6;
-    if (renum == "METIS" || renum == "PARMETIS" || renum == "PTSCOTCH") {
-        msg().infof("    RENUM='{}' is not available in this MUMPS build (Debian seq: AMD, AMF, QAMD, PORD, "
-                    "SCOTCH): SCOTCH is used",
-                    renum);
-        return used = "SCOTCH", 3;
+    if (renum == "PARMETIS" || renum == "PTSCOTCH") {
+        used = renum == "PARMETIS" ? "METIS" : "SCOTCH";
+        msg().infof("    RENUM='{}': the sequential solver uses its sequential counterpart {}", renum, used);
+        return used == "METIS" ? kUserOrdering : 3;
     }
-    return used = "AUTO", 7;
+    return used = "METIS", kUserOrdering;  // METIS, AUTO
+}
+
+// A(i): MUMPS's INFO/INFOG sizes are counts when positive, millions when negative.
+double mumpsCount(int value) { return value < 0 ? -1e6 * value : double(value); }
+
+// Block low-rank factors (SOLVEUR ACCELERATION='LR*') are refused: Debian's MUMPS 5.5.1 (seq)
+// clusters the separators through SCOTCH_graphBuild with an out-of-bounds write (valgrind: "Invalid
+// write of size 4" under dmumps_lr_grouping_new), and one run in three of a 1e4-dof BLR
+// factorisation crashed. On the 2e6-dof ssnv511a grid they would take 0.36 GB (10 %) off the peak
+// (docs/fe.md). AUTO and FR* are full rank.
+void refuseLowRank(const SolverOptions& o) {
+    if (o.acceleration.rfind("LR", 0) == 0)
+        throw NotImplemented("SOLVEUR/ACCELERATION='" + o.acceleration +
+                             "': block low-rank factors are not available: the MUMPS 5.5.1 of this system writes out "
+                             "of bounds while clustering them (use ACCELERATION='AUTO' or 'FR')");
+}
+
+bool isWorkspaceError(int code) {
+    return code == -8 || code == -9 || code == -14 || code == -15 || code == -17 || code == -20;
 }
 
 std::string mumpsErrorText(int code, int detail) {
@@ -66,80 +92,23 @@ protected:
     void factorizeScaled(const CsrMatrix& A, std::span<const double> s, MatrixKind kind) override {
         release();
         const auto t0 = std::chrono::steady_clock::now();
-        // Upper triangle of S A S, 1-based coordinates.
-        irn_.clear(), jcn_.clear(), a_.clear();
-        irn_.reserve(A.nonZeros() / 2 + A.rows), jcn_.reserve(A.nonZeros() / 2 + A.rows), a_.reserve(A.nonZeros() / 2 + A.rows);
-        for (int i = 0; i < A.rows; ++i)
-            for (long long k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k)
-                if (A.cols[k] >= i) {
-                    irn_.push_back(i + 1);
-                    jcn_.push_back(A.cols[k] + 1);
-                    a_.push_back(s[i] * A.values[k] * s[A.cols[k]]);
-                }
-        id_ = DMUMPS_STRUC_C{};
-        conditionLogged_ = false;
-        id_.job = kJobInit;
-        id_.par = 1;
-        // SYM=1 (positive definite, no pivoting) performs no null-pivot detection: a floating body
-        // goes through unnoticed (checked). SYM=2 detects it at a similar cost, so SYM=1 is used only
-        // when the detection is off (NPREC < 0) or asked for (TYPE_RESOL='SYMDEF').
-        const bool spd = kind == MatrixKind::SymmetricPositiveDefinite;
-        id_.sym = spd && (options_.nprec < 0 || options_.typeResol == "SYMDEF") ? 1 : 2;
-        id_.comm_fortran = kUseCommWorld;
-        dmumps_c(&id_);
-        initialised_ = true;
-        if (id_.infog[0] < 0) throw NumericalError(mumpsErrorText(id_.infog[0], id_.infog[1]));
-        // Silence MUMPS's own printing; we log what matters.
-        id_.icntl[0] = -1, id_.icntl[1] = -1, id_.icntl[2] = -1, id_.icntl[3] = 0;
-        std::string ordering;
-        id_.icntl[6] = orderingCode(options_.renum, ordering);
-        id_.icntl[13] = options_.pcentPivot;
-        if (options_.nprec >= 0) {  // null pivot detection (code_aster's NPREC)
-            id_.icntl[23] = 1;
-            id_.cntl[2] = std::pow(10.0, -options_.nprec);
-        }
-        id_.n = A.rows;
-        id_.nnz = static_cast<MUMPS_INT8>(a_.size());
-        id_.irn = irn_.data();
-        id_.jcn = jcn_.data();
-        id_.a = a_.data();
-        for (int attempt = 0;; ++attempt) {
-            id_.job = kJobAnalyseFactorise;
-            dmumps_c(&id_);
-            const int code = id_.infog[0];
-            // Workspace too small: relax and retry (what code_aster does with PCENT_PIVOT).
-            if ((code == -8 || code == -9 || code == -14 || code == -15 || code == -17 || code == -20) && attempt < 4) {
-                id_.icntl[13] = std::max(2 * id_.icntl[13], 50);
-                msg().infof("    MUMPS workspace too small (INFOG(1)={}): retrying with ICNTL(14)={}", code,
-                            id_.icntl[13]);
-                continue;
-            }
-            if (code == -10 || code == -6)
-                throw NumericalError(fmt::format("singular system: {}. Likely cause: {}.",
-                                                 mumpsErrorText(code, id_.infog[1]), options_.singularHint));
-            if (code < 0) throw NumericalError(mumpsErrorText(code, id_.infog[1]));
-            break;
-        }
-        if (options_.nprec >= 0 && id_.infog[27] > 0)
-            throw NumericalError(fmt::format(
-                "singular system: MUMPS found {} null pivot(s) (pivot below 1e-{} of the norm of the diagonal-scaled matrix, "
-                "SOLVEUR/NPREC={}). Likely cause: {}.",
-                id_.infog[27], options_.nprec, options_.nprec, options_.singularHint));
-        static const char* orderings[] = {"AMD", "user", "AMF", "SCOTCH", "PORD", "METIS", "QAMD", "AUTO"};
-        const int usedOrdering = id_.infog[6];
-        msg().infof("    MUMPS ({}): n = {}, non-zeros (upper triangle) = {}, ordering {} (asked {}), "
-                    "factor entries = {}, factorisation {:.3f} s, peak memory {} MB",
-                    id_.sym == 1 ? "SYM=1, positive definite" : "SYM=2, general symmetric", A.rows, a_.size(),
-                    usedOrdering >= 0 && usedOrdering <= 7 ? orderings[usedOrdering] : "?", ordering,
-                    id_.infog[28] < 0 ? -static_cast<long long>(id_.infog[28]) * 1000000 : id_.infog[28],
-                    seconds(t0), id_.infog[21]);
-        if (id_.sym == 2 && id_.infog[11] > 0) {
-            if (spd)
-                msg().alarm("FACTOR_10", fmt::format("MUMPS found {} negative pivot(s) in a stiffness matrix that should "
-                                                     "be positive definite (inverted or degenerate elements?)",
-                                                     id_.infog[11]));
-            else
-                msg().infof("    MUMPS: {} negative pivots (expected: one per Lagrange multiplier)", id_.infog[11]);
+        MemoryPhase phase;
+        residentBeforeMb_ = phase.startMb();
+        upperTriangle(A, s);
+        initialise(kind);
+        analyse(A);
+        const double analysisPeak = phase.peakMb();
+        // The ordering's graphs and METIS's work arrays were freed in the heap: give those pages
+        // back before MUMPS allocates its factors, or they stay resident beside them.
+        malloc_trim(0);
+        MemoryPhase factorisation;
+        factorise();
+        logFactorisation(A, kind, seconds(t0), analysisPeak, factorisation);
+        // The factors are all the solve needs, unless MUMPS's error analysis (ICNTL(11)) reads A.
+        if (!options_.conditionEstimate) {
+            LargeVector<MUMPS_INT>().swap(irn_), LargeVector<MUMPS_INT>().swap(jcn_);
+            LargeVector<double>().swap(a_);
+            id_.irn = id_.jcn = nullptr, id_.a = nullptr;
         }
     }
 
@@ -161,6 +130,135 @@ protected:
     }
 
 private:
+    // Upper triangle of S A S, 1-based coordinates.
+    void upperTriangle(const CsrMatrix& A, std::span<const double> s) {
+        irn_.clear(), jcn_.clear(), a_.clear();
+        const size_t upper = size_t(A.nonZeros() / 2 + A.rows);
+        irn_.reserve(upper), jcn_.reserve(upper), a_.reserve(upper);
+        for (int i = 0; i < A.rows; ++i)
+            for (long long k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k)
+                if (A.cols[k] >= i) {
+                    irn_.push_back(i + 1);
+                    jcn_.push_back(A.cols[k] + 1);
+                    a_.push_back(s[i] * A.values[k] * s[A.cols[k]]);
+                }
+    }
+
+    void initialise(MatrixKind kind) {
+        id_ = DMUMPS_STRUC_C{};
+        conditionLogged_ = false;
+        id_.job = kJobInit;
+        id_.par = 1;
+        // SYM=1 (positive definite, no pivoting) performs no null-pivot detection: a floating body
+        // goes through unnoticed (checked). SYM=2 detects it at a similar cost, so SYM=1 is used only
+        // when the detection is off (NPREC < 0) or asked for (TYPE_RESOL='SYMDEF').
+        const bool spd = kind == MatrixKind::SymmetricPositiveDefinite;
+        id_.sym = spd && (options_.nprec < 0 || options_.typeResol == "SYMDEF") ? 1 : 2;
+        id_.comm_fortran = kUseCommWorld;
+        dmumps_c(&id_);
+        initialised_ = true;
+        if (id_.infog[0] < 0) throw NumericalError(mumpsErrorText(id_.infog[0], id_.infog[1]));
+        // Silence MUMPS's own printing; we log what matters.
+        id_.icntl[0] = -1, id_.icntl[1] = -1, id_.icntl[2] = -1, id_.icntl[3] = 0;
+        id_.icntl[13] = options_.pcentPivot;
+        refuseLowRank(options_);
+        if (options_.nprec >= 0) {  // null pivot detection (code_aster's NPREC)
+            id_.icntl[23] = 1;
+            id_.cntl[2] = std::pow(10.0, -options_.nprec);
+        }
+    }
+
+    // JOB=1 with the ordering RENUM asks for (METIS computed here and given as PERM_IN).
+    void analyse(const CsrMatrix& A) {
+        const auto t0 = std::chrono::steady_clock::now();
+        id_.icntl[6] = orderingCode(options_.renum, ordering_);
+        orderingNote_.clear();
+        if (id_.icntl[6] == kUserOrdering) {
+            const FillReducingOrdering nd = nestedDissectionOrdering(A, options_.threads);
+            permIn_.resize(nd.pivotRank.size());
+            for (size_t i = 0; i < permIn_.size(); ++i) permIn_[i] = nd.pivotRank[i] + 1;
+            id_.perm_in = permIn_.data();
+            orderingNote_ = fmt::format("METIS_NodeND on the matrix graph ({} unknowns in {} vertices, {} edges) "
+                                        "{:.3f} s", A.rows, nd.vertices, nd.graphEdges, nd.seconds);
+        }
+        id_.n = A.rows;
+        id_.nnz = static_cast<MUMPS_INT8>(a_.size());
+        id_.irn = irn_.data();
+        id_.jcn = jcn_.data();
+        id_.a = a_.data();
+        id_.job = kJobAnalyse;
+        dmumps_c(&id_);
+        std::vector<MUMPS_INT>().swap(permIn_);
+        id_.perm_in = nullptr;
+        if (id_.infog[0] < 0) throw NumericalError(mumpsErrorText(id_.infog[0], id_.infog[1]));
+        analysisSeconds_ = seconds(t0);
+        predictedFlops_ = id_.rinfog[0];
+    }
+
+    // JOB=2; on a workspace error the analysis is kept and only JOB=2 reruns with a larger
+    // ICNTL(14): for a too small real workspace (-9) by what was missing relative to the
+    // analysis' estimate of it (INFO(8)), otherwise doubled.
+    void factorise() {
+        const auto t0 = std::chrono::steady_clock::now();
+        for (int attempt = 0;; ++attempt) {
+            id_.job = kJobFactorise;
+            dmumps_c(&id_);
+            const int code = id_.infog[0];
+            if (isWorkspaceError(code) && attempt < 4) {
+                const int before = id_.icntl[13];
+                const double estimate = mumpsCount(id_.info[7]), missing = mumpsCount(id_.info[1]);
+                int relaxed = std::max(2 * before, 50);
+                if (code == -9 && estimate > 0.0 && id_.info[1] != 0)
+                    relaxed = std::max(before + 20, int(std::ceil(100.0 * ((1.0 + before / 100.0) * estimate + missing) /
+                                                                  estimate - 100.0)) + 20);
+                id_.icntl[13] = relaxed;
+                msg().infof("    MUMPS workspace too small (INFOG(1)={}, INFO(2)={}): factorisation again (JOB=2, the "
+                            "analysis kept) with ICNTL(14)={} instead of {}",
+                            code, id_.info[1], relaxed, before);
+                continue;
+            }
+            if (code == -10 || code == -6)
+                throw NumericalError(fmt::format("singular system: {}. Likely cause: {}.",
+                                                 mumpsErrorText(code, id_.infog[1]), options_.singularHint));
+            if (code < 0) throw NumericalError(mumpsErrorText(code, id_.infog[1]));
+            break;
+        }
+        factorisationSeconds_ = seconds(t0);
+        if (options_.nprec >= 0 && id_.infog[27] > 0)
+            throw NumericalError(fmt::format(
+                "singular system: MUMPS found {} null pivot(s) (pivot below 1e-{} of the norm of the diagonal-scaled matrix, "
+                "SOLVEUR/NPREC={}). Likely cause: {}.",
+                id_.infog[27], options_.nprec, options_.nprec, options_.singularHint));
+    }
+
+    void logFactorisation(const CsrMatrix& A, MatrixKind kind, double total, double analysisPeakMb,
+                          const MemoryPhase& factorisation) const {
+        static const char* orderings[] = {"AMD", "METIS (PERM_IN)", "AMF", "SCOTCH", "PORD", "METIS", "QAMD", "AUTO"};
+        const int usedOrdering = id_.infog[6];
+        msg().infof("    MUMPS ({}): n = {}, non-zeros (upper triangle) = {}, ordering {} (asked {}){}",
+                    id_.sym == 1 ? "SYM=1, positive definite" : "SYM=2, general symmetric", A.rows, id_.nnz,
+                    usedOrdering >= 0 && usedOrdering <= 7 ? orderings[usedOrdering] : "?", options_.renum,
+                    orderingNote_.empty() ? "" : ": " + orderingNote_);
+        msg().infof("    MUMPS analysis {:.3f} s: predicted flops {:.3e} (RINFOG(1)), factor entries {:.4g} (INFOG(20)), "
+                    "memory {} MB (INFOG(17))",
+                    analysisSeconds_, predictedFlops_, mumpsCount(id_.infog[19]), id_.infog[16]);
+        msg().infof("    MUMPS factorisation {:.3f} s: {:.3e} flops (RINFOG(3), {:.1f} GFLOP/s), factor entries = {}, "
+                    "peak memory {} MB (INFOG(22)); analysis + factorisation {:.3f} s",
+                    factorisationSeconds_, id_.rinfog[2], factorisationSeconds_ > 0 ? id_.rinfog[2] / factorisationSeconds_ / 1e9 : 0.0,
+                    static_cast<long long>(mumpsCount(id_.infog[28])), id_.infog[21], total);
+        msg().infof("    memory (resident, process): {:.0f} MB before the analysis, peak {:.0f} MB in the analysis, "
+                    "{:.0f} MB in the factorisation",
+                    residentBeforeMb_, analysisPeakMb, factorisation.peakMb());
+        if (id_.sym == 2 && id_.infog[11] > 0) {
+            if (kind == MatrixKind::SymmetricPositiveDefinite)
+                msg().alarm("FACTOR_10", fmt::format("MUMPS found {} negative pivot(s) in a stiffness matrix that should "
+                                                     "be positive definite (inverted or degenerate elements?)",
+                                                     id_.infog[11]));
+            else
+                msg().infof("    MUMPS: {} negative pivots (expected: one per Lagrange multiplier)", id_.infog[11]);
+        }
+    }
+
     void release() {
         if (!initialised_) return;
         id_.job = kJobEnd;
@@ -171,6 +269,9 @@ private:
     DMUMPS_STRUC_C id_{};
     bool conditionLogged_ = false;  // once per factorisation (refinement steps solve again)
     bool initialised_ = false;
+    std::string ordering_, orderingNote_;
+    double analysisSeconds_ = 0.0, predictedFlops_ = 0.0, factorisationSeconds_ = 0.0, residentBeforeMb_ = 0.0;
+    std::vector<MUMPS_INT> permIn_;
     LargeVector<MUMPS_INT> irn_, jcn_;
     LargeVector<double> a_;
 };

@@ -68,7 +68,7 @@ TEST(Faults, DiskFullWhileWritingMed) {
         GTEST_SKIP() << "cannot mount a tmpfs here (needs root): the injected write failure test covers the path";
     {
         std::ofstream filler(full / "filler", std::ios::binary);
-        filler << std::string(185000, '\0');
+        filler << std::string(175000, '\0');
     }
     auto r = runMiniaster(dir, xfemExport(), "", "");
     // runMiniaster writes to dir/out: rerun into the full file system.

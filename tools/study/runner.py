@@ -47,14 +47,23 @@ def parse_mess(text):
     if assembly:
         r["t_assembly"] = sum(map(_f, assembly))
         r["assemblies"] = len(assembly)
-    fact = re.findall(r"MUMPS \(.*?\): n = \d+.*?ordering (\S+) \(asked \S+\), factor entries = (\d+), "
-                      r"factorisation " + NUM + r" s, peak memory (\d+) MB", text)
+    # MUMPS: the ordering line, then per factorisation "MUMPS factorisation T s: F flops ..., factor
+    # entries = E, peak memory M MB (INFOG(22)); analysis + factorisation T s" (t_factorisation
+    # counts the analysis, the ordering included, as before the two were logged apart).
+    orderings = re.findall(r"MUMPS \(.*?\): n = \d+, non-zeros \(upper triangle\) = \d+, ordering (\S+)", text)
+    fact = re.findall(r"MUMPS factorisation " + NUM + r" s: (\S+) flops .*?factor entries = (\d+), peak memory (\d+) MB"
+                      r" \(INFOG\(22\)\); analysis \+ factorisation " + NUM + r" s", text)
     if fact:
-        r["ordering"] = fact[0][0]
-        r["factor_entries"] = int(fact[0][1])
-        r["t_factorisation"] = sum(_f(f[2]) for f in fact)
+        r["ordering"] = orderings[0] if orderings else "?"
+        r["factor_entries"] = int(fact[0][2])
+        r["flops"] = _f(fact[0][1])
+        r["t_factorisation"] = sum(_f(f[4]) for f in fact)
+        r["t_mumps_factorisation"] = sum(_f(f[0]) for f in fact)
         r["solver_peak_mb"] = max(int(f[3]) for f in fact)
         r["factorisations"] = len(fact)
+    metis = re.findall(r"METIS_NodeND on the matrix graph .*? edges\) " + NUM + " s", text)
+    if metis:
+        r["t_ordering"] = sum(map(_f, metis))
     eig = re.findall(r"Eigen (\S+) \((.*?)\): n = \d+.*?factorisation " + NUM + " s", text)
     if eig:
         r["ordering"] = eig[0][1].split(",")[0] if eig[0][1] else eig[0][0]

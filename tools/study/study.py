@@ -779,8 +779,8 @@ def study_penalty(ctx):
 # perf: ssnv511a-type scene refined
 
 PERF_COLUMNS = ["scene", "element", "N", "solver", "dofs", "equations", "nonzeros", "t_mesh", "t_xfem", "t_setup",
-                "t_numbering", "t_pattern", "t_assembly", "setup_assembly", "us_per_dof", "t_factorisation", "t_solve",
-                "fact_solve", "t_analysis_other", "t_post", "t_commands", "ratio_total", "ratio_compute", "wall",
+                "t_numbering", "t_pattern", "t_assembly", "setup_assembly", "us_per_dof", "ordering", "t_ordering",
+                "t_factorisation", "t_mumps_factorisation", "flops", "t_solve", "fact_solve", "t_analysis_other", "t_post", "t_commands", "ratio_total", "ratio_compute", "wall",
                 "peak_mb", "solver_peak_mb", "factor_entries", "l2_rel", "residual", "tests_ok", "tests_nook", "tests",
                 "load", "diagnostic"]
 
@@ -843,7 +843,8 @@ def study_perf(ctx):
         ("scene", "scene", None), ("N", "N", None), ("dofs", "DOFs", None), ("t_mesh", "mesh", "t"),
         ("t_xfem", "X-FEM set-up", "t"), ("t_setup", "other set-up", "t"), ("t_numbering", "numbering", "t"),
         ("t_pattern", "pattern", "t"), ("t_assembly", "assembly", "t"), ("setup_assembly", "set-up+assembly", "t"),
-        ("us_per_dof", "us/DOF", "f"), ("t_factorisation", "factorisation", "t"), ("t_solve", "solve", "t"),
+        ("us_per_dof", "us/DOF", "f"), ("ordering", "ordering", None), ("t_ordering", "METIS", "t"),
+        ("t_factorisation", "analysis+factorisation", "t"), ("flops", "flops", "e"), ("t_solve", "solve", "t"),
         ("t_analysis_other", "other analysis", "t"), ("t_post", "post", "t"), ("t_commands", "total", "t"),
         ("ratio_total", "total/(f+s)", "f"), ("ratio_compute", "without post", "f"), ("peak_mb", "peak MB", "t"),
         ("l2_rel", "L2 rel. err.", "e"), ("tests", "tests", None), ("load", "load", "f")])
