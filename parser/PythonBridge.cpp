@@ -14,10 +14,10 @@
 #include <fcntl.h>
 #include <unistd.h>
 #include <cstdlib>
-#include <fstream>
 
 #include "core/Error.hpp"
 #include "core/MemoryLimit.hpp"
+#include "core/MemoryUsage.hpp"
 #include "core/Messages.hpp"
 #include "parser/Catalog.hpp"
 #include "parser/CommandRegistry.hpp"
@@ -510,18 +510,7 @@ long peakMemoryKb() {
     struct rusage usage {};
     long peak = 0;
     if (getrusage(RUSAGE_SELF, &usage) == 0) peak = usage.ru_maxrss;
-    std::ifstream status("/proc/self/status");
-    std::string key;
-    while (status >> key) {
-        if (key == "VmHWM:") {
-            long kb = 0;
-            status >> kb;
-            peak = std::max(peak, kb);
-            break;
-        }
-        std::getline(status, key);
-    }
-    return peak;
+    return std::max(peak, long(processPeakMb() * 1024.0));
 }
 
 }  // namespace ma

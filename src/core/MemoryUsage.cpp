@@ -1,5 +1,7 @@
 #include "core/MemoryUsage.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <fstream>
 #include <string>
 
@@ -21,11 +23,24 @@ double statusFieldMb(const char* field) {
     return 0.0;
 }
 
+// The highest VmHWM seen just before a phase's reset.
+std::atomic<double> peakBeforeResets{0.0};
+
+void foldPeakBeforeReset() {
+    const double peak = statusFieldMb("VmHWM:");
+    double seen = peakBeforeResets.load();
+    while (peak > seen && !peakBeforeResets.compare_exchange_weak(seen, peak)) {
+    }
+}
+
 }  // namespace
 
 double residentMemoryMb() { return statusFieldMb("VmRSS:"); }
 
+double processPeakMb() { return std::max(peakBeforeResets.load(), statusFieldMb("VmHWM:")); }
+
 MemoryPhase::MemoryPhase() {
+    foldPeakBeforeReset();
     std::ofstream("/proc/self/clear_refs") << "5";  // VmHWM := VmRSS (Linux >= 4.0)
     start_ = residentMemoryMb();
 }
