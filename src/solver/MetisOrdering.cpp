@@ -2,11 +2,13 @@
 
 #include <metis.h>
 #include <sys/mman.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -127,6 +129,12 @@ void orderHalves(Graph (&half)[2], std::vector<idx_t> (&weights)[2], std::vector
     void* shared = twoProcesses ? mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0) : MAP_FAILED;
     const pid_t child = shared != MAP_FAILED ? fork() : -1;
     if (child == 0) {  // only METIS and memcpy here, then _exit: no atexit handler, no Python
+        // The run's own handlers would write into its .mess or wake its watchdog: a signal or a
+        // crash here ends only this child (the parent then orders the half itself), and the
+        // child does not outlive a parent that is stopped.
+        for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTERM, SIGINT, SIGHUP, SIGXCPU})
+            std::signal(sig, SIG_DFL);
+        prctl(PR_SET_PDEATHSIG, SIGKILL);
         auto* out = static_cast<idx_t*>(shared);
         try {
             const std::vector<idx_t> r = nestedDissection(half[1], weights[1]);
