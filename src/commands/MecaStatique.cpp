@@ -60,7 +60,7 @@ ConceptPtr mecaStatique(const KeywordSet& kw, CommandContext& ctx) {
                     report.maxResidual, report.relativeResidual);
     }
     msg().infof("    MECA_STATIQUE: {} step(s), {:.3f} s", instants.size(),
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+                secondsSince(t0));
     return result;
 }
 

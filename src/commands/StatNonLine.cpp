@@ -156,7 +156,7 @@ ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
     if (last > first && keep("SIEF_ELGA")) addInitialStresses(*result);
     msg().infof("    STAT_NON_LINE: {} increment(s), {} Newton iteration(s), {} archived order(s), {:.3f} s",
                 last - first, totalIterations, result->steps.size(),
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+                secondsSince(t0));
     return result;
 }
 

@@ -12,16 +12,12 @@
 #include <utility>
 #include <vector>
 
+#include "core/Timing.hpp"
 #include "fe/ClassicalElement.hpp"
 #include "fe/ElementIntegration.hpp"
 #include "fe/ElementKinematics.hpp"
 
 namespace ma {
-
-// Wall time since t0 and CPU time of the calling thread (phase costs that do not depend on the
-// machine's load), in seconds.
-double secondsSince(std::chrono::steady_clock::time_point t0);
-double threadCpuSeconds();
 
 // What the general path of a volume element reuses from one element to the next.
 struct GeneralElementScratch {

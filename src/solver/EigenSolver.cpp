@@ -8,16 +8,13 @@
 #include <cmath>
 
 #include "core/Error.hpp"
+#include "core/Timing.hpp"
 #include "core/Messages.hpp"
 #include "solver/LinearSolverImpl.hpp"
 
 namespace ma {
 
 namespace {
-
-double seconds(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 class EigenSolver : public ScaledDirectSolver {
 public:
@@ -53,7 +50,7 @@ protected:
         }
         msg().infof("    Eigen {} ({}): n = {}, non-zeros = {}, ordering {}, factorisation {:.3f} s",
                     spd_ ? "SimplicialLDLT" : "SparseLU", options_.method, A.rows, A.nonZeros(),
-                    spd_ ? "AMD" : "COLAMD", seconds(t0));
+                    spd_ ? "AMD" : "COLAMD", secondsSince(t0));
     }
 
     void solveScaled(std::span<double> rhs) override {

@@ -8,18 +8,11 @@
 #include <limits>
 
 #include "core/Error.hpp"
+#include "core/Timing.hpp"
 #include "core/Messages.hpp"
 #include "solver/LinearSolverImpl.hpp"
 
 namespace ma {
-
-namespace {
-
-double seconds(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-}  // namespace
 
 std::unique_ptr<LinearSolver> makeLinearSolver(const SolverOptions& options) {
     if (options.method == "MUMPS") return makeMumpsSolver(options);
@@ -149,7 +142,7 @@ double ScaledDirectSolver::solve(std::span<double> rhs) {
     }
     msg().infof("    {} solve {:.3f} s, relative residual ||Ku-f||/||f|| = {:.3e}, componentwise backward error "
                 "{:.2e}{}",
-                name(), seconds(t0), res.normwise, res.componentwise,
+                name(), secondsSince(t0), res.normwise, res.componentwise,
                 steps ? fmt::format(" after {} refinement step(s) (before: {:.3e}, {:.2e})", steps, first.normwise,
                                     first.componentwise)
                       : std::string(options_.maxRefinementSteps ? "" : " (no refinement)"));

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "core/Error.hpp"
+#include "core/Timing.hpp"
 
 namespace ma {
 
@@ -212,7 +213,7 @@ FillReducingOrdering nestedDissectionOrdering(const CsrMatrix& A, int threads) {
     for (size_t r = 0; r < n; ++r) firstRow[byRank[r]] = next, next += int(s.size[byRank[r]]);
     ordering.pivotRank.resize(size_t(A.rows));
     for (int i = 0; i < A.rows; ++i) ordering.pivotRank[i] = firstRow[s.of[i]]++;
-    ordering.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    ordering.seconds = secondsSince(t0);
     return ordering;
 }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/Error.hpp"
+#include "core/Timing.hpp"
 #include "core/MemoryUsage.hpp"
 #include "core/Messages.hpp"
 #include "solver/MetisOrdering.hpp"
@@ -24,10 +25,6 @@ namespace {
 constexpr int kJobInit = -1, kJobEnd = -2, kJobAnalyse = 1, kJobFactorise = 2, kJobSolve = 3;
 constexpr int kUseCommWorld = -987654;
 constexpr int kUserOrdering = 1;  // ICNTL(7)=1: PERM_IN
-
-double seconds(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 // RENUM -> MUMPS's ICNTL(7), or kUserOrdering for METIS, which MUMPS seq lacks and miniaster
 // computes itself (solver/MetisOrdering). AUTO is METIS: on the ssnv511 grids it is the cheapest
@@ -103,7 +100,7 @@ protected:
         malloc_trim(0);
         MemoryPhase factorisation;
         factorise();
-        logFactorisation(A, kind, seconds(t0), analysisPeak, factorisation);
+        logFactorisation(A, kind, secondsSince(t0), analysisPeak, factorisation);
         // The factors are all the solve needs, unless MUMPS's error analysis (ICNTL(11)) reads A.
         if (!options_.conditionEstimate) {
             LargeVector<MUMPS_INT>().swap(irn_), LargeVector<MUMPS_INT>().swap(jcn_);
@@ -191,7 +188,7 @@ private:
         std::vector<MUMPS_INT>().swap(permIn_);
         id_.perm_in = nullptr;
         if (id_.infog[0] < 0) throw NumericalError(mumpsErrorText(id_.infog[0], id_.infog[1]));
-        analysisSeconds_ = seconds(t0);
+        analysisSeconds_ = secondsSince(t0);
         predictedFlops_ = id_.rinfog[0];
     }
 
@@ -223,7 +220,7 @@ private:
             if (code < 0) throw NumericalError(mumpsErrorText(code, id_.infog[1]));
             break;
         }
-        factorisationSeconds_ = seconds(t0);
+        factorisationSeconds_ = secondsSince(t0);
         if (options_.nprec >= 0 && id_.infog[27] > 0)
             throw NumericalError(fmt::format(
                 "singular system: MUMPS found {} null pivot(s) (pivot below 1e-{} of the norm of the diagonal-scaled matrix, "
