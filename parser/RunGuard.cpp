@@ -10,11 +10,11 @@
 #include <cstdio>
 #include <cstring>
 #include <ctime>
-#include <fstream>
 #include <stdexcept>
 #include <thread>
 
 #include "core/MemoryLimit.hpp"
+#include "core/MemoryUsage.hpp"
 #include "core/Messages.hpp"
 #include "parser/RunState.hpp"
 
@@ -40,14 +40,6 @@ double cpuSeconds() {
     return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
-// Resident memory of the process in bytes (/proc/self/statm: pages).
-double residentBytes() {
-    std::ifstream statm("/proc/self/statm");
-    long size = 0, resident = 0;
-    statm >> size >> resident;
-    return double(resident) * double(::sysconf(_SC_PAGE_SIZE));
-}
-
 void watch(RunLimits limits, StopHandler stop) {
     while (!gStopping) {
         pollfd p{gWakePipe[0], POLLIN, 0};
@@ -61,10 +53,11 @@ void watch(RunLimits limits, StopHandler stop) {
             stop("TIME_LIMIT", fmt::format("the time limit of {:g} s (P time_limit, CPU time of the process) is "
                                            "reached; the run is stopped",
                                            *limits.timeLimitSeconds));
-        if (limits.memoryLimitMb && residentBytes() > *limits.memoryLimitMb * 1024.0 * 1024.0)
+        if (const double resident = limits.memoryLimitMb ? residentMemoryMb() : 0.0;
+            limits.memoryLimitMb && resident > *limits.memoryLimitMb)
             stop("MEMORY_LIMIT", fmt::format("the resident memory of the process ({:.0f} MB) exceeds the "
                                              "memory_limit of {:g} MB (P memory_limit); the run is stopped",
-                                             residentBytes() / (1024.0 * 1024.0), *limits.memoryLimitMb));
+                                             resident, *limits.memoryLimitMb));
     }
 }
 
