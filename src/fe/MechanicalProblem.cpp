@@ -1,3 +1,4 @@
+#include "fe/EquationPoints.hpp"
 #include "fe/MechanicalProblem.hpp"
 
 #include <fmt/format.h>
@@ -80,7 +81,8 @@ void MechanicalProblem::solveLinear(std::vector<double>& rhs) {
     }
     if (!factorised_) {
         const bool spd = constraints_->multi.empty() && int(constraints_->eq.size()) == numbering().size();
-        solver_->factorize(matrix_, spd ? MatrixKind::SymmetricPositiveDefinite : MatrixKind::SymmetricIndefinite);
+        solver_->factorize(matrix_, spd ? MatrixKind::SymmetricPositiveDefinite : MatrixKind::SymmetricIndefinite,
+                           equationPoints(*space_, *constraints_, matrix_.rows));
         factorised_ = true;
     }
     solver_->solve(rhs);

@@ -22,7 +22,8 @@ public:
     std::string name() const override { return "Eigen"; }
 
 protected:
-    void factorizeScaled(const CsrMatrix& A, std::span<const double> s, MatrixKind kind) override {
+    void factorizeScaled(const CsrMatrix& A, std::span<const double> s, MatrixKind kind,
+                         std::span<const RowPoint>) override {
         const auto t0 = std::chrono::steady_clock::now();
         std::vector<Eigen::Triplet<double>> triplets;
         triplets.reserve(A.nonZeros());

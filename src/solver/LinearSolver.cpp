@@ -87,7 +87,7 @@ ResidualInfo residualOf(const CsrMatrix& A, std::span<const double> x, std::span
     return info;
 }
 
-void ScaledDirectSolver::factorize(const CsrMatrix& A, MatrixKind kind) {
+void ScaledDirectSolver::factorize(const CsrMatrix& A, MatrixKind kind, std::span<const RowPoint> rowPoints) {
     A_ = &A;
     if (options_.diagonalScaling) {
         scale_ = symmetricDiagonalScaling(A);
@@ -105,7 +105,7 @@ void ScaledDirectSolver::factorize(const CsrMatrix& A, MatrixKind kind) {
     } else {
         scale_.assign(A.rows, 1.0);
     }
-    factorizeScaled(A, scale_, kind);
+    factorizeScaled(A, scale_, kind, rowPoints);
 }
 
 double ScaledDirectSolver::solve(std::span<double> rhs) {

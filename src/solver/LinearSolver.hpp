@@ -6,6 +6,7 @@
 // non-zeros, ordering, scaling, factorisation and solve times, the residual ||Ax - b|| / ||b||
 // and the componentwise backward error; a singular matrix raises NumericalError with the likely
 // cause.
+#include <array>
 #include <memory>
 #include <span>
 #include <string>
@@ -14,6 +15,9 @@
 
 namespace ma {
 
+// Where an unknown lives (its node's coordinates), for the coordinate ordering of RENUM='AUTO'.
+using RowPoint = std::array<float, 3>;
+
 enum class MatrixKind {
     SymmetricPositiveDefinite,  // stiffness with Dirichlet conditions eliminated
     SymmetricIndefinite,        // with Lagrange multipliers
@@ -21,7 +25,9 @@ enum class MatrixKind {
 
 struct SolverOptions {
     std::string method = "MUMPS";  // MUMPS | MULT_FRONT | LDLT
-    std::string renum = "AUTO";    // MUMPS ordering: AUTO (= METIS) METIS AMD AMF QAMD PORD SCOTCH
+    // MUMPS ordering: AUTO (coordinate nested dissection when every row has a point, else METIS)
+    // METIS AMD AMF QAMD PORD SCOTCH
+    std::string renum = "AUTO";
     int nprec = 8;                 // singular pivot threshold 10^-NPREC; < 0 disables the detection
     int pcentPivot = 20;           // MUMPS workspace relaxation (%)
     std::string typeResol = "AUTO";  // MUMPS TYPE_RESOL: SYMDEF forces SYM=1 on SPD systems
@@ -42,8 +48,8 @@ public:
     virtual ~LinearSolver() = default;
     virtual std::string name() const = 0;
     // Analyses and factorises A. A must stay alive and unchanged until the last solve (the
-    // residual check reads it).
-    virtual void factorize(const CsrMatrix& A, MatrixKind kind) = 0;
+    // residual check reads it). rowPoints: one per row, or empty when some row has none.
+    virtual void factorize(const CsrMatrix& A, MatrixKind kind, std::span<const RowPoint> rowPoints = {}) = 0;
     // rhs is overwritten by the solution. Returns ||A x - b|| / ||b|| (0 when b = 0).
     virtual double solve(std::span<double> rhs) = 0;
 };

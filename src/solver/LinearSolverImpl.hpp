@@ -39,12 +39,13 @@ ResidualInfo residualOf(const CsrMatrix& A, std::span<const double> x, std::span
 class ScaledDirectSolver : public LinearSolver {
 public:
     explicit ScaledDirectSolver(const SolverOptions& options) : options_(options) {}
-    void factorize(const CsrMatrix& A, MatrixKind kind) final;
+    void factorize(const CsrMatrix& A, MatrixKind kind, std::span<const RowPoint> rowPoints = {}) final;
     double solve(std::span<double> rhs) final;
 
 protected:
     // Factorise S A S (entries a_ij s_i s_j), S given by `scale` (all ones when scaling is off).
-    virtual void factorizeScaled(const CsrMatrix& A, std::span<const double> scale, MatrixKind kind) = 0;
+    virtual void factorizeScaled(const CsrMatrix& A, std::span<const double> scale, MatrixKind kind,
+                                 std::span<const RowPoint> rowPoints) = 0;
     // Solve (S A S) y = rhs in place with the factors.
     virtual void solveScaled(std::span<double> rhs) = 0;
 

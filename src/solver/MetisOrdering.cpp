@@ -9,72 +9,16 @@
 #include <algorithm>
 #include <chrono>
 #include <csignal>
-#include <cstring>
 #include <limits>
 #include <string>
 
 #include "core/Error.hpp"
 #include "core/Timing.hpp"
+#include "solver/OrderingGraph.hpp"
 
 namespace ma {
 
 namespace {
-
-// Consecutive rows with the same pattern (the unknowns of one node) form one vertex of the
-// graph METIS orders, weighted by their number: a 2D node graph has a quarter of the edges of the
-// dof graph, and the elimination order of the dofs follows from that of their nodes.
-struct Supervariables {
-    std::vector<int> of;      // row -> supervariable
-    std::vector<idx_t> size;  // supervariable -> rows
-};
-
-Supervariables consecutiveIdenticalRows(const CsrMatrix& A) {
-    Supervariables s;
-    s.of.resize(size_t(A.rows));
-    for (int i = 0; i < A.rows; ++i) {
-        const long long length = A.rowStart[i + 1] - A.rowStart[i];
-        const bool same = i > 0 && length == A.rowStart[i] - A.rowStart[i - 1] &&
-                          std::memcmp(&A.cols[A.rowStart[i]], &A.cols[A.rowStart[i - 1]], size_t(length) * sizeof(int)) == 0;
-        if (!same) s.size.push_back(0);
-        s.of[i] = int(s.size.size()) - 1;
-        ++s.size.back();
-    }
-    return s;
-}
-
-// Adjacency (both directions, no loops, no repeats) of the supervariables, from the upper
-// triangle of A: the entries the factorisation receives.
-struct Graph {
-    std::vector<idx_t> start, neighbours;
-};
-
-Graph supervariableGraph(const CsrMatrix& A, const Supervariables& s) {
-    const size_t n = s.size.size();
-    Graph g;
-    g.start.assign(n + 1, 0);
-    auto forEachEdge = [&](auto&& visit) {
-        for (int i = 0; i < A.rows; ++i)
-            for (long long k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k)
-                if (const int j = A.cols[k]; j > i && s.of[i] != s.of[j]) visit(s.of[i], s.of[j]);
-    };
-    forEachEdge([&](int a, int b) { ++g.start[a + 1], ++g.start[b + 1]; });
-    for (size_t v = 0; v < n; ++v) g.start[v + 1] += g.start[v];
-    std::vector<idx_t> raw(size_t(g.start[n])), fill(g.start.begin(), g.start.end() - 1);
-    forEachEdge([&](int a, int b) { raw[fill[a]++] = b, raw[fill[b]++] = a; });
-    // Sort and deduplicate each list in place, compacting as we go.
-    idx_t out = 0;
-    for (size_t v = 0; v < n; ++v) {
-        const auto first = raw.begin() + g.start[v], last = raw.begin() + g.start[v + 1];
-        std::sort(first, last);
-        const auto end = std::unique(first, last);
-        g.start[v] = out;
-        out = idx_t(std::copy(first, end, raw.begin() + out) - raw.begin());
-    }
-    g.start[n] = out;
-    raw.resize(size_t(out));
-    g.neighbours = std::move(raw);
-    return g;
-}
 
 [[noreturn]] void metisFailed(const char* function, int status, idx_t n) {
     throw NumericalError(std::string(function) + " failed (" +
@@ -92,7 +36,7 @@ void setOptions(idx_t* options) {
 }
 
 // Elimination rank of each vertex of g (weights w), by METIS_NodeND.
-std::vector<idx_t> nestedDissection(Graph& g, std::vector<idx_t>& w) {
+std::vector<idx_t> nestedDissection(OrderingGraph& g, std::vector<idx_t>& w) {
     idx_t n = idx_t(w.size());
     std::vector<idx_t> perm(static_cast<size_t>(n)), rank(static_cast<size_t>(n));
     if (g.start.back() == 0) {  // METIS wants edges; without any coupling every order is as good
@@ -108,9 +52,9 @@ std::vector<idx_t> nestedDissection(Graph& g, std::vector<idx_t>& w) {
 }
 
 // The subgraph of the vertices v with part[v] == which; local -> global vertex in `vertices`.
-Graph inducedSubgraph(const Graph& g, const std::vector<idx_t>& part, idx_t which, const std::vector<idx_t>& local,
+OrderingGraph inducedSubgraph(const OrderingGraph& g, const std::vector<idx_t>& part, idx_t which, const std::vector<idx_t>& local,
                       std::vector<idx_t>& vertices) {
-    Graph sub;
+    OrderingGraph sub;
     sub.start.push_back(0);
     for (size_t v = 0; v + 1 < g.start.size(); ++v) {
         if (part[v] != which) continue;
@@ -125,7 +69,7 @@ Graph inducedSubgraph(const Graph& g, const std::vector<idx_t>& part, idx_t whic
 // Orders the two halves, the second in a child process when `twoProcesses` (threads would share
 // METIS's random generator; a process has its own copy, reseeded by each call like this one's):
 // the ranks are the same either way. A failed fork or child falls back to this process.
-void orderHalves(Graph (&half)[2], std::vector<idx_t> (&weights)[2], std::vector<idx_t> (&rank)[2], bool twoProcesses) {
+void orderHalves(OrderingGraph (&half)[2], std::vector<idx_t> (&weights)[2], std::vector<idx_t> (&rank)[2], bool twoProcesses) {
     const size_t n1 = weights[1].size(), bytes = (n1 + 1) * sizeof(idx_t);
     void* shared = twoProcesses ? mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0) : MAP_FAILED;
     const pid_t child = shared != MAP_FAILED ? fork() : -1;
@@ -165,7 +109,7 @@ void orderHalves(Graph (&half)[2], std::vector<idx_t> (&weights)[2], std::vector
 // METIS_NodeND does at its first level.
 constexpr size_t kSplitVertices = 100000;
 
-std::vector<idx_t> splitNestedDissection(Graph& g, std::vector<idx_t>& w, int threads) {
+std::vector<idx_t> splitNestedDissection(OrderingGraph& g, std::vector<idx_t>& w, int threads) {
     idx_t n = idx_t(w.size());
     if (size_t(n) < kSplitVertices || g.start.back() == 0) return nestedDissection(g, w);
     idx_t options[METIS_NOPTIONS], separatorWeight = 0;
@@ -177,7 +121,7 @@ std::vector<idx_t> splitNestedDissection(Graph& g, std::vector<idx_t>& w, int th
     std::vector<idx_t> local(static_cast<size_t>(n)), count(3, 0);
     for (idx_t v = 0; v < n; ++v) local[v] = count[part[v]]++;
     std::vector<idx_t> vertices[2], weights[2], rank[2];
-    Graph half[2];
+    OrderingGraph half[2];
     for (int h = 0; h < 2; ++h) {
         half[h] = inducedSubgraph(g, part, h, local, vertices[h]);
         for (idx_t v : vertices[h]) weights[h].push_back(w[v]);
@@ -199,20 +143,11 @@ FillReducingOrdering nestedDissectionOrdering(const CsrMatrix& A, int threads) {
         throw NumericalError("METIS ordering: the matrix has more entries than METIS's 32-bit index");
     FillReducingOrdering ordering;
     const Supervariables s = consecutiveIdenticalRows(A);
-    Graph g = supervariableGraph(A, s);
+    OrderingGraph g = supervariableGraph(A, s);
     std::vector<idx_t> weight(s.size);
     ordering.vertices = idx_t(s.size.size());
     ordering.graphEdges = g.start.back() / 2;
-    const std::vector<idx_t> rankOfVertex = splitNestedDissection(g, weight, threads);
-    // The rows of each supervariable take consecutive ranks, in the supervariables' order.
-    const size_t n = s.size.size();
-    std::vector<idx_t> byRank(n);
-    for (size_t v = 0; v < n; ++v) byRank[rankOfVertex[v]] = idx_t(v);
-    std::vector<int> firstRow(n);
-    int next = 0;
-    for (size_t r = 0; r < n; ++r) firstRow[byRank[r]] = next, next += int(s.size[byRank[r]]);
-    ordering.pivotRank.resize(size_t(A.rows));
-    for (int i = 0; i < A.rows; ++i) ordering.pivotRank[i] = firstRow[s.of[i]]++;
+    ordering.pivotRank = rowRanks(s, splitNestedDissection(g, weight, threads));
     ordering.seconds = secondsSince(t0);
     return ordering;
 }

@@ -15,6 +15,7 @@
 #include "core/Timing.hpp"
 #include "core/MemoryUsage.hpp"
 #include "core/Messages.hpp"
+#include "solver/CoordinateOrdering.hpp"
 #include "solver/MetisOrdering.hpp"
 #include "solver/LinearSolverImpl.hpp"
 
@@ -26,10 +27,12 @@ constexpr int kJobInit = -1, kJobEnd = -2, kJobAnalyse = 1, kJobFactorise = 2, k
 constexpr int kUseCommWorld = -987654;
 constexpr int kUserOrdering = 1;  // ICNTL(7)=1: PERM_IN
 
-// RENUM -> MUMPS's ICNTL(7), or kUserOrdering for METIS, which MUMPS seq lacks and miniaster
-// computes itself (solver/MetisOrdering). AUTO is METIS: on the ssnv511 grids it is the cheapest
-// factorisation of all the orderings (docs/study.md, "Orderings").
-int orderingCode(const std::string& renum, std::string& used) {
+// RENUM -> MUMPS's ICNTL(7), or kUserOrdering for the nested dissections miniaster computes
+// itself: METIS (which MUMPS seq lacks, solver/MetisOrdering) and, for AUTO when every unknown has
+// a point, coordinate bisection (solver/CoordinateOrdering): on the ssnv511 grids the cheapest
+// factorisation of all, and the fastest to find (docs/solver.md, "Orderings").
+int orderingCode(const std::string& renum, bool havePoints, std::string& used) {
+    if (renum == "AUTO" && havePoints) return used = "COORDINATES", kUserOrdering;
     if (renum == "AMD") return used = "AMD", 0;
     if (renum == "AMF") return used = "AMF", 2;
     if (renum == "SCOTCH") return used = "SCOTCH", 3;
@@ -86,14 +89,15 @@ public:
     std::string name() const override { return "MUMPS"; }
 
 protected:
-    void factorizeScaled(const CsrMatrix& A, std::span<const double> s, MatrixKind kind) override {
+    void factorizeScaled(const CsrMatrix& A, std::span<const double> s, MatrixKind kind,
+                         std::span<const RowPoint> rowPoints) override {
         release();
         const auto t0 = std::chrono::steady_clock::now();
         MemoryPhase phase;
         residentBeforeMb_ = phase.startMb();
         upperTriangle(A, s);
         initialise(kind);
-        analyse(A);
+        analyse(A, rowPoints);
         const double analysisPeak = phase.peakMb();
         // The ordering's graphs and METIS's work arrays were freed in the heap: give those pages
         // back before MUMPS allocates its factors, or they stay resident beside them.
@@ -165,18 +169,23 @@ private:
         }
     }
 
-    // JOB=1 with the ordering RENUM asks for (METIS computed here and given as PERM_IN).
-    void analyse(const CsrMatrix& A) {
+    // JOB=1 with the ordering RENUM asks for (the nested dissections computed here and given as
+    // PERM_IN).
+    void analyse(const CsrMatrix& A, std::span<const RowPoint> rowPoints) {
         const auto t0 = std::chrono::steady_clock::now();
-        id_.icntl[6] = orderingCode(options_.renum, ordering_);
+        const bool havePoints = rowPoints.size() == size_t(A.rows) && A.rows > 0;
+        id_.icntl[6] = orderingCode(options_.renum, havePoints, ordering_);
         orderingNote_.clear();
         if (id_.icntl[6] == kUserOrdering) {
-            const FillReducingOrdering nd = nestedDissectionOrdering(A, options_.threads);
+            const bool byPoints = ordering_ == "COORDINATES";
+            const FillReducingOrdering nd = byPoints ? coordinateNestedDissection(A, rowPoints)
+                                                     : nestedDissectionOrdering(A, options_.threads);
             permIn_.resize(nd.pivotRank.size());
             for (size_t i = 0; i < permIn_.size(); ++i) permIn_[i] = nd.pivotRank[i] + 1;
             id_.perm_in = permIn_.data();
-            orderingNote_ = fmt::format("METIS_NodeND on the matrix graph ({} unknowns in {} vertices, {} edges) "
-                                        "{:.3f} s", A.rows, nd.vertices, nd.graphEdges, nd.seconds);
+            orderingNote_ = fmt::format("{} on the matrix graph ({} unknowns in {} vertices, {} edges) {:.3f} s",
+                                        byPoints ? "nested dissection by coordinate bisection" : "METIS_NodeND",
+                                        A.rows, nd.vertices, nd.graphEdges, nd.seconds);
         }
         id_.n = A.rows;
         id_.nnz = static_cast<MUMPS_INT8>(a_.size());
@@ -230,11 +239,13 @@ private:
 
     void logFactorisation(const CsrMatrix& A, MatrixKind kind, double total, double analysisPeakMb,
                           const MemoryPhase& factorisation) const {
-        static const char* orderings[] = {"AMD", "METIS (PERM_IN)", "AMF", "SCOTCH", "PORD", "METIS", "QAMD", "AUTO"};
+        static const char* orderings[] = {"AMD", "PERM_IN", "AMF", "SCOTCH", "PORD", "METIS", "QAMD", "AUTO"};
         const int usedOrdering = id_.infog[6];
         msg().infof("    MUMPS ({}): n = {}, non-zeros (upper triangle) = {}, ordering {} (asked {}){}",
                     id_.sym == 1 ? "SYM=1, positive definite" : "SYM=2, general symmetric", A.rows, id_.nnz,
-                    usedOrdering >= 0 && usedOrdering <= 7 ? orderings[usedOrdering] : "?", options_.renum,
+                    usedOrdering == kUserOrdering ? ordering_ + " (PERM_IN)"
+                    : usedOrdering >= 0 && usedOrdering <= 7 ? orderings[usedOrdering] : "?",
+                    options_.renum,
                     orderingNote_.empty() ? "" : ": " + orderingNote_);
         msg().infof("    MUMPS analysis {:.3f} s: predicted flops {:.3e} (RINFOG(1)), factor entries {:.4g} (INFOG(20)), "
                     "memory {} MB (INFOG(17))",
