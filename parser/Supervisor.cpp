@@ -293,7 +293,7 @@ int supervisorMain(int argc, char** argv) {
                                      limits.timeLimitSeconds ? fmt::format("time {:g} s (CPU) ", *limits.timeLimitSeconds) : "",
                                      limits.memoryLimitMb ? fmt::format("memory {:g} MB (resident)", *limits.memoryLimitMb) : "");
         msg().infof("  command file: {}\n  message log : {}\n  result file : {}\n  memory      : {}{}{}", run.commFile,
-                    outputs.mess, outputs.resu, mallocHugePagesState(),
+                    outputs.mess, outputs.resu, mallocPagesState(),
                     opt.checkOnly ? "\n  mode        : syntax check only (--check-syntax)" : "", announced);
         // The interpreter lives until the process ends: concepts may hold Python objects (FORMULE).
         py::initialize_interpreter();

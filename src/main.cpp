@@ -3,7 +3,6 @@
 #include <string>
 
 #include "cli/ResultTools.hpp"
-#include "core/MallocHugePages.hpp"
 #include "parser/Supervisor.hpp"
 
 int main(int argc, char** argv) {
@@ -19,6 +18,5 @@ int main(int argc, char** argv) {
                    "       miniaster plot RESULT.rmed [--field NAME] [--component C] [--deformed SCALE] -o OUT.png\n"
                    "       miniaster --version\n",
                    stdout);
-    ma::reexecWithMallocOnHugePages(argv);
     return ma::supervisorMain(argc, argv);
 }
