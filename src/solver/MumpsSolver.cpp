@@ -30,7 +30,7 @@ constexpr int kUserOrdering = 1;  // ICNTL(7)=1: PERM_IN
 // RENUM -> MUMPS's ICNTL(7), or kUserOrdering for the nested dissections miniaster computes
 // itself: METIS (which MUMPS seq lacks, solver/MetisOrdering) and, for AUTO when every unknown has
 // a point, coordinate bisection (solver/CoordinateOrdering): on the ssnv511 grids the cheapest
-// factorisation of all, and the fastest to find (docs/solver.md, "Orderings").
+// factorisation of all, and the fastest to find (docs/study.md, "Orderings").
 int orderingCode(const std::string& renum, bool havePoints, std::string& used) {
     if (renum == "AUTO" && havePoints) return used = "COORDINATES", kUserOrdering;
     if (renum == "AMD") return used = "AMD", 0;
