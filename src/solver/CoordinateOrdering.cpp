@@ -1,9 +1,11 @@
 #include "solver/CoordinateOrdering.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <thread>
 
 #include "core/Timing.hpp"
 #include "solver/OrderingGraph.hpp"
@@ -24,13 +26,15 @@ struct Split {
 class Bisection {
 public:
     Bisection(const OrderingGraph& g, const std::vector<idx_t>& weight, const std::vector<RowPoint>& point)
-        : g_(g), weight_(weight), point_(point), rank_(weight.size()), inPart_(weight.size(), 0),
+        : g_(g), weight_(weight), point_(point), rank_(weight.size()), part_(weight.size(), -1),
           coordinate_(weight.size()), reach_(weight.size()) {}
 
-    std::vector<idx_t> run() {
+    // Parts are disjoint and each vertex's scratch entries belong to its part: the two halves
+    // of the top `parallelLevels` levels are ordered on two threads, with the same ranks.
+    std::vector<idx_t> run(int parallelLevels) {
         std::vector<idx_t> all(weight_.size());
         for (size_t v = 0; v < all.size(); ++v) all[v] = idx_t(v);
-        order(std::move(all), 0);
+        order(std::move(all), 0, parallelLevels);
         return std::move(rank_);
     }
 
@@ -52,15 +56,18 @@ private:
 
     // coordinate_ along the axis; reach_: the largest coordinate of a neighbour in the part
     // (a vertex is in the separator of a plane at c when coordinate <= c < reach).
+    // A neighbour is in the part when it carries the part's number (numbers are never reused;
+    // the other thread may be renumbering its own vertices meanwhile, hence the atomic access).
     void measure(const std::vector<idx_t>& vertices, int axis) {
-        for (idx_t v : vertices) inPart_[v] = 1, coordinate_[v] = point_[v][axis];
+        const int part = nextPart_++;
+        for (idx_t v : vertices) std::atomic_ref<int>(part_[v]).store(part, std::memory_order_relaxed), coordinate_[v] = point_[v][axis];
         for (idx_t v : vertices) {
             float reach = std::numeric_limits<float>::lowest();
             for (idx_t k = g_.start[v]; k < g_.start[v + 1]; ++k)
-                if (const idx_t u = g_.neighbours[k]; inPart_[u]) reach = std::max(reach, coordinate_[u]);
+                if (const idx_t u = g_.neighbours[k]; std::atomic_ref<int>(part_[u]).load(std::memory_order_relaxed) == part)
+                    reach = std::max(reach, coordinate_[u]);
             reach_[v] = reach;
         }
-        for (idx_t v : vertices) inPart_[v] = 0;
     }
 
     float quantile(std::vector<float>& values, double q) const {
@@ -107,7 +114,7 @@ private:
         return best;
     }
 
-    void order(std::vector<idx_t> vertices, idx_t base) {
+    void order(std::vector<idx_t> vertices, idx_t base, int parallelLevels) {
         const int axis = vertices.size() > kLeafVertices ? longestAxis(vertices) : -1;
         if (axis < 0) return rankInOrder(vertices, base);
         measure(vertices, axis);
@@ -122,21 +129,28 @@ private:
         std::vector<idx_t>().swap(vertices);
         const idx_t leftCount = idx_t(left.size()), rightCount = idx_t(right.size());
         rankInOrder(separator, base + leftCount + rightCount);
-        order(std::move(left), base);
-        order(std::move(right), base + leftCount);
+        if (parallelLevels > 0) {
+            std::thread leftHalf([&] { order(std::move(left), base, parallelLevels - 1); });
+            order(std::move(right), base + leftCount, parallelLevels - 1);
+            leftHalf.join();
+        } else {
+            order(std::move(left), base, 0);
+            order(std::move(right), base + leftCount, 0);
+        }
     }
 
     const OrderingGraph& g_;
     const std::vector<idx_t>& weight_;
     const std::vector<RowPoint>& point_;
     std::vector<idx_t> rank_;
-    std::vector<char> inPart_;
+    std::vector<int> part_;  // the number of the part each vertex was last measured in
+    std::atomic<int> nextPart_ = 0;
     std::vector<float> coordinate_, reach_;
 };
 
 }  // namespace
 
-FillReducingOrdering coordinateNestedDissection(const CsrMatrix& A, std::span<const RowPoint> rowPoints) {
+FillReducingOrdering coordinateNestedDissection(const CsrMatrix& A, std::span<const RowPoint> rowPoints, int threads) {
     const auto t0 = std::chrono::steady_clock::now();
     FillReducingOrdering ordering;
     const Supervariables s = consecutiveIdenticalRows(A);
@@ -146,7 +160,7 @@ FillReducingOrdering coordinateNestedDissection(const CsrMatrix& A, std::span<co
     for (size_t i = s.of.size(); i-- > 0;) point[s.of[i]] = rowPoints[i];  // the first row's point
     ordering.vertices = idx_t(s.size.size());
     ordering.graphEdges = g.start.back() / 2;
-    ordering.pivotRank = rowRanks(s, Bisection(g, weight, point).run());
+    ordering.pivotRank = rowRanks(s, Bisection(g, weight, point).run(threads >= 4 ? 2 : threads >= 2 ? 1 : 0));
     ordering.seconds = secondsSince(t0);
     return ordering;
 }

@@ -17,6 +17,8 @@
 namespace ma {
 
 // rowPoints: one point per row of A (finite). The graph is that of nestedDissectionOrdering.
-FillReducingOrdering coordinateNestedDissection(const CsrMatrix& A, std::span<const RowPoint> rowPoints);
+// `threads` >= 2 orders the halves of the top levels on two threads; the ranks do not depend on it.
+FillReducingOrdering coordinateNestedDissection(const CsrMatrix& A, std::span<const RowPoint> rowPoints,
+                                                int threads = 1);
 
 }  // namespace ma

@@ -21,13 +21,14 @@ void checkSolution(std::span<const double> x, double residual, const SolverOptio
 std::vector<double> symmetricDiagonalScaling(const CsrMatrix& A);
 
 // Residual r = b - A x accumulated in extended precision (long double) and the two backward
-// errors: normwise ||r|| / ||b|| and componentwise max_i |r_i| / (|A| |x| + |b|)_i.
+// errors: normwise ||r|| / ||b|| and componentwise max_i |r_i| / (|A| |x| + |b|)_i; on `threads`
+// threads, with the same result for any number of them.
 struct ResidualInfo {
     double normwise = 0.0;
     double componentwise = 0.0;
 };
 ResidualInfo residualOf(const CsrMatrix& A, std::span<const double> x, std::span<const double> b,
-                        std::vector<double>& r);
+                        std::vector<double>& r, int threads = 1);
 
 // What MUMPS and Eigen share: the factorisation is done on S A S (S from
 // symmetricDiagonalScaling), solutions are mapped back, the residual is measured on the unscaled

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
+#include <thread>
 #include <vector>
 
 #include "core/Error.hpp"
@@ -107,8 +109,7 @@ protected:
         logFactorisation(A, kind, secondsSince(t0), analysisPeak, factorisation);
         // The factors are all the solve needs, unless MUMPS's error analysis (ICNTL(11)) reads A.
         if (!options_.conditionEstimate) {
-            LargeVector<MUMPS_INT>().swap(irn_), LargeVector<MUMPS_INT>().swap(jcn_);
-            LargeVector<double>().swap(a_);
+            triplets_ = {};
             id_.irn = id_.jcn = nullptr, id_.a = nullptr;
         }
     }
@@ -132,17 +133,40 @@ protected:
 
 private:
     // Upper triangle of S A S, 1-based coordinates.
+    // Each row's entries from its diagonal on (columns are sorted), written at offsets counted
+    // first, on the solver's threads: 0.9 s on one thread at 2e6 rows, most of it the first
+    // touch of 0.3 GB of fresh pages.
     void upperTriangle(const CsrMatrix& A, std::span<const double> s) {
-        irn_.clear(), jcn_.clear(), a_.clear();
-        const size_t upper = size_t(A.nonZeros() / 2 + A.rows);
-        irn_.reserve(upper), jcn_.reserve(upper), a_.reserve(upper);
-        for (int i = 0; i < A.rows; ++i)
-            for (long long k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k)
-                if (A.cols[k] >= i) {
-                    irn_.push_back(i + 1);
-                    jcn_.push_back(A.cols[k] + 1);
-                    a_.push_back(s[i] * A.values[k] * s[A.cols[k]]);
+        triplets_ = {};
+        auto diagonal = [&](int i) {
+            return std::lower_bound(A.cols.begin() + A.rowStart[i], A.cols.begin() + A.rowStart[i + 1], i) - A.cols.begin();
+        };
+        std::vector<long long> offset(size_t(A.rows) + 1, 0);
+        inRowRanges(A.rows, [&](int begin, int end) {
+            for (int i = begin; i < end; ++i) offset[i + 1] = A.rowStart[i + 1] - diagonal(i);
+        });
+        for (int i = 0; i < A.rows; ++i) offset[i + 1] += offset[i];
+        triplets_.size = size_t(offset.back());
+        triplets_.irn.reset(new MUMPS_INT[triplets_.size]), triplets_.jcn.reset(new MUMPS_INT[triplets_.size]);
+        triplets_.a.reset(new double[triplets_.size]);
+        inRowRanges(A.rows, [&](int begin, int end) {
+            for (int i = begin; i < end; ++i)
+                for (long long k = diagonal(i), at = offset[i]; k < A.rowStart[i + 1]; ++k, ++at) {
+                    triplets_.irn[at] = i + 1, triplets_.jcn[at] = A.cols[k] + 1;
+                    triplets_.a[at] = s[i] * A.values[k] * s[A.cols[k]];
                 }
+        });
+    }
+
+    // fn(begin, end) over `rows` split in options_.threads equal ranges, one per thread.
+    template <class Fn>
+    void inRowRanges(int rows, Fn&& fn) const {
+        const int threads = std::clamp(options_.threads, 1, 16);
+        std::vector<std::thread> workers;
+        for (int t = 1; t < threads; ++t)
+            workers.emplace_back([&, t] { fn(int(1LL * rows * t / threads), int(1LL * rows * (t + 1) / threads)); });
+        fn(0, int(1LL * rows / threads));
+        for (auto& w : workers) w.join();
     }
 
     void initialise(MatrixKind kind) {
@@ -178,7 +202,7 @@ private:
         orderingNote_.clear();
         if (id_.icntl[6] == kUserOrdering) {
             const bool byPoints = ordering_ == "COORDINATES";
-            const FillReducingOrdering nd = byPoints ? coordinateNestedDissection(A, rowPoints)
+            const FillReducingOrdering nd = byPoints ? coordinateNestedDissection(A, rowPoints, options_.threads)
                                                      : nestedDissectionOrdering(A, options_.threads);
             permIn_.resize(nd.pivotRank.size());
             for (size_t i = 0; i < permIn_.size(); ++i) permIn_[i] = nd.pivotRank[i] + 1;
@@ -188,10 +212,10 @@ private:
                                         A.rows, nd.vertices, nd.graphEdges, nd.seconds);
         }
         id_.n = A.rows;
-        id_.nnz = static_cast<MUMPS_INT8>(a_.size());
-        id_.irn = irn_.data();
-        id_.jcn = jcn_.data();
-        id_.a = a_.data();
+        id_.nnz = static_cast<MUMPS_INT8>(triplets_.size);
+        id_.irn = triplets_.irn.get();
+        id_.jcn = triplets_.jcn.get();
+        id_.a = triplets_.a.get();
         id_.job = kJobAnalyse;
         dmumps_c(&id_);
         std::vector<MUMPS_INT>().swap(permIn_);
@@ -280,8 +304,13 @@ private:
     std::string ordering_, orderingNote_;
     double analysisSeconds_ = 0.0, predictedFlops_ = 0.0, factorisationSeconds_ = 0.0, residentBeforeMb_ = 0.0;
     std::vector<MUMPS_INT> permIn_;
-    LargeVector<MUMPS_INT> irn_, jcn_;
-    LargeVector<double> a_;
+    // MUMPS's input: the upper triangle of S A S, 1-based (uninitialised storage, each entry
+    // written once by upperTriangle).
+    struct Triplets {
+        std::unique_ptr<MUMPS_INT[]> irn, jcn;
+        std::unique_ptr<double[]> a;
+        size_t size = 0;
+    } triplets_;
 };
 
 }  // namespace

@@ -131,6 +131,7 @@ TEST(SolverOrdering, CoordinateBisectionIsAReproduciblePermutationKeepingNodesTo
     EXPECT_EQ(o.vertices, 900);
     EXPECT_EQ(o.graphEdges, 2 * 29 * 30 + 2 * 29 * 29);
     EXPECT_EQ(coordinateNestedDissection(A, points).pivotRank, o.pivotRank);
+    for (int threads : {2, 4}) EXPECT_EQ(coordinateNestedDissection(A, points, threads).pivotRank, o.pivotRank) << threads;
 }
 
 // With a point per row, AUTO bisects by coordinates: on a grid it meets George's
