@@ -12,6 +12,7 @@
 #include <set>
 
 #include "core/AtomicFile.hpp"
+#include "core/Mpi.hpp"
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "core/TestReport.hpp"
@@ -234,7 +235,7 @@ void stopRunNow(RunOutputs& out, const std::string& paragraph, const std::string
     if (!tests.empty()) msg().info(fmt::format("\n{}", tests.summary()));
     const std::string rule(60, '-');
     msg().info(fmt::format("\n{}\n--- DIAGNOSTIC JOB : {}\n{}", rule, diagnostic, rule));
-    if (!msg().resuText().empty() && !msg().streamError()) {
+    if (!msg().resuText().empty() && !msg().streamError() && mpi::isRoot()) {
         try {
             writeResultFile(out, msg().resuText());
         } catch (const UserError& e) {

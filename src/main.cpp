@@ -1,8 +1,12 @@
 // miniaster: runs code_aster command files (.comm / .export); converts and plots results. See README.md.
 #include <cstdio>
+#include <exception>
 #include <string>
 
+#include "cli/MpiLaunch.hpp"
 #include "cli/ResultTools.hpp"
+#include "core/Mpi.hpp"
+#include "med_io/MedLibrary.hpp"
 #include "core/MallocHugePages.hpp"
 #include "parser/Supervisor.hpp"
 
@@ -19,6 +23,17 @@ int main(int argc, char** argv) {
                    "       miniaster plot RESULT.rmed [--field NAME] [--component C] [--deformed SCALE] -o OUT.png\n"
                    "       miniaster --version\n",
                    stdout);
+    if (command == "run")
+        if (const int status = ma::cli::launchProcessesIfAsked(argc, argv); status >= 0) return status;
     ma::reexecWithMallocOnHugePages(argv);
-    return ma::supervisorMain(argc, argv);
+    ma::med::initialiseBeforeMpi();
+    try {
+        ma::mpi::initialise(&argc, &argv);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "miniaster: %s (OpenMPI)\n", e.what());
+        return 1;
+    }
+    const int status = ma::supervisorMain(argc, argv);
+    ma::mpi::finalise();
+    return status;
 }

@@ -90,12 +90,13 @@ ResidualInfo residualOf(const CsrMatrix& A, std::span<const double> x, std::span
 void ScaledDirectSolver::factorize(const CsrMatrix& A, MatrixKind kind) {
     A_ = &A;
     if (options_.diagonalScaling) {
-        scale_ = symmetricDiagonalScaling(A);
+        const std::vector<double> diagonal = options_.distributed ? summedDiagonal(A) : std::vector<double>{};
+        scale_ = options_.distributed ? distributedDiagonalScaling(A, diagonal) : symmetricDiagonalScaling(A);
         double dmin = INFINITY, dmax = 0.0;
         int zero = 0;
         for (int i = 0; i < A.rows; ++i) {
-            const long long k = A.find(i, i);
-            const double d = k >= 0 ? std::abs(A.values[k]) : 0.0;
+            const long long k = options_.distributed ? -1 : A.find(i, i);
+            const double d = options_.distributed ? std::abs(diagonal[size_t(i)]) : k >= 0 ? std::abs(A.values[k]) : 0.0;
             if (d > 0.0) dmin = std::min(dmin, d), dmax = std::max(dmax, d);
             else ++zero;
         }
@@ -106,6 +107,11 @@ void ScaledDirectSolver::factorize(const CsrMatrix& A, MatrixKind kind) {
         scale_.assign(A.rows, 1.0);
     }
     factorizeScaled(A, scale_, kind);
+}
+
+ResidualInfo ScaledDirectSolver::residual(std::span<const double> x, std::span<const double> b,
+                                          std::vector<double>& r) const {
+    return options_.distributed ? distributedResidualOf(*A_, x, b, r) : residualOf(*A_, x, b, r);
 }
 
 double ScaledDirectSolver::solve(std::span<double> rhs) {
@@ -119,7 +125,7 @@ double ScaledDirectSolver::solve(std::span<double> rhs) {
         for (int i = 0; i < n; ++i) out[i] = scale_[i] * y[i];
     };
     correction(b, rhs);
-    ResidualInfo res = residualOf(*A_, rhs, b, r);
+    ResidualInfo res = residual(rhs, b, r);
     const ResidualInfo first = res;
     // One refinement step always (cheap next to the factorisation; it gains the last digits the
     // lip displacements need, measured in docs/xfem.md), more while the componentwise backward
@@ -131,7 +137,7 @@ double ScaledDirectSolver::solve(std::span<double> rhs) {
     while (steps < maxSteps && std::isfinite(res.componentwise) && (steps == 0 || res.componentwise > kRoundOff)) {
         correction(r, dx);
         for (int i = 0; i < n; ++i) candidate[i] = rhs[i] + dx[i];
-        const ResidualInfo next = residualOf(*A_, candidate, b, rNew);
+        const ResidualInfo next = residual(candidate, b, rNew);
         if (!(next.componentwise < res.componentwise)) break;  // no longer helps: keep the better one
         std::copy(candidate.begin(), candidate.end(), rhs.begin());
         r.swap(rNew);

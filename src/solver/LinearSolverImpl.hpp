@@ -29,6 +29,16 @@ struct ResidualInfo {
 ResidualInfo residualOf(const CsrMatrix& A, std::span<const double> x, std::span<const double> b,
                         std::vector<double>& r);
 
+// A distributed matrix (SolverOptions::distributed: the sum of the processes' parts, each with
+// the whole pattern; solver/DistributedSystem.cpp). Its diagonal, summed; the scaling above from
+// it (a zero-diagonal row scaled by the largest of the processes' partial entries); the residual
+// b - A x with the products summed over the processes in extended precision (the componentwise
+// scale |A| |x| from the partial entries: an upper bound).
+std::vector<double> summedDiagonal(const CsrMatrix& A);
+std::vector<double> distributedDiagonalScaling(const CsrMatrix& A, std::span<const double> diagonal);
+ResidualInfo distributedResidualOf(const CsrMatrix& A, std::span<const double> x, std::span<const double> b,
+                                   std::vector<double>& r);
+
 // What MUMPS and Eigen share: the factorisation is done on S A S (S from
 // symmetricDiagonalScaling), solutions are mapped back, the residual is measured on the unscaled
 // system and, while the componentwise backward error is above a few ulps and keeps decreasing,
@@ -51,6 +61,8 @@ protected:
     SolverOptions options_;
 
 private:
+    ResidualInfo residual(std::span<const double> x, std::span<const double> b, std::vector<double>& r) const;
+
     const CsrMatrix* A_ = nullptr;
     std::vector<double> scale_;
 };

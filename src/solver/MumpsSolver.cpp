@@ -1,7 +1,6 @@
-// Sequential MUMPS (libdmumps_seq). Only this file sees dmumps_c.h and MUMPS's fake mpi.h
-// (/usr/include/mumps_seq): MED code includes OpenMPI's mpi.h, and the two never meet in one
-// translation unit. MUMPS seq needs no MPI_Init; its Fortran MPI stubs (mpi_*_) come from
-// libmpiseq and do not clash with OpenMPI's C symbols (verified by test solver_med_mumps).
+// MUMPS (Debian's parallel libdmumps_ptscotch on OpenMPI). Only src/solver sees dmumps_c.h; the
+// communicator and the distributed input of a run on several processes are in
+// solver/MumpsDistributed (docs/mpi.md).
 #include <dmumps_c.h>
 #include <fmt/format.h>
 #include <malloc.h>
@@ -14,8 +13,10 @@
 #include "core/Error.hpp"
 #include "core/Timing.hpp"
 #include "core/MemoryUsage.hpp"
+#include "core/Mpi.hpp"
 #include "core/Messages.hpp"
 #include "solver/MetisOrdering.hpp"
+#include "solver/MumpsDistributed.hpp"
 #include "solver/LinearSolverImpl.hpp"
 
 namespace ma {
@@ -23,7 +24,6 @@ namespace ma {
 namespace {
 
 constexpr int kJobInit = -1, kJobEnd = -2, kJobAnalyse = 1, kJobFactorise = 2, kJobSolve = 3;
-constexpr int kUseCommWorld = -987654;
 constexpr int kUserOrdering = 1;  // ICNTL(7)=1: PERM_IN
 
 // RENUM -> MUMPS's ICNTL(7), or kUserOrdering for METIS, which MUMPS seq lacks and miniaster
@@ -101,11 +101,12 @@ protected:
         MemoryPhase factorisation;
         factorise();
         logFactorisation(A, kind, secondsSince(t0), analysisPeak, factorisation);
+        mumps::logProcesses(options_, id_, std::max(analysisPeak, factorisation.peakMb()));
         // The factors are all the solve needs, unless MUMPS's error analysis (ICNTL(11)) reads A.
         if (!options_.conditionEstimate) {
             LargeVector<MUMPS_INT>().swap(irn_), LargeVector<MUMPS_INT>().swap(jcn_);
             LargeVector<double>().swap(a_);
-            id_.irn = id_.jcn = nullptr, id_.a = nullptr;
+            mumps::clearEntries(id_);
         }
     }
 
@@ -117,6 +118,7 @@ protected:
         id_.job = kJobSolve;
         dmumps_c(&id_);
         if (id_.infog[0] < 0) throw NumericalError(mumpsErrorText(id_.infog[0], id_.infog[1]));
+        mumps::shareSolution(options_, rhs);
         // Estimates are for the matrix MUMPS factorised: the diagonal-scaled one when scaling is on.
         if (options_.conditionEstimate && !conditionLogged_)
             msg().infof("    MUMPS condition number estimates ({} matrix): cond1 = {:.3e}, cond2 = {:.3e}, backward errors "
@@ -134,7 +136,7 @@ private:
         irn_.reserve(upper), jcn_.reserve(upper), a_.reserve(upper);
         for (int i = 0; i < A.rows; ++i)
             for (long long k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k)
-                if (A.cols[k] >= i) {
+                if (A.cols[k] >= i && mumps::passes(options_, i, A.cols[k], A.values[k])) {
                     irn_.push_back(i + 1);
                     jcn_.push_back(A.cols[k] + 1);
                     a_.push_back(s[i] * A.values[k] * s[A.cols[k]]);
@@ -151,13 +153,14 @@ private:
         // when the detection is off (NPREC < 0) or asked for (TYPE_RESOL='SYMDEF').
         const bool spd = kind == MatrixKind::SymmetricPositiveDefinite;
         id_.sym = spd && (options_.nprec < 0 || options_.typeResol == "SYMDEF") ? 1 : 2;
-        id_.comm_fortran = kUseCommWorld;
+        id_.comm_fortran = mumps::communicator(options_);
         dmumps_c(&id_);
         initialised_ = true;
         if (id_.infog[0] < 0) throw NumericalError(mumpsErrorText(id_.infog[0], id_.infog[1]));
         // Silence MUMPS's own printing; we log what matters.
         id_.icntl[0] = -1, id_.icntl[1] = -1, id_.icntl[2] = -1, id_.icntl[3] = 0;
         id_.icntl[13] = options_.pcentPivot;
+        mumps::setInputFormat(id_, options_);
         refuseLowRank(options_);
         if (options_.nprec >= 0) {  // null pivot detection (code_aster's NPREC)
             id_.icntl[23] = 1;
@@ -170,19 +173,19 @@ private:
         const auto t0 = std::chrono::steady_clock::now();
         id_.icntl[6] = orderingCode(options_.renum, ordering_);
         orderingNote_.clear();
-        if (id_.icntl[6] == kUserOrdering) {
+        // On the host (rank 0) only: every process holds the whole pattern (docs/mpi.md).
+        if (id_.icntl[6] == kUserOrdering) mpi::collectively([&] {
+            if (!mpi::isRoot()) return;
             const FillReducingOrdering nd = nestedDissectionOrdering(A, options_.threads);
             permIn_.resize(nd.pivotRank.size());
             for (size_t i = 0; i < permIn_.size(); ++i) permIn_[i] = nd.pivotRank[i] + 1;
             id_.perm_in = permIn_.data();
             orderingNote_ = fmt::format("METIS_NodeND on the matrix graph ({} unknowns in {} vertices, {} edges) "
                                         "{:.3f} s", A.rows, nd.vertices, nd.graphEdges, nd.seconds);
-        }
+        });
         id_.n = A.rows;
-        id_.nnz = static_cast<MUMPS_INT8>(a_.size());
-        id_.irn = irn_.data();
-        id_.jcn = jcn_.data();
-        id_.a = a_.data();
+        mumps::setEntries(id_, options_, static_cast<MUMPS_INT8>(a_.size()), irn_.data(), jcn_.data(), a_.data());
+        entries_ = mumps::totalEntries(options_, static_cast<MUMPS_INT8>(a_.size()));
         id_.job = kJobAnalyse;
         dmumps_c(&id_);
         std::vector<MUMPS_INT>().swap(permIn_);
@@ -232,8 +235,9 @@ private:
                           const MemoryPhase& factorisation) const {
         static const char* orderings[] = {"AMD", "METIS (PERM_IN)", "AMF", "SCOTCH", "PORD", "METIS", "QAMD", "AUTO"};
         const int usedOrdering = id_.infog[6];
-        msg().infof("    MUMPS ({}): n = {}, non-zeros (upper triangle) = {}, ordering {} (asked {}){}",
-                    id_.sym == 1 ? "SYM=1, positive definite" : "SYM=2, general symmetric", A.rows, id_.nnz,
+        msg().infof("    MUMPS ({}): n = {}, non-zeros (upper triangle) = {}{}, ordering {} (asked {}){}",
+                    id_.sym == 1 ? "SYM=1, positive definite" : "SYM=2, general symmetric", A.rows, entries_,
+                    options_.distributed ? fmt::format(" in distributed triplets from {} processes (ICNTL(18)=3)", mpi::size()) : "",
                     usedOrdering >= 0 && usedOrdering <= 7 ? orderings[usedOrdering] : "?", options_.renum,
                     orderingNote_.empty() ? "" : ": " + orderingNote_);
         msg().infof("    MUMPS analysis {:.3f} s: predicted flops {:.3e} (RINFOG(1)), factor entries {:.4g} (INFOG(20)), "
@@ -257,7 +261,7 @@ private:
     }
 
     void release() {
-        if (!initialised_) return;
+        if (!initialised_ || !mpi::running()) return;  // (MPI already ended at exit: nothing to free)
         id_.job = kJobEnd;
         dmumps_c(&id_);
         initialised_ = false;
@@ -267,6 +271,7 @@ private:
     bool conditionLogged_ = false;  // once per factorisation (refinement steps solve again)
     bool initialised_ = false;
     std::string ordering_, orderingNote_;
+    double entries_ = 0.0;  // given by all processes
     double analysisSeconds_ = 0.0, predictedFlops_ = 0.0, factorisationSeconds_ = 0.0, residentBeforeMb_ = 0.0;
     std::vector<MUMPS_INT> permIn_;
     LargeVector<MUMPS_INT> irn_, jcn_;
