@@ -34,6 +34,9 @@ int main(int argc, char** argv) {
         return 1;
     }
     const int status = ma::supervisorMain(argc, argv);
+    const bool root = ma::mpi::isRoot();
     ma::mpi::finalise();
-    return status;
+    // The run's status is rank 0's (every process agreed on the failures): mpirun returns it. A
+    // non-zero status of another process would make mpirun abort the job while rank 0 finishes.
+    return root ? status : 0;
 }

@@ -61,7 +61,7 @@ int launchProcessesIfAsked(int argc, char** argv) {
     }
     std::error_code ec;
     const std::string self = std::filesystem::read_symlink("/proc/self/exe", ec).string();
-    std::vector<std::string> args = {"mpirun", "-np", std::to_string(k), "--bind-to", "none",
+    std::vector<std::string> args = {"mpirun", "--quiet", "-np", std::to_string(k), "--bind-to", "none",
                                      "-x", "OPENBLAS_NUM_THREADS", "-x", "OMP_NUM_THREADS"};
     if (k > cores) args.push_back("--oversubscribe");
     args.push_back(ec ? std::string(argv[0]) : self);
