@@ -48,19 +48,13 @@ ResidualInfo distributedResidualOf(const CsrMatrix& A, std::span<const double> x
         }
     mpi::sum(sums);
     r.resize(n);
-    long double num = 0.0L, den = 0.0L;
-    double componentwise = 0.0;
+    ResidualNorms norms;
     for (size_t i = 0; i < n; ++i) {
         const long double ri = b[i] - sums[i], scale = std::abs(b[i]) + sums[n + i];
         r[i] = static_cast<double>(ri);
-        num += ri * ri;
-        den += static_cast<long double>(b[i]) * b[i];
-        if (ri != 0.0L) componentwise = std::max(componentwise, scale > 0.0L ? double(std::abs(ri) / scale) : INFINITY);
+        norms.add(ri, scale, b[i]);
     }
-    ResidualInfo info;
-    info.normwise = double(den > 0.0L ? std::sqrt(num / den) : std::sqrt(num));
-    info.componentwise = componentwise;
-    return info;
+    return norms.info();
 }
 
 }  // namespace ma

@@ -67,8 +67,7 @@ std::vector<double> symmetricDiagonalScaling(const CsrMatrix& A) {
 ResidualInfo residualOf(const CsrMatrix& A, std::span<const double> x, std::span<const double> b,
                         std::vector<double>& r) {
     r.resize(A.rows);
-    long double num = 0.0L, den = 0.0L;
-    double componentwise = 0.0;
+    ResidualNorms norms;
     for (int i = 0; i < A.rows; ++i) {
         long double ri = b[i], scale = std::abs(b[i]);
         for (long long k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
@@ -77,13 +76,21 @@ ResidualInfo residualOf(const CsrMatrix& A, std::span<const double> x, std::span
             scale += std::abs(p);
         }
         r[i] = static_cast<double>(ri);
-        num += ri * ri;
-        den += static_cast<long double>(b[i]) * b[i];
-        if (ri != 0.0L) componentwise = std::max(componentwise, scale > 0.0L ? double(std::abs(ri) / scale) : INFINITY);
+        norms.add(ri, scale, b[i]);
     }
+    return norms.info();
+}
+
+void ResidualNorms::add(long double ri, long double scale, double bi) {
+    num_ += ri * ri;
+    den_ += static_cast<long double>(bi) * bi;
+    if (ri != 0.0L) componentwise_ = std::max(componentwise_, scale > 0.0L ? double(std::abs(ri) / scale) : INFINITY);
+}
+
+ResidualInfo ResidualNorms::info() const {
     ResidualInfo info;
-    info.normwise = double(den > 0.0L ? std::sqrt(num / den) : std::sqrt(num));
-    info.componentwise = componentwise;
+    info.normwise = double(den_ > 0.0L ? std::sqrt(num_ / den_) : std::sqrt(num_));
+    info.componentwise = componentwise_;
     return info;
 }
 

@@ -26,6 +26,16 @@ struct ResidualInfo {
     double normwise = 0.0;
     double componentwise = 0.0;
 };
+// The two backward errors accumulated row by row from r_i and its scale |b_i| + (|A| |x|)_i.
+class ResidualNorms {
+public:
+    void add(long double ri, long double scale, double bi);
+    ResidualInfo info() const;
+
+private:
+    long double num_ = 0.0L, den_ = 0.0L;
+    double componentwise_ = 0.0;
+};
 ResidualInfo residualOf(const CsrMatrix& A, std::span<const double> x, std::span<const double> b,
                         std::vector<double>& r);
 

@@ -26,7 +26,7 @@ namespace {
 constexpr int kJobInit = -1, kJobEnd = -2, kJobAnalyse = 1, kJobFactorise = 2, kJobSolve = 3;
 constexpr int kUserOrdering = 1;  // ICNTL(7)=1: PERM_IN
 
-// RENUM -> MUMPS's ICNTL(7), or kUserOrdering for METIS, which MUMPS seq lacks and miniaster
+// RENUM -> MUMPS's ICNTL(7), or kUserOrdering for METIS, which Debian's MUMPS lacks and miniaster
 // computes itself (solver/MetisOrdering). AUTO is METIS: on the ssnv511 grids it is the cheapest
 // factorisation of all the orderings (docs/study.md, "Orderings").
 int orderingCode(const std::string& renum, std::string& used) {

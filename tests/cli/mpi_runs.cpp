@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sys/wait.h>
 #include <sstream>
 
 #include "med_io/MedResultReader.hpp"
@@ -200,6 +201,46 @@ TEST(MpiRuns, RankZeroWriteFailureStopsEveryProcess) {
     EXPECT_EQ(files.second, files.first);
     EXPECT_EQ(std::count(files.second.begin(), files.second.end(), "xfem_quad4_n7.rmed"), 0);
     EXPECT_FALSE(temporary);
+}
+
+// Processes whose command line names `folder` (a run of this test left behind).
+int processesIn(const fs::path& folder) {
+    int n = 0;
+    for (const auto& e : fs::directory_iterator("/proc")) {
+        const std::string cmdline = readAll(e.path() / "cmdline");
+        n += cmdline.find(folder.string()) != std::string::npos;
+    }
+    return n;
+}
+
+// P time_limit and SIGTERM on 2 processes: rank 0 writes the paragraph and the TEST lines done so
+// far, as one process does; no process is left.
+TEST(MpiRuns, TimeLimitAndSignalStopEveryProcess) {
+    const auto dir = freshDir();
+    writeText(dir / "t.comm", replaced(readAll(kSource + "/astest/tables_chain.comm"), "\nFIN()", "\nwhile True: pass"));
+    writeText(dir / "t.export", "P time_limit 2\nF comm t.comm D 1\nF mmed " + kSource + "/astest/tables_chain.mmed D 20\n");
+    writeText(dir / "k.export", "F comm t.comm D 1\nF mmed " + kSource + "/astest/tables_chain.mmed D 20\n");
+    auto r = runMiniaster(dir, "t.export", "--np 2", kTimeout);
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.file("out/t.mess").find("<F> <TIME_LIMIT> (t.comm, in the Python code after the command of line"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.file("out/t.resu").find(" OK "), std::string::npos);
+
+    // SIGTERM to the run (the binary became mpirun: the same process), 3 s after its start.
+    writeText(dir / "kill.sh", "cd '" + dir.string() + "'\n'" + MINIASTER_BINARY +
+                                   "' run k.export --np 2 --out-dir out > kill.log 2>&1 &\n"
+                                   "pid=$!\nsleep 3\nkill -TERM $pid\nwait $pid\n");
+    const int raw = std::system(("timeout 300 sh '" + (dir / "kill.sh").string() + "'").c_str());
+    EXPECT_TRUE(WIFEXITED(raw));
+    EXPECT_EQ(WEXITSTATUS(raw), 1) << readAll(dir / "kill.log");
+    const std::string mess = r.file("out/k.mess");
+    EXPECT_NE(mess.find("<F> <INTERRUPTED> (t.comm, in the Python code after the command of line"), std::string::npos)
+        << readAll(dir / "kill.log");
+    EXPECT_NE(mess.find("--- DIAGNOSTIC JOB : <F>_INTERRUPTED"), std::string::npos);
+    EXPECT_EQ(processesIn(dir), 0);
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        EXPECT_EQ(e.path().filename().string().find(".miniaster-tmp."), std::string::npos) << e.path();
 }
 
 // The refined ssnv511e scene of ../shared/bench (X-FEM junction, contact on the three interfaces)
