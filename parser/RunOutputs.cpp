@@ -10,6 +10,8 @@
 #include <cstring>
 #include <filesystem>
 #include <set>
+#include <thread>
+#include <chrono>
 
 #include "core/AtomicFile.hpp"
 #include "core/Mpi.hpp"
@@ -228,7 +230,24 @@ bool finishOutputs(RunOutputs& out, bool failed, bool checkOnly) {
     return ok;
 }
 
+// A process other than rank 0 writes nothing. The time limit and the signals reach every process
+// within a moment: it waits a little, so that rank 0 (whose end makes mpirun end the others)
+// writes its paragraph, instead of ending first and making mpirun abort rank 0 unannounced. A
+// memory limit may be this process's alone: its cause goes to stderr (mpirun forwards it).
+namespace {
+
+[[noreturn]] void stopOtherProcessNow(const std::string& paragraph, const std::string& diagnostic) {
+    if (diagnostic == "<F>_MEMORY_LIMIT")
+        std::fprintf(stderr, "miniaster: MPI process %d of %d: %s\n", mpi::rank(), mpi::size(), paragraph.c_str());
+    std::this_thread::sleep_for(std::chrono::seconds(3));
+    removeLiveTemporaries();
+    ::_exit(1);
+}
+
+}  // namespace
+
 void stopRunNow(RunOutputs& out, const std::string& paragraph, const std::string& diagnostic) {
+    if (!mpi::isRoot()) stopOtherProcessNow(paragraph, diagnostic);
     msg().freeze();
     msg().info("\n" + paragraph + "\n");
     const auto& tests = testReport();
