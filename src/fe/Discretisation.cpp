@@ -1,5 +1,6 @@
 #include "fe/Discretisation.hpp"
 
+#include "core/Mpi.hpp"
 #include "fe/ElasticityKernels.hpp"
 #include "fe/Enrichment.hpp"
 #include "fe/Quadrature.hpp"
@@ -60,7 +61,12 @@ void Discretisation::distribute(int processes, int rank) {
         cells.push_back(model_->elements[e].cell);
         weights.push_back(static_cast<int>(pointCount(e)));  // X-FEM cells weigh their sub-cells' points
     }
-    owner_ = partitionCells(mesh(), cells, weights, dim(), processes);
+    // Rank 0's partition for every process (METIS's fixed seed makes it the same run after run).
+    mpi::collectively([&] {
+        if (rank == 0) owner_ = partitionCells(mesh(), cells, weights, dim(), processes);
+    });
+    owner_.resize(elementCount());
+    mpi::broadcast(owner_);
     rank_ = rank, processes_ = processes;
     cellElement_.assign(size_t(mesh().cellCount()), -1);
     for (size_t e = 0; e < elementCount(); ++e) cellElement_[size_t(cells[e])] = static_cast<int>(e);

@@ -37,6 +37,7 @@ public:
 
     // Cells dealt to the processes (docs/mpi.md): each process computes only the elements it owns.
     // Without it (one process, or a solver that is not distributed), every element is owned.
+    // Collective: every process calls it (rank 0 partitions, the others receive its partition).
     void distribute(int processes, int rank);
     bool distributed() const { return !owner_.empty(); }
     bool owns(size_t e) const { return owner_.empty() || owner_[e] == rank_; }
