@@ -1,4 +1,5 @@
 #include "med_io/MedFileHandle.hpp"
+#include "med_io/MedLibrary.hpp"
 
 #include <hdf5.h>
 #include <sys/mman.h>
@@ -45,6 +46,8 @@ void silenceHdf5Errors() {
     }();
     (void)done;
 }
+
+void initialiseBeforeMpi() { silenceHdf5Errors(); }
 
 StderrCapture::StderrCapture() {
     if (gCapture.depth++ > 0) return;

@@ -83,6 +83,11 @@ private:
                 fail(fmt::format("'{}' must be a positive number ({}), got '{}'", name,
                                  name == "time_limit" ? "seconds" : "megabytes", t[2]));
             (name == "time_limit" ? out_.timeLimitSeconds : out_.memoryLimitMb) = *value;
+        } else if (name == "mpi_nbcpu") {
+            const auto value = t.size() == 3 ? parseUnit(t[2]) : std::nullopt;
+            if (!value || *value < 1 || *value > kMaxProcesses)
+                fail(fmt::format("'mpi_nbcpu' must be a number of processes from 1 to {}", kMaxProcesses));
+            out_.mpiProcesses = *value;
         }
     }
 

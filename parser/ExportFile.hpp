@@ -18,6 +18,9 @@ struct ExportError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// Largest process count accepted from P mpi_nbcpu and --np.
+inline constexpr int kMaxProcesses = 4096;
+
 struct ExportEntry {
     int line = 0;
     bool directory = false;  // an `R` line
@@ -32,6 +35,7 @@ struct ExportFile {
     std::vector<ExportEntry> entries;
     std::optional<double> timeLimitSeconds;  // P time_limit
     std::optional<double> memoryLimitMb;     // P memory_limit
+    std::optional<int> mpiProcesses;         // P mpi_nbcpu (processes; --np on the command line wins)
     std::string where(const ExportEntry& e) const;  // "case.export, line N"
 };
 

@@ -16,6 +16,7 @@
 #include <cstdlib>
 
 #include "core/Error.hpp"
+#include "core/Mpi.hpp"
 #include "core/MemoryLimit.hpp"
 #include "core/MemoryUsage.hpp"
 #include "core/Messages.hpp"
@@ -337,6 +338,18 @@ CallArguments callArguments(const std::string& name, const py::dict& keywords, p
     return callArgs;
 }
 
+// Every process ends each command here (docs/mpi.md): a failure on one of them (rank 0's outputs,
+// a process's own cells) becomes the failure of all, with that process's paragraph.
+void agreeOnCommand(RunState& run) {
+    if (mpi::size() == 1) return;
+    std::optional<mpi::Failure> local;
+    if (run.failure) local = mpi::Failure{0, run.failure->paragraph};
+    const auto agreed = mpi::agree(local);
+    if (!agreed || run.failure) return;
+    run.failure = RunFailure{"ERROR", agreed->text};
+    msg().info("\n" + agreed->text + "\n");
+}
+
 py::object runCommand(const std::string& name, py::object frame, py::tuple args, py::dict keywords) {
     auto& run = RunState::current();
     if (run.failure) throw AbortRun{};
@@ -385,6 +398,8 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
         run.recordTiming(name, seconds);
         msg().info(fmt::format(" # end of {} (line {}): elapsed {:.3f} s, peak memory {:.1f} MB", name, line, seconds,
                                peakMemoryKb() / 1024.0));
+        agreeOnCommand(run);
+        if (run.failure) throw AbortRun{};
         return wrap(result);
     } catch (const AbortRun&) {
         throw;
@@ -408,6 +423,7 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
     } catch (...) {
         run.fail("ERROR", name, line, "unexpected error of unknown type");
     }
+    agreeOnCommand(run);
     throw AbortRun{};
 }
 

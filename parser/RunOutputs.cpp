@@ -10,8 +10,11 @@
 #include <cstring>
 #include <filesystem>
 #include <set>
+#include <thread>
+#include <chrono>
 
 #include "core/AtomicFile.hpp"
+#include "core/Mpi.hpp"
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "core/TestReport.hpp"
@@ -227,14 +230,31 @@ bool finishOutputs(RunOutputs& out, bool failed, bool checkOnly) {
     return ok;
 }
 
+// A process other than rank 0 writes nothing. The time limit and the signals reach every process
+// within a moment: it waits a little, so that rank 0 (whose end makes mpirun end the others)
+// writes its paragraph, instead of ending first and making mpirun abort rank 0 unannounced. A
+// memory limit may be this process's alone: its cause goes to stderr (mpirun forwards it).
+namespace {
+
+[[noreturn]] void stopOtherProcessNow(const std::string& paragraph, const std::string& diagnostic) {
+    if (diagnostic == "<F>_MEMORY_LIMIT")
+        std::fprintf(stderr, "miniaster: MPI process %d of %d: %s\n", mpi::rank(), mpi::size(), paragraph.c_str());
+    std::this_thread::sleep_for(std::chrono::seconds(3));
+    removeLiveTemporaries();
+    ::_exit(1);
+}
+
+}  // namespace
+
 void stopRunNow(RunOutputs& out, const std::string& paragraph, const std::string& diagnostic) {
+    if (!mpi::isRoot()) stopOtherProcessNow(paragraph, diagnostic);
     msg().freeze();
     msg().info("\n" + paragraph + "\n");
     const auto& tests = testReport();
     if (!tests.empty()) msg().info(fmt::format("\n{}", tests.summary()));
     const std::string rule(60, '-');
     msg().info(fmt::format("\n{}\n--- DIAGNOSTIC JOB : {}\n{}", rule, diagnostic, rule));
-    if (!msg().resuText().empty() && !msg().streamError()) {
+    if (!msg().resuText().empty() && !msg().streamError() && mpi::isRoot()) {
         try {
             writeResultFile(out, msg().resuText());
         } catch (const UserError& e) {

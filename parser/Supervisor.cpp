@@ -12,6 +12,7 @@
 
 #include "core/Error.hpp"
 #include "core/MallocHugePages.hpp"
+#include "core/Mpi.hpp"
 #include "core/Messages.hpp"
 #include "core/TestReport.hpp"
 #include "parser/RunOptions.hpp"
@@ -33,11 +34,12 @@ std::string usage() {
     std::string options;
     for (const auto& [name, o] : RunOptionRegistry::instance().options()) options += fmt::format(" [--{} {}]", name, o.valueName);
     std::string text = fmt::format(
-        "usage: miniaster run CASE.export [--out-dir DIR] [--check-syntax]{0}\n"
-        "       miniaster run CASE.comm [--mesh MESH.med] [--out-dir DIR] [--check-syntax]{0}\n"
+        "usage: miniaster run CASE.export [--np K] [--out-dir DIR] [--check-syntax]{0}\n"
+        "       miniaster run CASE.comm [--mesh MESH.med] [--np K] [--out-dir DIR] [--check-syntax]{0}\n"
         "Runs a code_aster command file. Writes <case>.mess (message log) and <case>.resu (TEST lines,\n"
         "tables) in DIR (default: the current folder). --check-syntax validates every command call\n"
-        "against the catalog without executing any.\n",
+        "against the catalog without executing any. --np K runs K MPI processes (mpirun; P mpi_nbcpu K\n"
+        "in the .export does the same, the command line wins; docs/mpi.md).\n",
         options);
     for (const auto& [name, o] : RunOptionRegistry::instance().options()) text += o.help + "\n";
     return text + "Exit status: 0 OK, 2 a TEST is NOOK, 1 error.\n";
@@ -49,6 +51,7 @@ struct Options {
     bool outDirGiven = false;
     std::string mesh;
     bool checkOnly = false;
+    int processes = 0;  // --np (0: not given)
     std::map<std::string, std::string> runOptions;  // registered expert options given
 };
 
@@ -177,6 +180,15 @@ Options parseArguments(int argc, char** argv) {
             opt.outDirGiven = true;
         } else if (a == "--mesh") {
             opt.mesh = value();
+        } else if (a == "--np") {
+            const std::string v = value();
+            const bool number = !v.empty() && v.find_first_not_of("0123456789") == std::string::npos && v.size() < 6;
+            opt.processes = number ? std::stoi(v) : 0;
+            if (opt.processes < 1 || opt.processes > kMaxProcesses)
+                throw SetupError(fmt::format("--np needs a number of processes from 1 to {}, got '{}'", kMaxProcesses, v));
+            if (opt.processes != mpi::size())
+                throw SetupError(fmt::format("--np {}: this run has {} MPI process(es) (mpirun -np {})", opt.processes,
+                                             mpi::size(), mpi::size()));
         } else if (a == "--check-syntax") {
             opt.checkOnly = true;
         } else if (const RunOption* o = a.starts_with("--") ? RunOptionRegistry::instance().find(a.substr(2)) : nullptr) {
@@ -233,91 +245,63 @@ RunLimits setUpRun(const Options& opt, RunState& run, RunOutputs& outputs) {
     return limits;
 }
 
-}  // namespace
-
-int supervisorMain(int argc, char** argv) {
-    if (argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
-        std::fputs(usage().c_str(), stdout);
-        return 0;
+// The outputs checked and the .mess opened by rank 0 (the other processes write nothing); every
+// process learns whether that worked. An exit status when the run cannot start.
+std::optional<int> openOutputs(RunOutputs& outputs, const std::optional<std::string>& setupFailure) {
+    std::optional<mpi::Failure> failure;
+    if (mpi::isRoot()) {
+        try {
+            prepareOutputs(outputs);
+            openMessageLog(outputs);
+        } catch (const UserError& e) {
+            failure = mpi::Failure{0, e.what()};
+        }
     }
-    Options opt;
-    try {
-        opt = parseArguments(argc, argv);
-    } catch (const SetupError& e) {
-        if (*e.what()) std::fprintf(stderr, "miniaster: %s\n", e.what());
-        std::fputs(usage().c_str(), stderr);
-        return 1;
-    }
-
-    RunState& run = RunState::current();
-    run.checkOnly = opt.checkOnly;
-    run.runOptions = opt.runOptions;
-    const std::string caseName = fs::path(opt.input).stem().string();
-    RunOutputs outputs;
-    gOutputs = &outputs;
-    outputs.outDir = fs::absolute(opt.outDir).lexically_normal().string();
-    msg().info(banner());
-
-    // Setup, before the first command: a bad .export or input is logged in the .mess (when the
-    // output folder can hold one); an output that cannot be written stops the run at once.
-    RunLimits limits;
-    std::optional<std::string> setupFailure;
-    try {
-        limits = setUpRun(opt, run, outputs);
-    } catch (const std::exception& e) {  // SetupError, ExportError, UserError
-        setupFailure = e.what();
-    }
-    if (outputs.mess.empty()) outputs.mess = (fs::path(outputs.outDir) / (caseName + ".mess")).string();
-    if (outputs.resu.empty()) outputs.resu = (fs::path(outputs.outDir) / (caseName + ".resu")).string();
-    try {
-        prepareOutputs(outputs);
-        openMessageLog(outputs);
-    } catch (const UserError& e) {
+    failure = mpi::agree(failure);
+    if (!failure) return std::nullopt;
+    if (mpi::isRoot()) {
         if (setupFailure) std::fprintf(stderr, "miniaster: %s\n", setupFailure->c_str());
-        std::fprintf(stderr, "miniaster: %s; nothing was run\n", e.what());
-        return 1;
+        std::fprintf(stderr, "miniaster: %s; nothing was run\n", failure->text.c_str());
     }
-    if (setupFailure) {
-        run.commBaseName = fs::path(opt.input).filename().string();
-        run.failure = RunFailure{"ERROR", fmt::format("<F> <ERROR> {}", *setupFailure)};
-        msg().info("\n" + run.failure->paragraph + "\n");
-    }
-    if (!run.failure) {
-        run.commBaseName = fs::path(run.commFile).filename().string();
-        std::string announced;
-        for (const auto& [name, value] : opt.runOptions)
-            if (const std::string line = RunOptionRegistry::instance().find(name)->announce(value); !line.empty())
-                announced += "\n  " + line;
-        if (limits.timeLimitSeconds || limits.memoryLimitMb)
-            announced += fmt::format("\n  limits      : {}{}",
-                                     limits.timeLimitSeconds ? fmt::format("time {:g} s (CPU) ", *limits.timeLimitSeconds) : "",
-                                     limits.memoryLimitMb ? fmt::format("memory {:g} MB (resident)", *limits.memoryLimitMb) : "");
-        msg().infof("  command file: {}\n  message log : {}\n  result file : {}\n  memory      : {}{}{}", run.commFile,
-                    outputs.mess, outputs.resu, mallocPagesState(),
-                    opt.checkOnly ? "\n  mode        : syntax check only (--check-syntax)" : "", announced);
-        // The interpreter lives until the process ends: concepts may hold Python objects (FORMULE).
-        py::initialize_interpreter();
-        installCrashHandler(outputs.messFd);  // after Python, which installs its own handlers
-        startRunGuard(limits, stopFromWatchdog);
-        try {
-            installPythonBuiltins();
-            executeCommandFile(run);
-        } catch (py::error_already_set& e) {
-            run.fail("ERROR", "", 0, std::string("internal error of the supervisor: ") + e.what());
-        } catch (const std::exception& e) {
-            run.fail("ERROR", "", 0, unexpectedErrorCause(e));
-        }
-        // print() output still buffered.
-        try {
-            py::module_::import("sys").attr("stdout").attr("flush")();
-        } catch (...) {
-        }
-        if (!run.failure && !run.finSeen) msg().alarm("SUPERVIS_2", "The command file ended without FIN().");
-    }
+    return 1;
+}
 
-    stopRunGuard();
+// The header of the .mess, then the command file in the embedded interpreter.
+void runCommandFile(const Options& opt, RunState& run, RunOutputs& outputs, const RunLimits& limits) {
+    run.commBaseName = fs::path(run.commFile).filename().string();
+    std::string announced;
+    for (const auto& [name, value] : opt.runOptions)
+        if (const std::string line = RunOptionRegistry::instance().find(name)->announce(value); !line.empty())
+            announced += "\n  " + line;
+    if (limits.timeLimitSeconds || limits.memoryLimitMb)
+        announced += fmt::format("\n  limits      : {}{}",
+                                 limits.timeLimitSeconds ? fmt::format("time {:g} s (CPU) ", *limits.timeLimitSeconds) : "",
+                                 limits.memoryLimitMb ? fmt::format("memory {:g} MB (resident)", *limits.memoryLimitMb) : "");
+    msg().infof("  command file: {}\n  message log : {}\n  result file : {}\n  memory      : {}\n  MPI processes: {}{}{}",
+                run.commFile, outputs.mess, outputs.resu, mallocPagesState(), mpi::size(),
+                opt.checkOnly ? "\n  mode        : syntax check only (--check-syntax)" : "", announced);
+    // The interpreter lives until the process ends: concepts may hold Python objects (FORMULE).
+    py::initialize_interpreter();
+    installCrashHandler(outputs.messFd);  // after Python, which installs its own handlers
+    startRunGuard(limits, stopFromWatchdog);
+    try {
+        installPythonBuiltins();
+        executeCommandFile(run);
+    } catch (py::error_already_set& e) {
+        run.fail("ERROR", "", 0, std::string("internal error of the supervisor: ") + e.what());
+    } catch (const std::exception& e) {
+        run.fail("ERROR", "", 0, unexpectedErrorCause(e));
+    }
+    // print() output still buffered.
+    try {
+        py::module_::import("sys").attr("stdout").attr("flush")();
+    } catch (...) {
+    }
+    if (!run.failure && !run.finSeen) msg().alarm("SUPERVIS_2", "The command file ended without FIN().");
+}
 
-    // Summary, diagnostic, exit status.
+// Summary, diagnostic, the outputs closed (rank 0); the exit status.
+int finishRun(const Options& opt, const RunState& run, RunOutputs& outputs) {
     const auto& tests = testReport();
     if (!tests.empty()) msg().info("\n" + tests.summary());
     msg().info(timingSummary(run));
@@ -341,10 +325,59 @@ int supervisorMain(int argc, char** argv) {
     const std::string rule(60, '-');
     msg().info(fmt::format("\n{}\n--- DIAGNOSTIC JOB : {}\n{}", rule, diagnostic, rule));
 
-    if (!finishOutputs(outputs, run.failure.has_value(), opt.checkOnly)) status = 1;
+    if (mpi::isRoot() && !finishOutputs(outputs, run.failure.has_value(), opt.checkOnly)) status = 1;
     installCrashHandler(-1);  // the .mess is closed
     std::fflush(stdout);
     return status;
+}
+
+}  // namespace
+
+// Every process runs the same command file (docs/mpi.md); only rank 0 prints and writes.
+int supervisorMain(int argc, char** argv) {
+    if (argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
+        if (mpi::isRoot()) std::fputs(usage().c_str(), stdout);
+        return 0;
+    }
+    if (!mpi::isRoot()) msg().setEcho(false);
+    Options opt;
+    try {
+        opt = parseArguments(argc, argv);
+    } catch (const SetupError& e) {
+        if (mpi::isRoot() && *e.what()) std::fprintf(stderr, "miniaster: %s\n", e.what());
+        if (mpi::isRoot()) std::fputs(usage().c_str(), stderr);
+        return 1;
+    }
+
+    RunState& run = RunState::current();
+    run.checkOnly = opt.checkOnly;
+    run.runOptions = opt.runOptions;
+    const std::string caseName = fs::path(opt.input).stem().string();
+    RunOutputs outputs;
+    gOutputs = &outputs;
+    outputs.outDir = fs::absolute(opt.outDir).lexically_normal().string();
+    msg().info(banner());
+
+    // Setup, before the first command: a bad .export or input is logged in the .mess (when the
+    // output folder can hold one); an output that cannot be written stops the run at once.
+    RunLimits limits;
+    std::optional<std::string> setupFailure;
+    try {
+        limits = setUpRun(opt, run, outputs);
+    } catch (const std::exception& e) {  // SetupError, ExportError, UserError
+        setupFailure = e.what();
+    }
+    if (outputs.mess.empty()) outputs.mess = (fs::path(outputs.outDir) / (caseName + ".mess")).string();
+    if (outputs.resu.empty()) outputs.resu = (fs::path(outputs.outDir) / (caseName + ".resu")).string();
+    if (const auto status = openOutputs(outputs, setupFailure)) return *status;
+    if (setupFailure) {
+        run.commBaseName = fs::path(opt.input).filename().string();
+        run.failure = RunFailure{"ERROR", fmt::format("<F> <ERROR> {}", *setupFailure)};
+        msg().info("\n" + run.failure->paragraph + "\n");
+    }
+    if (!run.failure) runCommandFile(opt, run, outputs, limits);
+    stopRunGuard();
+    return finishRun(opt, run, outputs);
 }
 
 }  // namespace ma

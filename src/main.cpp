@@ -1,8 +1,12 @@
 // miniaster: runs code_aster command files (.comm / .export); converts and plots results. See README.md.
 #include <cstdio>
+#include <exception>
 #include <string>
 
+#include "cli/MpiLaunch.hpp"
 #include "cli/ResultTools.hpp"
+#include "core/Mpi.hpp"
+#include "med_io/MedLibrary.hpp"
 #include "parser/Supervisor.hpp"
 
 int main(int argc, char** argv) {
@@ -18,5 +22,19 @@ int main(int argc, char** argv) {
                    "       miniaster plot RESULT.rmed [--field NAME] [--component C] [--deformed SCALE] -o OUT.png\n"
                    "       miniaster --version\n",
                    stdout);
-    return ma::supervisorMain(argc, argv);
+    if (command == "run")
+        if (const int status = ma::cli::launchProcessesIfAsked(argc, argv); status >= 0) return status;
+    ma::med::initialiseBeforeMpi();
+    try {
+        ma::mpi::initialise(&argc, &argv);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "miniaster: %s (OpenMPI)\n", e.what());
+        return 1;
+    }
+    const int status = ma::supervisorMain(argc, argv);
+    const bool root = ma::mpi::isRoot();
+    ma::mpi::finalise();
+    // The run's status is rank 0's (every process agreed on the failures): mpirun returns it. A
+    // non-zero status of another process would make mpirun abort the job while rank 0 finishes.
+    return root ? status : 0;
 }

@@ -10,6 +10,12 @@ foreach(_export ${_cases})
   get_filename_component(_name ${_export} NAME_WE)
   add_test(NAME astest.${_name}
            COMMAND ${_run} $<TARGET_FILE:miniaster-bin> ${_export} ${CMAKE_BINARY_DIR}/astest-out/${_name})
+  # The same case on two MPI processes (docs/mpi.md): the same TEST results as the run above.
+  set_tests_properties(astest.${_name} PROPERTIES FIXTURES_SETUP one_process.${_name})
+  add_test(NAME astest_np2.${_name}
+           COMMAND ${_run} $<TARGET_FILE:miniaster-bin> ${_export} ${CMAKE_BINARY_DIR}/astest-out/np2_${_name}
+                   --same-tests-as ${CMAKE_BINARY_DIR}/astest-out/${_name} -- --np 2)
+  set_tests_properties(astest_np2.${_name} PROPERTIES FIXTURES_REQUIRED one_process.${_name} PROCESSORS 2)
 endforeach()
 
 # Originals (read in place from ../shared/astest, never copied). Added as their issues land.
@@ -36,6 +42,15 @@ foreach(_name ${MINIASTER_ORIGINALS} ${MINIASTER_FAMILY})
   add_test(NAME original.${_name}
            COMMAND ${_run} $<TARGET_FILE:miniaster-bin> ${CMAKE_SOURCE_DIR}/../shared/astest/${_name}.export
                    ${CMAKE_BINARY_DIR}/astest-out/${_name} ${_opt})
+  # ssnv511a-h on two MPI processes as well: the same TEST results as on one.
+  if(_name IN_LIST MINIASTER_ORIGINALS)
+    set_tests_properties(original.${_name} PROPERTIES FIXTURES_SETUP one_process.${_name})
+    add_test(NAME original_np2.${_name}
+             COMMAND ${_run} $<TARGET_FILE:miniaster-bin> ${CMAKE_SOURCE_DIR}/../shared/astest/${_name}.export
+                     ${CMAKE_BINARY_DIR}/astest-out/np2_${_name} --same-tests-as ${CMAKE_BINARY_DIR}/astest-out/${_name}
+                     ${_opt} -- --np 2)
+    set_tests_properties(original_np2.${_name} PROPERTIES FIXTURES_REQUIRED one_process.${_name} PROCESSORS 2)
+  endif()
 endforeach()
 
 # The manufactured fields of the smooth scenes (open and with contact): derivatives against finite
@@ -77,7 +92,7 @@ add_test(NAME astest_subcell_degree2.contact_hexa8_n5
 # shrinking from N = 7 to 13, every contact solve converged within ITER_CONT_MAXI = 10.
 set(_fjunction_runs astest.fjunction_hexa8_n7 astest.fjunction_hexa8_n13 astest.fjunction_tetra4_n7
     astest.fjunction_tetra4_n13)
-set_tests_properties(${_fjunction_runs} PROPERTIES FIXTURES_SETUP fjunction)
+set_property(TEST ${_fjunction_runs} APPEND PROPERTY FIXTURES_SETUP fjunction)
 add_test(NAME astest.fjunction_invariants
          COMMAND ${Python_EXECUTABLE} ${CMAKE_SOURCE_DIR}/tests/fjunction_check.py ${CMAKE_BINARY_DIR}/astest-out)
 set_tests_properties(astest.fjunction_invariants PROPERTIES FIXTURES_REQUIRED fjunction)

@@ -8,6 +8,7 @@
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
+#include "core/Mpi.hpp"
 #include "core/Units.hpp"
 #include "fields/Fields.hpp"
 #include "commands/ImprResuGmsh.hpp"
@@ -132,6 +133,7 @@ ConceptPtr imprResu(const KeywordSet& kw, CommandContext& ctx) {
     const std::string path = ctx.units->output(unit);
     auto& written = filesOfThisRun();
     const bool append = written.count(path) > 0;
+    if (!mpi::isRoot()) return nullptr;  // rank 0 writes (docs/mpi.md)
 
     med::MedWriter writer(path, append);
     for (const auto& occ : kw.factor("RESU")) {

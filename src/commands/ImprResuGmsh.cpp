@@ -13,6 +13,7 @@
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
+#include "core/Mpi.hpp"
 #include "core/Units.hpp"
 #include "fields/Fields.hpp"
 #include "post/GmshWriter.hpp"
@@ -222,6 +223,7 @@ ConceptPtr imprResuGmsh(const KeywordSet& kw, CommandContext& ctx) {
     const int version = versionValue == 1.2 ? 2 : 1;
     const int unit = int(kw.integer("UNITE"));
     const std::string path = ctx.units->output(unit);
+    if (!mpi::isRoot()) return nullptr;  // rank 0 writes (docs/mpi.md)
     const bool append = gmshFilesOfThisRun().count(path) > 0;
 
     std::string text = append ? readExisting(path) : gmsh::header(version);

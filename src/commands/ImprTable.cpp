@@ -13,6 +13,7 @@
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
+#include "core/Mpi.hpp"
 #include "core/Units.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "post/TablePrinter.hpp"
@@ -23,6 +24,7 @@ namespace {
 
 void appendToUnit(const std::string& path, const std::string& text) {
     static std::set<std::string> openedThisRun;
+    if (!mpi::isRoot()) return;  // rank 0 writes (docs/mpi.md)
     std::string content;
     if (openedThisRun.count(path) && std::filesystem::exists(path)) {
         std::ifstream in(path, std::ios::binary);

@@ -243,6 +243,10 @@ ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField
     }
     active_.assign(points_.size(), 0);
     everActive_.assign(points_.size(), 0);
+    // Distributed (docs/mpi.md): a point's matrix and residual terms are computed by the process of
+    // its facet's - side cell; statuses are decided on every process from the whole state.
+    owned_.resize(points_.size());
+    for (size_t p = 0; p < points_.size(); ++p) owned_[p] = problem.ownsCell(facets_[size_t(points_[p].facet)].minus.cell);
 }
 
 double ContactTerms::gap(int p, const std::vector<double>& u) const {
@@ -292,6 +296,7 @@ void ContactTerms::tangent(const std::vector<double>& u, const std::function<voi
     (void)u;
     const double theta = definition_->nitsche.theta;
     for (size_t p = 0; p < points_.size(); ++p) {
+        if (!owned_[p]) continue;
         const auto& cp = points_[p];
         const size_t m = cp.dofs.size();
         if (nitsche(int(p))) {
@@ -319,6 +324,7 @@ void ContactTerms::tangent(const std::vector<double>& u, const std::function<voi
 void ContactTerms::residual(const std::vector<double>& u, std::vector<double>& R) const {
     const double theta = definition_->nitsche.theta;
     for (size_t p = 0; p < points_.size(); ++p) {
+        if (!owned_[p]) continue;
         const auto& cp = points_[p];
         const double lambda = pressure(int(p), u);
         if (nitsche(int(p))) {

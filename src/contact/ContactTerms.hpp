@@ -122,6 +122,7 @@ private:
     std::vector<ContactFacet> facets_;
     std::vector<ContactPoint> points_;
     std::vector<char> active_, everActive_;
+    std::vector<char> owned_;  // points whose terms this process computes (all on one process)
     std::vector<RuleShortfall> shortfalls_;
     int extraUnknowns_ = 0;
     int mergedPenaltyPoints_ = 0;

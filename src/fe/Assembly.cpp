@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/Messages.hpp"
+#include "core/Mpi.hpp"
 #include "fe/ElasticityKernels.hpp"
 #include "fe/ElementLoop.hpp"
 
@@ -49,11 +50,12 @@ private:
     };
 
     void compute(size_t e, int t) {
+        const size_t slot = e % kElementBatch;
+        if (!space_.owns(e)) return keep(t, slot, nullptr, 0, nullptr);  // another process's cell
         ElementScratch& w = scratch_[t];
         const Mesh& mesh = space_.mesh();
         const int cell = space_.model().elements[e].cell;
         const IsotropicLaw& law = w.laws.of(space_.model().elements[e]);
-        const size_t slot = e % kElementBatch;
         space_.visit(
             e, w.general,
             [&](const auto& ref, const auto& g) {
@@ -133,14 +135,19 @@ void addAdditionalTangent(const DirichletConstraints& c, const AdditionalTerms& 
 }
 
 // Multiplier scaling: the mean stiffness diagonal, so that the constraint rows are of the same
-// magnitude as the stiffness rows.
-double addMultiplierBlocks(const DirichletConstraints& c, CsrMatrix& matrix) {
-    double sum = 0.0;
+// magnitude as the stiffness rows. Distributed: the diagonal is the sum of the processes' parts,
+// and rank 0 alone adds the multiplier blocks (MUMPS sums the processes' entries).
+double addMultiplierBlocks(const DirichletConstraints& c, CsrMatrix& matrix, bool distributed) {
+    std::vector<double> diagonal(size_t(c.freeCount), 0.0);
     for (int i = 0; i < c.freeCount; ++i) {
         const long long k = matrix.find(i, i);
-        if (k >= 0) sum += std::abs(matrix.values[k]);
+        if (k >= 0) diagonal[size_t(i)] = matrix.values[k];
     }
+    if (distributed) mpi::sum(diagonal);
+    double sum = 0.0;
+    for (double d : diagonal) sum += std::abs(d);
     const double alpha = c.freeCount > 0 && sum > 0.0 ? sum / c.freeCount : 1.0;
+    if (distributed && !mpi::isRoot()) return alpha;
     for (size_t m = 0; m < c.multi.size(); ++m) {
         const int row = c.freeCount + int(m);
         for (const auto& [d, coef] : c.multi[m].terms) {
@@ -151,6 +158,12 @@ double addMultiplierBlocks(const DirichletConstraints& c, CsrMatrix& matrix) {
     return alpha;
 }
 
+size_t ownedCount(const Discretisation& space) {
+    size_t n = 0;
+    for (size_t e = 0; e < space.elementCount(); ++e) n += space.owns(e);
+    return n;
+}
+
 }  // namespace
 
 double assembleSystemMatrix(const Discretisation& space, const DirichletConstraints& c,
@@ -159,12 +172,18 @@ double assembleSystemMatrix(const Discretisation& space, const DirichletConstrai
     if (matrix.values.size() != matrix.cols.size()) matrix.values.assign(matrix.cols.size(), 0.0);
     else matrix.setZero();
     StiffnessAssembler assembler(space, c, matrix);
-    const double cpuTotal = assembler.run();
-    if (additional) addAdditionalTangent(c, *additional, u, matrix);
-    const double alpha = addMultiplierBlocks(c, matrix);
-    msg().infof("    stiffness assembled: {} elements, {:.3f} s (cpu {:.3f} s, {:.3f} us per dof, {} thread(s)){}",
-                space.elementCount(), secondsSince(t0), cpuTotal, 1e6 * cpuTotal / std::max(1, space.numbering().size()),
-                assembler.workers(), c.multi.empty() ? "" : fmt::format(", multiplier scaling {:.3e}", alpha));
+    double cpuTotal = 0.0;
+    // This process's cells and contact points only when distributed (a failure on one process
+    // stops all of them: core/Mpi.hpp).
+    mpi::collectively([&] {
+        cpuTotal = assembler.run();
+        if (additional) addAdditionalTangent(c, *additional, u, matrix);
+    });
+    const double alpha = addMultiplierBlocks(c, matrix, space.distributed());
+    msg().infof("    stiffness assembled: {} elements{}, {:.3f} s (cpu {:.3f} s, {:.3f} us per dof, {} thread(s)){}",
+                space.elementCount(), space.distributed() ? fmt::format(" ({} on this process)", ownedCount(space)) : "",
+                secondsSince(t0), cpuTotal, 1e6 * cpuTotal / std::max(1, space.numbering().size()), assembler.workers(),
+                c.multi.empty() ? "" : fmt::format(", multiplier scaling {:.3e}", alpha));
     return alpha;
 }
 

@@ -1,8 +1,10 @@
 #include "fe/Discretisation.hpp"
 
+#include "core/Mpi.hpp"
 #include "fe/ElasticityKernels.hpp"
 #include "fe/Enrichment.hpp"
 #include "fe/Quadrature.hpp"
+#include "mesh/CellPartition.hpp"
 
 namespace ma {
 
@@ -51,6 +53,35 @@ const ElementIntegration& Discretisation::integrationOf(size_t e, ElementIntegra
 size_t Discretisation::pointCount(size_t e) const {
     if (isEnriched(e)) return enrichedIntegrations_[enrichedIndex_[e]].refPoints.size();
     return stiffnessRule(model_->mesh->cellTypes[model_->elements[e].cell]).points.size();
+}
+
+void Discretisation::distribute(int processes, int rank) {
+    std::vector<int> cells, weights;
+    for (size_t e = 0; e < elementCount(); ++e) {
+        cells.push_back(model_->elements[e].cell);
+        weights.push_back(static_cast<int>(pointCount(e)));  // X-FEM cells weigh their sub-cells' points
+    }
+    // Rank 0's partition for every process (METIS's fixed seed makes it the same run after run).
+    mpi::collectively([&] {
+        if (rank == 0) owner_ = partitionCells(mesh(), cells, weights, dim(), processes);
+    });
+    owner_.resize(elementCount());
+    mpi::broadcast(owner_);
+    rank_ = rank, processes_ = processes;
+    cellElement_.assign(size_t(mesh().cellCount()), -1);
+    for (size_t e = 0; e < elementCount(); ++e) cellElement_[size_t(cells[e])] = static_cast<int>(e);
+}
+
+bool Discretisation::ownsCell(int cell) const {
+    if (owner_.empty()) return true;
+    const int e = cell >= 0 && size_t(cell) < cellElement_.size() ? cellElement_[size_t(cell)] : -1;
+    return e >= 0 && owner_[size_t(e)] == rank_;
+}
+
+std::vector<int> Discretisation::elementsPerProcess() const {
+    std::vector<int> count(owner_.empty() ? 0 : size_t(processes_), 0);
+    for (int p : owner_) ++count[size_t(p)];
+    return count;
 }
 
 }  // namespace ma

@@ -35,6 +35,17 @@ public:
     // True when some element uses dof d (psi not zero at one of its points at least).
     bool attached(int d) const { return attached_[d] != 0; }
 
+    // Cells dealt to the processes (docs/mpi.md): each process computes only the elements it owns.
+    // Without it (one process, or a solver that is not distributed), every element is owned.
+    // Collective: every process calls it (rank 0 partitions, the others receive its partition).
+    void distribute(int processes, int rank);
+    bool distributed() const { return !owner_.empty(); }
+    bool owns(size_t e) const { return owner_.empty() || owner_[e] == rank_; }
+    // The same for a cell of the mesh (a model's cell; false for any other when distributed).
+    bool ownsCell(int cell) const;
+    // Elements per process (empty when not distributed).
+    std::vector<int> elementsPerProcess() const;
+
     // Element e on its fastest path (visitVolumeElement): onClassical(ref, g) or onGeneral(ei, geo).
     template <class OnClassical, class OnGeneral>
     void visit(size_t e, GeneralElementScratch& scratch, OnClassical&& onClassical, OnGeneral&& onGeneral) const {
@@ -53,6 +64,9 @@ private:
     std::vector<ElementIntegration> enrichedIntegrations_;  // X-FEM elements only
     std::vector<int> enrichedIndex_;  // element -> index in enrichedIntegrations_, -1 (empty: no X-FEM)
     std::vector<char> attached_;      // per dof: used by some element
+    std::vector<int> owner_;          // element -> process (empty: not distributed)
+    std::vector<int> cellElement_;    // mesh cell -> element (when distributed)
+    int rank_ = 0, processes_ = 1;
 };
 
 }  // namespace ma

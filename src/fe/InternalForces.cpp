@@ -1,5 +1,6 @@
 #include "fe/InternalForces.hpp"
 
+#include "core/Mpi.hpp"
 #include "fe/ElasticityKernels.hpp"
 #include "fe/ElementLoop.hpp"
 
@@ -34,6 +35,7 @@ private:
     };
 
     void compute(size_t e, int t) {
+        if (!space_.owns(e)) return keep(t, e, nullptr, nullptr, 0);  // another process's cell
         ElementScratch& w = scratch_[t];
         const Mesh& mesh = space_.mesh();
         const int cell = space_.model().elements[e].cell;
@@ -86,7 +88,8 @@ private:
 
 void assembleInternalForces(const Discretisation& space, const std::vector<double>& u, std::vector<double>& f) {
     f.assign(space.numbering().size(), 0.0);
-    InternalForceAssembler(space, u, f).run();
+    mpi::collectively([&] { InternalForceAssembler(space, u, f).run(); });
+    if (space.distributed()) mpi::sum(f);
 }
 
 }  // namespace ma

@@ -1,7 +1,8 @@
 #pragma once
 // Internal forces F_int(u) = sum_e int B^T sigma(u) of a mechanical problem, in dof order. Element
 // vectors are computed on the workers and added in element order by the worker owning each block
-// of 64 dofs: the sums of the serial loop, bit for bit.
+// of 64 dofs: the sums of the serial loop, bit for bit. Distributed (docs/mpi.md): each process
+// computes its own elements and the vectors are summed over the processes (every one gets F_int).
 #include <vector>
 
 #include "fe/Discretisation.hpp"

@@ -9,6 +9,7 @@
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
+#include "core/Mpi.hpp"
 #include "fe/Assembly.hpp"
 #include "fe/ElementLoop.hpp"
 #include "fe/ExternalForces.hpp"
@@ -35,6 +36,7 @@ MechanicalProblem::MechanicalProblem(std::shared_ptr<const Model> model, std::sh
                                         "prevent every translation/rotation)";
     if (const std::string cause = degenerateMaterialCause(space_->material()); !cause.empty())
         solverOptions_.singularHint = cause + "; or else " + solverOptions_.singularHint;
+    distributeCells();
     solver_ = makeLinearSolver(solverOptions_);
     int nodesWithUnknowns = 0;
     for (int node = 0; node < numbering.nodeCount(); ++node) nodesWithUnknowns += numbering.hasNode(node);
@@ -45,6 +47,27 @@ MechanicalProblem::MechanicalProblem(std::shared_ptr<const Model> model, std::sh
 }
 
 MechanicalProblem::~MechanicalProblem() = default;
+
+// With several processes and MUMPS, each process assembles its own cells into its part of the
+// distributed matrix (docs/mpi.md). Eigen's solvers are sequential: every process then assembles
+// and solves the whole system (the same on each).
+void MechanicalProblem::distributeCells() {
+    if (mpi::size() == 1) return;
+    if (solverOptions_.method != "MUMPS") {
+        msg().infof("    SOLVEUR METHODE='{}' is sequential: each of the {} processes assembles and solves the whole "
+                    "system (METHODE='MUMPS' distributes it)",
+                    solverOptions_.method, mpi::size());
+        return;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    space_->distribute(mpi::size(), mpi::rank());
+    solverOptions_.distributed = true;
+    msg().infof("    cells partitioned over {} processes (METIS_PartMeshDual, weighted by integration points, {:.3f} s): "
+                "{} elements per process",
+                mpi::size(), secondsSince(t0), fmt::join(space_->elementsPerProcess(), " "));
+}
+
+bool MechanicalProblem::ownsCell(int cell) const { return space_->ownsCell(cell); }
 
 void MechanicalProblem::setAdditionalTerms(std::shared_ptr<const AdditionalTerms> terms) {
     additional_ = std::move(terms);
@@ -105,7 +128,8 @@ IncrementReport MechanicalProblem::solveIncrement(double inst, const Convergence
                               [this](const std::vector<double>& u, std::vector<double>& f) { internalForces(u, f); },
                               additional_.get(),
                               [this](std::vector<double>& rhs) { solveLinear(rhs); },
-                              t0};
+                              t0,
+                              space_->distributed()};
     return newtonIterations(system, inst, options, u_, lambda_);
 }
 

@@ -43,6 +43,9 @@ public:
 
     const DofNumbering& numbering() const { return space_->numbering(); }
     const Model& model() const { return space_->model(); }
+    // Distributed over the processes (docs/mpi.md): whether this process computes `cell` (a model
+    // cell); always true on one process.
+    bool ownsCell(int cell) const;
 
     // State: displacement in dof order (size numbering().size()), then the additional terms'
     // own unknowns (AdditionalTerms::extraUnknowns).
@@ -66,6 +69,7 @@ public:
 
 private:
     // The constraints at `inst`; the pattern is rebuilt when their structure changed.
+    void distributeCells();
     void setupSystem(double inst);
     void assembleSystem();
     void solveLinear(std::vector<double>& rhs);

@@ -8,6 +8,7 @@
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
+#include "core/Mpi.hpp"
 #include "fe/ElementLoop.hpp"
 
 namespace ma {
@@ -27,7 +28,13 @@ public:
         for (int d = 0; d < s_.ndof; ++d) R_[d] = fint_[d] - s_.fext[d];
         for (size_t m = 0; m < c_.multi.size(); ++m)
             for (const auto& [d, coef] : c_.multi[m].terms) R_[d] += s_.alpha * coef * lambda_[m];
-        if (s_.additional) s_.additional->residual(u_, R_);
+        if (s_.additional && !s_.distributed) s_.additional->residual(u_, R_);
+        if (s_.additional && s_.distributed) {  // docs/mpi.md
+            extra_.assign(total_, 0.0);
+            mpi::collectively([&] { s_.additional->residual(u_, extra_); });
+            mpi::sum(extra_);
+            for (int d = 0; d < total_; ++d) R_[d] += extra_[d];
+        }
     }
 
     // Solves for the correction of the current residual and applies it.
@@ -88,7 +95,7 @@ private:
     std::vector<double>& u_;
     std::vector<double>& lambda_;
     const int total_;
-    std::vector<double> rhs_, fint_, R_;
+    std::vector<double> rhs_, fint_, R_, extra_;
     bool zeroLoadNoted_ = false;
 };
 

@@ -38,6 +38,8 @@ struct NewtonSystem {
     const AdditionalTerms* additional = nullptr;
     std::function<void(std::vector<double>& rhs)> solve;  // right-hand side in, correction out
     std::chrono::steady_clock::time_point start;           // of the increment (its logged time)
+    // Each process computes the additional terms' residual on its own cells: summed here.
+    bool distributed = false;
 };
 
 // Iterates from the state (u, lambda) at instant inst until the criterion holds or

@@ -9,6 +9,7 @@
 
 #include "core/Error.hpp"
 #include "core/Function.hpp"
+#include "core/Mpi.hpp"
 #include "fe/FieldSampling.hpp"
 #include "fe/Parallel.hpp"
 #include "fe/Material.hpp"
@@ -22,6 +23,19 @@ namespace {
 // Elements per batch of points: the reference formulas are evaluated one batch at a time (about
 // 1e5 points for QUAD4), so that a refined model never holds all its samples at once.
 constexpr size_t kBatchElements = 32768;
+
+// This process's batches of n elements (docs/mpi.md): batches of at most kBatchElements dealt to
+// the processes in turn, from rank 0; each process sums its own and the sums are reduced. One
+// process: every batch, as many as before.
+struct Batches {
+    size_t size = kBatchElements, start = 0, stride = kBatchElements;
+    explicit Batches(size_t n) {
+        const size_t k = size_t(mpi::size());
+        size = std::max<size_t>(1, std::min(kBatchElements, (n + k - 1) / k));
+        start = size * size_t(mpi::rank());
+        stride = size * k;
+    }
+};
 
 // Cells of `group` that carry an element of the model.
 std::vector<int> groupElements(const Model& model, const std::string& group) {
@@ -117,46 +131,52 @@ std::shared_ptr<Table> displacementErrorTable(const Model& model, const NodalFie
     for (size_t g = 0; g < groups.size(); ++g) {
         std::vector<char> wanted(size_t(model.mesh->cellCount()), 0);
         for (int c : groupElements(model, groups[g])) wanted[size_t(c)] = 1;
-        double d2 = 0.0, r2 = 0.0;
+        double sums[2] = {0.0, 0.0};  // squared difference and reference
+        double& d2 = sums[0];
+        double& r2 = sums[1];
+        const Batches batches(model.elements.size());
         // The next batch is sampled on a second thread while the formulas of this one run
         // (Python, one thread): the sums below keep their order.
         auto sample = [&](size_t first, std::vector<DisplacementSample>& out) {
             out.clear();
             appendDisplacementSamples(model, displacement, wanted, first,
-                                      std::min(first + kBatchElements, model.elements.size()), out);
+                                      std::min(first + batches.size, model.elements.size()), out);
         };
         const bool overlap = workerCount() > 1;
-        if (!model.elements.empty()) sample(0, samples);
-        for (size_t first = 0; first < model.elements.size(); first += kBatchElements) {
-            const size_t following = first + kBatchElements;
-            std::future<void> ahead;
-            if (following < model.elements.size()) {
-                if (overlap) ahead = std::async(std::launch::async, sample, following, std::ref(nextSamples));
-            }
-            if (!samples.empty()) {
-                for (int d = 0; d < dim; ++d) {
-                    auto& col = columns[names[d]];
-                    col.resize(samples.size());
-                    for (size_t p = 0; p < samples.size(); ++p) col[p] = samples[p].xyz[size_t(d)];
+        mpi::collectively([&] {
+            if (batches.start < model.elements.size()) sample(batches.start, samples);
+            for (size_t first = batches.start; first < model.elements.size(); first += batches.stride) {
+                const size_t following = first + batches.stride;
+                std::future<void> ahead;
+                if (following < model.elements.size()) {
+                    if (overlap) ahead = std::async(std::launch::async, sample, following, std::ref(nextSamples));
                 }
-                const auto uref = evaluateReference(reference, g, columns, samples.size());
-                for (size_t p = 0; p < samples.size(); ++p) {
-                    double dp = 0.0, rp = 0.0;
-                    for (size_t c = 0; c < reference.components.size(); ++c) {
-                        const double u = uref[c][p];
-                        rp += u * u;
-                        if (int(c) < dim) dp += (samples[p].u[c] - u) * (samples[p].u[c] - u);
+                if (!samples.empty()) {
+                    for (int d = 0; d < dim; ++d) {
+                        auto& col = columns[names[d]];
+                        col.resize(samples.size());
+                        for (size_t p = 0; p < samples.size(); ++p) col[p] = samples[p].xyz[size_t(d)];
                     }
-                    d2 += samples[p].weight * dp;
-                    r2 += samples[p].weight * rp;
+                    const auto uref = evaluateReference(reference, g, columns, samples.size());
+                    for (size_t p = 0; p < samples.size(); ++p) {
+                        double dp = 0.0, rp = 0.0;
+                        for (size_t c = 0; c < reference.components.size(); ++c) {
+                            const double u = uref[c][p];
+                            rp += u * u;
+                            if (int(c) < dim) dp += (samples[p].u[c] - u) * (samples[p].u[c] - u);
+                        }
+                        d2 += samples[p].weight * dp;
+                        r2 += samples[p].weight * rp;
+                    }
+                }
+                if (following < model.elements.size()) {
+                    if (overlap) ahead.get();
+                    else sample(following, nextSamples);
+                    samples.swap(nextSamples);
                 }
             }
-            if (following < model.elements.size()) {
-                if (overlap) ahead.get();
-                else sample(following, nextSamples);
-                samples.swap(nextSamples);
-            }
-        }
+        });
+        mpi::sum(sums);
         diff[g] = std::sqrt(d2);
         ref[g] = std::sqrt(r2);
     }
@@ -201,45 +221,51 @@ std::shared_ptr<Table> energyErrorTable(const Model& model, const GaussField& st
         auto selected = [&](size_t e) {
             return stress.cells[e] >= 0 && stress.cells[e] < int(inGroup.size()) && inGroup[size_t(stress.cells[e])];
         };
-        double eDiff = 0.0, eRef = 0.0;
+        double sums[2] = {0.0, 0.0};  // energies of the difference and of the reference
+        double& eDiff = sums[0];
+        double& eRef = sums[1];
         std::map<std::string, std::vector<double>> columns;
         const char* names[3] = {"X", "Y", "Z"};
-        for (size_t first = 0; first < stress.cells.size(); first += kBatchElements) {
-            const size_t last = std::min(first + kBatchElements, stress.cells.size());
-            // Coordinates of the batch's points in the group, in field order.
-            size_t npoints = 0;
-            for (size_t e = first; e < last; ++e)
-                if (selected(e)) npoints += size_t(stress.pointOffsets[e + 1] - stress.pointOffsets[e]);
-            if (npoints == 0) continue;
-            for (int d = 0; d < dim; ++d) {
-                auto& col = columns[names[d]];
-                col.clear();
+        const Batches batches(stress.cells.size());
+        mpi::collectively([&] {
+            for (size_t first = batches.start; first < stress.cells.size(); first += batches.stride) {
+                const size_t last = std::min(first + batches.size, stress.cells.size());
+                // Coordinates of the batch's points in the group, in field order.
+                size_t npoints = 0;
                 for (size_t e = first; e < last; ++e)
-                    if (selected(e))
-                        for (int p = stress.pointOffsets[e]; p < stress.pointOffsets[e + 1]; ++p)
-                            col.push_back(stress.pointCoords[size_t(p)][size_t(d)]);
-            }
-            const auto sref = evaluateReference(reference, g, columns, npoints);
-            size_t k = 0;
-            for (size_t e = first; e < last; ++e) {
-                if (!selected(e)) continue;
-                const Material& m = material.at(stress.cells[e]);
-                for (int p = stress.pointOffsets[e]; p < stress.pointOffsets[e + 1]; ++p, ++k) {
-                    double sr[6] = {0, 0, 0, 0, 0, 0}, sd[6] = {0, 0, 0, 0, 0, 0};
-                    for (int j = 0; j < 6; ++j) {
-                        sr[j] = refComp[j] >= 0 ? sref[size_t(refComp[j])][k] : 0.0;
-                        if (j < used) {
-                            const double sh =
-                                fieldComp[j] >= 0 ? stress.values[size_t(p) * nc + size_t(fieldComp[j])] : 0.0;
-                            sd[j] = sh - sr[j];
+                    if (selected(e)) npoints += size_t(stress.pointOffsets[e + 1] - stress.pointOffsets[e]);
+                if (npoints == 0) continue;
+                for (int d = 0; d < dim; ++d) {
+                    auto& col = columns[names[d]];
+                    col.clear();
+                    for (size_t e = first; e < last; ++e)
+                        if (selected(e))
+                            for (int p = stress.pointOffsets[e]; p < stress.pointOffsets[e + 1]; ++p)
+                                col.push_back(stress.pointCoords[size_t(p)][size_t(d)]);
+                }
+                const auto sref = evaluateReference(reference, g, columns, npoints);
+                size_t k = 0;
+                for (size_t e = first; e < last; ++e) {
+                    if (!selected(e)) continue;
+                    const Material& m = material.at(stress.cells[e]);
+                    for (int p = stress.pointOffsets[e]; p < stress.pointOffsets[e + 1]; ++p, ++k) {
+                        double sr[6] = {0, 0, 0, 0, 0, 0}, sd[6] = {0, 0, 0, 0, 0, 0};
+                        for (int j = 0; j < 6; ++j) {
+                            sr[j] = refComp[j] >= 0 ? sref[size_t(refComp[j])][k] : 0.0;
+                            if (j < used) {
+                                const double sh =
+                                    fieldComp[j] >= 0 ? stress.values[size_t(p) * nc + size_t(fieldComp[j])] : 0.0;
+                                sd[j] = sh - sr[j];
+                            }
                         }
+                        const double w = stress.pointWeights[size_t(p)];
+                        eRef += w * elasticEnergyDensity(sr, m.E, m.nu, planeStress);
+                        eDiff += w * elasticEnergyDensity(sd, m.E, m.nu, planeStress);
                     }
-                    const double w = stress.pointWeights[size_t(p)];
-                    eRef += w * elasticEnergyDensity(sr, m.E, m.nu, planeStress);
-                    eDiff += w * elasticEnergyDensity(sd, m.E, m.nu, planeStress);
                 }
             }
-        }
+        });
+        mpi::sum(sums);
         diff[g] = eDiff;
         ref[g] = eRef;
     }

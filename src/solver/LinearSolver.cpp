@@ -68,15 +68,10 @@ std::vector<double> symmetricDiagonalScaling(const CsrMatrix& A) {
 
 namespace {
 
-// The sums of residualOf over rows [begin, end).
-struct ResidualSums {
-    long double num = 0.0L, den = 0.0L;
-    double componentwise = 0.0;
-};
-
-ResidualSums residualRows(const CsrMatrix& A, std::span<const double> x, std::span<const double> b,
-                          std::vector<double>& r, int begin, int end) {
-    ResidualSums sums;
+// The norms of residualOf over rows [begin, end).
+ResidualNorms residualRows(const CsrMatrix& A, std::span<const double> x, std::span<const double> b,
+                           std::vector<double>& r, int begin, int end) {
+    ResidualNorms norms;
     for (int i = begin; i < end; ++i) {
         long double ri = b[i], scale = std::abs(b[i]);
         for (long long k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
@@ -85,12 +80,9 @@ ResidualSums residualRows(const CsrMatrix& A, std::span<const double> x, std::sp
             scale += std::abs(p);
         }
         r[i] = static_cast<double>(ri);
-        sums.num += ri * ri;
-        sums.den += static_cast<long double>(b[i]) * b[i];
-        if (ri != 0.0L)
-            sums.componentwise = std::max(sums.componentwise, scale > 0.0L ? double(std::abs(ri) / scale) : INFINITY);
+        norms.add(ri, scale, b[i]);
     }
-    return sums;
+    return norms;
 }
 
 }  // namespace
@@ -98,10 +90,10 @@ ResidualSums residualRows(const CsrMatrix& A, std::span<const double> x, std::sp
 ResidualInfo residualOf(const CsrMatrix& A, std::span<const double> x, std::span<const double> b,
                         std::vector<double>& r, int threads) {
     r.resize(A.rows);
-    // Fixed blocks of rows, summed in block order: the same bits for any number of threads.
+    // Fixed blocks of rows, merged in block order: the same bits for any number of threads.
     constexpr int kBlockRows = 1 << 16;
     const int blocks = (A.rows + kBlockRows - 1) / kBlockRows;
-    std::vector<ResidualSums> partial(static_cast<size_t>(blocks));
+    std::vector<ResidualNorms> partial(static_cast<size_t>(blocks));
     std::atomic<int> next = 0;
     auto work = [&] {
         for (int k = next++; k < blocks; k = next++)
@@ -111,24 +103,38 @@ ResidualInfo residualOf(const CsrMatrix& A, std::span<const double> x, std::span
     for (int t = 1; t < std::min(threads, blocks); ++t) workers.emplace_back(work);
     work();
     for (auto& w : workers) w.join();
-    ResidualSums all;
-    for (const ResidualSums& p : partial)
-        all.num += p.num, all.den += p.den, all.componentwise = std::max(all.componentwise, p.componentwise);
+    ResidualNorms all;
+    for (const ResidualNorms& p : partial) all.merge(p);
+    return all.info();
+}
+
+void ResidualNorms::add(long double ri, long double scale, double bi) {
+    num_ += ri * ri;
+    den_ += static_cast<long double>(bi) * bi;
+    if (ri != 0.0L) componentwise_ = std::max(componentwise_, scale > 0.0L ? double(std::abs(ri) / scale) : INFINITY);
+}
+
+void ResidualNorms::merge(const ResidualNorms& other) {
+    num_ += other.num_, den_ += other.den_, componentwise_ = std::max(componentwise_, other.componentwise_);
+}
+
+ResidualInfo ResidualNorms::info() const {
     ResidualInfo info;
-    info.normwise = double(all.den > 0.0L ? std::sqrt(all.num / all.den) : std::sqrt(all.num));
-    info.componentwise = all.componentwise;
+    info.normwise = double(den_ > 0.0L ? std::sqrt(num_ / den_) : std::sqrt(num_));
+    info.componentwise = componentwise_;
     return info;
 }
 
 void ScaledDirectSolver::factorize(const CsrMatrix& A, MatrixKind kind, std::span<const RowPoint> rowPoints) {
     A_ = &A;
     if (options_.diagonalScaling) {
-        scale_ = symmetricDiagonalScaling(A);
+        const std::vector<double> diagonal = options_.distributed ? summedDiagonal(A) : std::vector<double>{};
+        scale_ = options_.distributed ? distributedDiagonalScaling(A, diagonal) : symmetricDiagonalScaling(A);
         double dmin = INFINITY, dmax = 0.0;
         int zero = 0;
         for (int i = 0; i < A.rows; ++i) {
-            const long long k = A.find(i, i);
-            const double d = k >= 0 ? std::abs(A.values[k]) : 0.0;
+            const long long k = options_.distributed ? -1 : A.find(i, i);
+            const double d = options_.distributed ? std::abs(diagonal[size_t(i)]) : k >= 0 ? std::abs(A.values[k]) : 0.0;
             if (d > 0.0) dmin = std::min(dmin, d), dmax = std::max(dmax, d);
             else ++zero;
         }
@@ -139,6 +145,11 @@ void ScaledDirectSolver::factorize(const CsrMatrix& A, MatrixKind kind, std::spa
         scale_.assign(A.rows, 1.0);
     }
     factorizeScaled(A, scale_, kind, rowPoints);
+}
+
+ResidualInfo ScaledDirectSolver::residual(std::span<const double> x, std::span<const double> b,
+                                          std::vector<double>& r) const {
+    return options_.distributed ? distributedResidualOf(*A_, x, b, r) : residualOf(*A_, x, b, r, options_.threads);
 }
 
 double ScaledDirectSolver::solve(std::span<double> rhs) {
@@ -152,7 +163,7 @@ double ScaledDirectSolver::solve(std::span<double> rhs) {
         for (int i = 0; i < n; ++i) out[i] = scale_[i] * y[i];
     };
     correction(b, rhs);
-    ResidualInfo res = residualOf(*A_, rhs, b, r, options_.threads);
+    ResidualInfo res = residual(rhs, b, r);
     const ResidualInfo first = res;
     // One refinement step always (cheap next to the factorisation; it gains the last digits the
     // lip displacements need, measured in docs/xfem.md), more while the componentwise backward
@@ -164,7 +175,7 @@ double ScaledDirectSolver::solve(std::span<double> rhs) {
     while (steps < maxSteps && std::isfinite(res.componentwise) && (steps == 0 || res.componentwise > kRoundOff)) {
         correction(r, dx);
         for (int i = 0; i < n; ++i) candidate[i] = rhs[i] + dx[i];
-        const ResidualInfo next = residualOf(*A_, candidate, b, rNew, options_.threads);
+        const ResidualInfo next = residual(candidate, b, rNew);
         if (!(next.componentwise < res.componentwise)) break;  // no longer helps: keep the better one
         std::copy(candidate.begin(), candidate.end(), rhs.begin());
         r.swap(rNew);

@@ -38,6 +38,9 @@ struct SolverOptions {
     int maxRefinementSteps = 3;      // iterative refinement while it helps; 0 = none (POSTTRAITEMENTS)
     int info = 1;
     int threads = 1;  // the METIS ordering's two halves in two processes when >= 2
+    // The matrix is the sum of the MPI processes' parts (docs/mpi.md, MUMPS only): each process
+    // passes its own; right-hand sides are the same on every process, and so are the solutions.
+    bool distributed = false;
     // Appended to the "singular system" message: what the caller knows about likely causes.
     std::string singularHint =
         "a missing boundary condition (rigid body motion) or an unattached enriched dof";

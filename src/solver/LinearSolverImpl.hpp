@@ -27,8 +27,29 @@ struct ResidualInfo {
     double normwise = 0.0;
     double componentwise = 0.0;
 };
+// The two backward errors accumulated row by row from r_i and its scale |b_i| + (|A| |x|)_i.
+class ResidualNorms {
+public:
+    void add(long double ri, long double scale, double bi);
+    void merge(const ResidualNorms& other);  // the rows of `other` after these
+    ResidualInfo info() const;
+
+private:
+    long double num_ = 0.0L, den_ = 0.0L;
+    double componentwise_ = 0.0;
+};
 ResidualInfo residualOf(const CsrMatrix& A, std::span<const double> x, std::span<const double> b,
                         std::vector<double>& r, int threads = 1);
+
+// A distributed matrix (SolverOptions::distributed: the sum of the processes' parts, each with
+// the whole pattern; solver/DistributedSystem.cpp). Its diagonal, summed; the scaling above from
+// it (a zero-diagonal row scaled by the largest of the processes' partial entries); the residual
+// b - A x with the products summed over the processes in extended precision (the componentwise
+// scale |A| |x| from the partial entries: an upper bound).
+std::vector<double> summedDiagonal(const CsrMatrix& A);
+std::vector<double> distributedDiagonalScaling(const CsrMatrix& A, std::span<const double> diagonal);
+ResidualInfo distributedResidualOf(const CsrMatrix& A, std::span<const double> x, std::span<const double> b,
+                                   std::vector<double>& r);
 
 // What MUMPS and Eigen share: the factorisation is done on S A S (S from
 // symmetricDiagonalScaling), solutions are mapped back, the residual is measured on the unscaled
@@ -53,6 +74,8 @@ protected:
     SolverOptions options_;
 
 private:
+    ResidualInfo residual(std::span<const double> x, std::span<const double> b, std::vector<double>& r) const;
+
     const CsrMatrix* A_ = nullptr;
     std::vector<double> scale_;
 };

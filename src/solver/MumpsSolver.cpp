@@ -1,7 +1,6 @@
-// Sequential MUMPS (libdmumps_seq). Only this file sees dmumps_c.h and MUMPS's fake mpi.h
-// (/usr/include/mumps_seq): MED code includes OpenMPI's mpi.h, and the two never meet in one
-// translation unit. MUMPS seq needs no MPI_Init; its Fortran MPI stubs (mpi_*_) come from
-// libmpiseq and do not clash with OpenMPI's C symbols (verified by test solver_med_mumps).
+// MUMPS (Debian's parallel libdmumps_ptscotch on OpenMPI). Only src/solver sees dmumps_c.h; the
+// communicator and the distributed input of a run on several processes are in
+// solver/MumpsDistributed (docs/mpi.md).
 #include <dmumps_c.h>
 #include <fmt/format.h>
 #include <malloc.h>
@@ -16,9 +15,11 @@
 #include "core/Error.hpp"
 #include "core/Timing.hpp"
 #include "core/MemoryUsage.hpp"
+#include "core/Mpi.hpp"
 #include "core/Messages.hpp"
 #include "solver/CoordinateOrdering.hpp"
 #include "solver/MetisOrdering.hpp"
+#include "solver/MumpsDistributed.hpp"
 #include "solver/LinearSolverImpl.hpp"
 
 namespace ma {
@@ -26,12 +27,11 @@ namespace ma {
 namespace {
 
 constexpr int kJobInit = -1, kJobEnd = -2, kJobAnalyse = 1, kJobFactorise = 2, kJobSolve = 3;
-constexpr int kUseCommWorld = -987654;
 constexpr int kUserOrdering = 1;  // ICNTL(7)=1: PERM_IN
 
 // RENUM -> MUMPS's ICNTL(7), or kUserOrdering for the nested dissections miniaster computes
-// itself: METIS (which MUMPS seq lacks, solver/MetisOrdering) and, for AUTO when every unknown has
-// a point, coordinate bisection (solver/CoordinateOrdering): on the ssnv511 grids the cheapest
+// itself: METIS (which Debian's MUMPS lacks, solver/MetisOrdering) and, for AUTO when every unknown
+// has a point, coordinate bisection (solver/CoordinateOrdering): on the ssnv511 grids the cheapest
 // factorisation of all, and the fastest to find (docs/study.md, "Orderings").
 int orderingCode(const std::string& renum, bool havePoints, std::string& used) {
     if (renum == "AUTO" && havePoints) return used = "COORDINATES", kUserOrdering;
@@ -107,10 +107,11 @@ protected:
         MemoryPhase factorisation;
         factorise();
         logFactorisation(A, kind, secondsSince(t0), analysisPeak, factorisation);
+        mumps::logProcesses(options_, id_, std::max(analysisPeak, factorisation.peakMb()));
         // The factors are all the solve needs, unless MUMPS's error analysis (ICNTL(11)) reads A.
         if (!options_.conditionEstimate) {
             triplets_ = {};
-            id_.irn = id_.jcn = nullptr, id_.a = nullptr;
+            mumps::clearEntries(id_);
         }
     }
 
@@ -122,6 +123,7 @@ protected:
         id_.job = kJobSolve;
         dmumps_c(&id_);
         if (id_.infog[0] < 0) throw NumericalError(mumpsErrorText(id_.infog[0], id_.infog[1]));
+        mumps::shareSolution(options_, rhs);
         // Estimates are for the matrix MUMPS factorised: the diagonal-scaled one when scaling is on.
         if (options_.conditionEstimate && !conditionLogged_)
             msg().infof("    MUMPS condition number estimates ({} matrix): cond1 = {:.3e}, cond2 = {:.3e}, backward errors "
@@ -141,9 +143,11 @@ private:
         auto diagonal = [&](int i) {
             return std::lower_bound(A.cols.begin() + A.rowStart[i], A.cols.begin() + A.rowStart[i + 1], i) - A.cols.begin();
         };
+        auto passes = [&](int i, long long k) { return mumps::passes(options_, i, A.cols[k], A.values[k]); };
         std::vector<long long> offset(size_t(A.rows) + 1, 0);
         inRowRanges(A.rows, [&](int begin, int end) {
-            for (int i = begin; i < end; ++i) offset[i + 1] = A.rowStart[i + 1] - diagonal(i);
+            for (int i = begin; i < end; ++i)
+                for (long long k = diagonal(i); k < A.rowStart[i + 1]; ++k) offset[i + 1] += passes(i, k);
         });
         for (int i = 0; i < A.rows; ++i) offset[i + 1] += offset[i];
         triplets_.size = size_t(offset.back());
@@ -151,10 +155,11 @@ private:
         triplets_.a.reset(new double[triplets_.size]);
         inRowRanges(A.rows, [&](int begin, int end) {
             for (int i = begin; i < end; ++i)
-                for (long long k = diagonal(i), at = offset[i]; k < A.rowStart[i + 1]; ++k, ++at) {
-                    triplets_.irn[at] = i + 1, triplets_.jcn[at] = A.cols[k] + 1;
-                    triplets_.a[at] = s[i] * A.values[k] * s[A.cols[k]];
-                }
+                for (long long k = diagonal(i), at = offset[i]; k < A.rowStart[i + 1]; ++k)
+                    if (passes(i, k)) {
+                        triplets_.irn[at] = i + 1, triplets_.jcn[at] = A.cols[k] + 1;
+                        triplets_.a[at++] = s[i] * A.values[k] * s[A.cols[k]];
+                    }
         });
     }
 
@@ -179,13 +184,14 @@ private:
         // when the detection is off (NPREC < 0) or asked for (TYPE_RESOL='SYMDEF').
         const bool spd = kind == MatrixKind::SymmetricPositiveDefinite;
         id_.sym = spd && (options_.nprec < 0 || options_.typeResol == "SYMDEF") ? 1 : 2;
-        id_.comm_fortran = kUseCommWorld;
+        id_.comm_fortran = mumps::communicator(options_);
         dmumps_c(&id_);
         initialised_ = true;
         if (id_.infog[0] < 0) throw NumericalError(mumpsErrorText(id_.infog[0], id_.infog[1]));
         // Silence MUMPS's own printing; we log what matters.
         id_.icntl[0] = -1, id_.icntl[1] = -1, id_.icntl[2] = -1, id_.icntl[3] = 0;
         id_.icntl[13] = options_.pcentPivot;
+        mumps::setInputFormat(id_, options_);
         refuseLowRank(options_);
         if (options_.nprec >= 0) {  // null pivot detection (code_aster's NPREC)
             id_.icntl[23] = 1;
@@ -200,7 +206,9 @@ private:
         const bool havePoints = rowPoints.size() == size_t(A.rows) && A.rows > 0;
         id_.icntl[6] = orderingCode(options_.renum, havePoints, ordering_);
         orderingNote_.clear();
-        if (id_.icntl[6] == kUserOrdering) {
+        // On the host (rank 0) only: every process holds the whole pattern (docs/mpi.md).
+        if (id_.icntl[6] == kUserOrdering) mpi::collectively([&] {
+            if (!mpi::isRoot()) return;
             const bool byPoints = ordering_ == "COORDINATES";
             const FillReducingOrdering nd = byPoints ? coordinateNestedDissection(A, rowPoints, options_.threads)
                                                      : nestedDissectionOrdering(A, options_.threads);
@@ -210,12 +218,11 @@ private:
             orderingNote_ = fmt::format("{} on the matrix graph ({} unknowns in {} vertices, {} edges) {:.3f} s",
                                         byPoints ? "nested dissection by coordinate bisection" : "METIS_NodeND",
                                         A.rows, nd.vertices, nd.graphEdges, nd.seconds);
-        }
+        });
         id_.n = A.rows;
-        id_.nnz = static_cast<MUMPS_INT8>(triplets_.size);
-        id_.irn = triplets_.irn.get();
-        id_.jcn = triplets_.jcn.get();
-        id_.a = triplets_.a.get();
+        const auto nnz = static_cast<MUMPS_INT8>(triplets_.size);
+        mumps::setEntries(id_, options_, nnz, triplets_.irn.get(), triplets_.jcn.get(), triplets_.a.get());
+        entries_ = mumps::totalEntries(options_, nnz);
         id_.job = kJobAnalyse;
         dmumps_c(&id_);
         std::vector<MUMPS_INT>().swap(permIn_);
@@ -265,8 +272,9 @@ private:
                           const MemoryPhase& factorisation) const {
         static const char* orderings[] = {"AMD", "PERM_IN", "AMF", "SCOTCH", "PORD", "METIS", "QAMD", "AUTO"};
         const int usedOrdering = id_.infog[6];
-        msg().infof("    MUMPS ({}): n = {}, non-zeros (upper triangle) = {}, ordering {} (asked {}){}",
-                    id_.sym == 1 ? "SYM=1, positive definite" : "SYM=2, general symmetric", A.rows, id_.nnz,
+        msg().infof("    MUMPS ({}): n = {}, non-zeros (upper triangle) = {}{}, ordering {} (asked {}){}",
+                    id_.sym == 1 ? "SYM=1, positive definite" : "SYM=2, general symmetric", A.rows, entries_,
+                    options_.distributed ? fmt::format(" in distributed triplets from {} processes (ICNTL(18)=3)", mpi::size()) : "",
                     usedOrdering == kUserOrdering ? ordering_ + " (PERM_IN)"
                     : usedOrdering >= 0 && usedOrdering <= 7 ? orderings[usedOrdering] : "?",
                     options_.renum,
@@ -292,7 +300,7 @@ private:
     }
 
     void release() {
-        if (!initialised_) return;
+        if (!initialised_ || !mpi::running()) return;  // (MPI already ended at exit: nothing to free)
         id_.job = kJobEnd;
         dmumps_c(&id_);
         initialised_ = false;
@@ -302,6 +310,7 @@ private:
     bool conditionLogged_ = false;  // once per factorisation (refinement steps solve again)
     bool initialised_ = false;
     std::string ordering_, orderingNote_;
+    double entries_ = 0.0;  // given by all processes
     double analysisSeconds_ = 0.0, predictedFlops_ = 0.0, factorisationSeconds_ = 0.0, residentBeforeMb_ = 0.0;
     std::vector<MUMPS_INT> permIn_;
     // MUMPS's input: the upper triangle of S A S, 1-based (uninitialised storage, each entry

@@ -1,6 +1,6 @@
 // One executable that reads a MED file (MED-fichier over OpenMPI's HDF5) and factorises with
-// sequential MUMPS (whose libmpiseq also defines MPI_* symbols): both must work side by side,
-// before and after each other.
+// MUMPS (the parallel build, on the same OpenMPI, initialised lazily): both must work side by
+// side, before and after each other.
 #include <gtest/gtest.h>
 
 #include "fe_test_support.hpp"

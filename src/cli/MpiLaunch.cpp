@@ -1,0 +1,82 @@
+#include "cli/MpiLaunch.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/Mpi.hpp"
+#include "parser/ExportFile.hpp"
+
+namespace ma::cli {
+
+namespace {
+
+std::optional<int> processCount(const std::string& text) {
+    try {
+        size_t end = 0;
+        const int k = std::stoi(text, &end);
+        if (end == text.size() && k >= 1 && k <= kMaxProcesses) return k;
+    } catch (const std::exception&) {
+    }
+    return std::nullopt;
+}
+
+// --np on the command line, else P mpi_nbcpu of the .export; 1 when neither (or when either is
+// invalid: the supervisor reports it, in one process).
+int requestedProcesses(int argc, char** argv) {
+    std::string exportPath;
+    for (int i = 2; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--np") return i + 1 < argc ? processCount(argv[i + 1]).value_or(1) : 1;
+        if (exportPath.empty() && a.size() > 7 && a.ends_with(".export")) exportPath = a;
+    }
+    if (exportPath.empty()) return 1;
+    try {
+        return readExportFile(exportPath, std::nullopt).mpiProcesses.value_or(1);
+    } catch (const std::exception&) {
+        return 1;
+    }
+}
+
+}  // namespace
+
+int launchProcessesIfAsked(int argc, char** argv) {
+    const int k = requestedProcesses(argc, argv);
+    if (k <= 1 || mpi::launchedByMpirun()) return -1;
+    // Per process: one OpenBLAS thread, and the element loops' threads share the cores.
+    const int cores = std::max(1, int(std::thread::hardware_concurrency()));
+    setenv("OPENBLAS_NUM_THREADS", "1", 0);
+    setenv("OMP_NUM_THREADS", std::to_string(std::max(1, cores / k)).c_str(), 0);
+    // A process waiting in a collective yields its core (on a shared machine the others' jobs
+    // otherwise stall the K processes' lock-step; no cost measured on a quiet one).
+    setenv("OMPI_MCA_mpi_yield_when_idle", "1", 0);
+    if (geteuid() == 0) {  // OpenMPI refuses root without these
+        setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 0);
+        setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 0);
+    }
+    std::error_code ec;
+    const std::string self = std::filesystem::read_symlink("/proc/self/exe", ec).string();
+    std::vector<std::string> args = {"mpirun", "--quiet", "-np", std::to_string(k), "--bind-to", "none",
+                                     "-x", "OPENBLAS_NUM_THREADS", "-x", "OMP_NUM_THREADS"};
+    if (k > cores) args.push_back("--oversubscribe");
+    args.push_back(ec ? std::string(argv[0]) : self);
+    for (int i = 1; i < argc; ++i) args.emplace_back(argv[i]);
+    std::vector<char*> c;
+    for (auto& a : args) c.push_back(a.data());
+    c.push_back(nullptr);
+    std::fflush(stdout);
+    execvp("mpirun", c.data());
+    std::fprintf(stderr, "miniaster: cannot start mpirun for %d processes: %s (Debian package openmpi-bin)\n", k,
+                 std::strerror(errno));
+    return 1;
+}
+
+}  // namespace ma::cli

@@ -1,0 +1,76 @@
+#pragma once
+// The processes of a run (OpenMPI), for every layer without mpi.h (docs/mpi.md). A program
+// started without mpirun is one process (an MPI "singleton"); with K processes every one runs the
+// same command file on the replicated mesh, only rank 0 writes and prints, and the distributed
+// parts (each process's own cells) meet in the sums below.
+//
+// Lock-step rule: every process calls the collective functions below in the same order. A region
+// that computes on a process's own data and may fail there alone runs inside collectively(): the
+// processes then agree, and all of them throw the error of the lowest failing rank (same type,
+// same text), so that none is left waiting in the next collective.
+#include <exception>
+#include <optional>
+#include <span>
+#include <string>
+
+namespace ma::mpi {
+
+// MPI_Init_thread (MPI_THREAD_FUNNELED: only the main thread calls MPI) unless done; started
+// without mpirun, the singleton is told to start no helper daemon and to use the in-process
+// transport (0.05 s instead of 0.4 s). MPI_Finalize at exit. Idempotent: the unit tests' MUMPS
+// calls it lazily.
+void initialise(int* argc = nullptr, char*** argv = nullptr);
+void finalise();
+// Between MPI_Init and MPI_Finalize (objects released at exit check it before a collective call).
+bool running();
+
+int rank();
+int size();
+inline bool isRoot() { return rank() == 0; }
+// True when started by mpirun (or another OpenMPI launcher), before MPI_Init.
+bool launchedByMpirun();
+
+// Element-wise sums and maxima over the processes, reduced on rank 0 in a fixed order and then
+// broadcast: the same bits on every process, run after run.
+void sum(std::span<double> values);
+void sum(std::span<long double> values);
+void max(std::span<double> values);
+void broadcast(std::span<double> values);  // from rank 0
+void broadcast(std::span<int> values);     // from rank 0
+
+// MPI_Comm_c2f(MPI_COMM_WORLD) / MPI_COMM_SELF, for MUMPS's comm_fortran.
+int fortranWorld();
+int fortranSelf();
+
+// The error agreement: every process calls it at the same point with its own failure (empty:
+// none). Returns the failure of the lowest failing rank on every process, or nothing.
+struct Failure {
+    int kind = 0;  // see Mpi.cpp: which exception type to rethrow
+    std::string text;
+};
+std::optional<Failure> agree(const std::optional<Failure>& local);
+// Failure <-> exception of the engine's types (core/Error.hpp), std::bad_alloc and the others.
+Failure failureOf(const std::exception_ptr& error);
+[[noreturn]] void rethrow(const Failure& failure);
+
+// Runs f() on every process; when it threw on any of them, every process throws the error of the
+// lowest failing rank (see above). One process: f() as is.
+template <class F>
+void collectively(F&& f) {
+    if (size() == 1) {
+        f();
+        return;
+    }
+    std::optional<Failure> local;
+    try {
+        f();
+    } catch (...) {
+        local = failureOf(std::current_exception());
+    }
+    if (const auto agreed = agree(local)) rethrow(*agreed);
+}
+
+// Last resort (a process cannot reach the next agreement): ends every process of the job.
+[[noreturn]] void abortAll(int status);
+
+}  // namespace ma::mpi

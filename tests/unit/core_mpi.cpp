@@ -1,0 +1,62 @@
+// core/Mpi: the sums and the error agreement. On one process (as ctest runs every unit test) and on
+// two and three, started by mpirun (ctest core_mpi.processes_2 / processes_3,
+// tests/CMakeLists.txt): a failure on one process only is thrown, with its type and text, on every
+// process; sums are the same bits on every process.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <numeric>
+#include <vector>
+
+#include "core/Error.hpp"
+#include "core/Mpi.hpp"
+
+namespace ma {
+namespace {
+
+TEST(Mpi, SumsAreTheSameOnEveryProcess) {
+    const int k = mpi::size(), me = mpi::rank();
+    std::vector<double> v = {1.0 + me, 1e-17 * (me + 1), -0.1 * me};
+    mpi::sum(v);
+    EXPECT_EQ(v[0], k + k * (k - 1) / 2.0);
+    EXPECT_NEAR(v[1], 1e-17 * k * (k + 1) / 2, 1e-31);
+    // Every process holds rank 0's bits.
+    std::vector<double> mine = v;
+    mpi::broadcast(v);
+    EXPECT_EQ(std::memcmp(v.data(), mine.data(), sizeof(double) * v.size()), 0);
+
+    std::vector<long double> l = {1.0L / 3.0L};
+    mpi::sum(l);
+    EXPECT_NEAR(double(l[0]), k / 3.0, 1e-15);
+    std::vector<double> m = {double(me), -double(me)};
+    mpi::max(m);
+    EXPECT_EQ(m[0], k - 1.0);
+    EXPECT_EQ(m[1], 0.0);
+}
+
+TEST(Mpi, AFailureOnTheLastProcessIsThrownOnEveryProcess) {
+    const int last = mpi::size() - 1;
+    try {
+        mpi::collectively([&] {
+            if (mpi::rank() == last) throw NumericalError("the element of process " + std::to_string(last) + " failed");
+        });
+        FAIL() << "no exception on rank " << mpi::rank();
+    } catch (const NumericalError& e) {
+        EXPECT_EQ(std::string(e.what()), "the element of process " + std::to_string(last) + " failed");
+    }
+    // The lowest failing rank wins; the others go on together afterwards.
+    try {
+        mpi::collectively([&] {
+            if (mpi::rank() > 0 || mpi::size() == 1) throw UserError("rank " + std::to_string(mpi::rank()));
+        });
+        FAIL() << "no exception on rank " << mpi::rank();
+    } catch (const UserError& e) {
+        EXPECT_EQ(std::string(e.what()), mpi::size() == 1 ? "rank 0" : "rank 1");
+    }
+    EXPECT_NO_THROW(mpi::collectively([] {}));
+    EXPECT_FALSE(mpi::agree(std::nullopt).has_value());
+}
+
+}  // namespace
+}  // namespace ma
