@@ -60,7 +60,7 @@ run_case() {  # label comm meshfile meshunit-keyword
 }
 
 {
-    echo "| scene | K | wall (s) | MUMPS analysis (s) | factorisation (s) | solve (s) | peak resident per process (MB) | run |"
+    echo "| scene | K | wall, all commands (s) | MUMPS analysis (s) | factorisation (s) | solve (s) | peak resident per process (MB) | run |"
     echo "|---|---|---|---|---|---|---|---|"
 } > "$work/table.md"
 echo "machine: $(nproc) cores, $(free -g | awk '/Mem:/ {print $2}') GB; load $(cut -d' ' -f1-3 /proc/loadavg); git $(git -C "$here" rev-parse --short HEAD)" | tee "$work/machine.txt"
