@@ -173,10 +173,11 @@ private:
         const auto t0 = std::chrono::steady_clock::now();
         id_.icntl[6] = orderingCode(options_.renum, ordering_);
         orderingNote_.clear();
-        // On the host (rank 0) only: every process holds the whole pattern (docs/mpi.md).
+        // On the host (rank 0) only, on the whole matrix's pattern (docs/mpi.md).
         if (id_.icntl[6] == kUserOrdering) mpi::collectively([&] {
             if (!mpi::isRoot()) return;
-            const FillReducingOrdering nd = nestedDissectionOrdering(A, options_.threads);
+            const CsrMatrix whole = options_.wholePattern ? options_.wholePattern() : CsrMatrix{};
+            const FillReducingOrdering nd = nestedDissectionOrdering(options_.wholePattern ? whole : A, options_.threads);
             permIn_.resize(nd.pivotRank.size());
             for (size_t i = 0; i < permIn_.size(); ++i) permIn_[i] = nd.pivotRank[i] + 1;
             id_.perm_in = permIn_.data();
