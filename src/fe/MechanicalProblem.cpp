@@ -62,6 +62,9 @@ void MechanicalProblem::distributeCells() {
     const auto t0 = std::chrono::steady_clock::now();
     space_->distribute(mpi::size(), mpi::rank());
     solverOptions_.distributed = true;
+    solverOptions_.wholePattern = [this] {
+        return buildSparsityPattern(*space_, *constraints_, additional_.get(), /*allElements=*/true);
+    };
     msg().infof("    cells partitioned over {} processes (METIS_PartMeshDual, weighted by integration points, {:.3f} s): "
                 "{} elements per process",
                 mpi::size(), secondsSince(t0), fmt::join(space_->elementsPerProcess(), " "));

@@ -17,9 +17,10 @@ namespace {
 // contiguous range of equations; node ranges go to the workers.
 class PatternBuilder {
 public:
-    PatternBuilder(const Discretisation& space, const DirichletConstraints& c, const AdditionalTerms* additional)
+    PatternBuilder(const Discretisation& space, const DirichletConstraints& c, const AdditionalTerms* additional,
+                   bool allElements)
         : space_(space), mesh_(space.mesh()), numbering_(space.numbering()), c_(c), nNodes_(mesh_.nodeCount()),
-          workers_(workerCount()) {
+          workers_(workerCount()), allElements_(allElements) {
         collectMultipliers();
         collectExtraColumns(additional);
         nodeFree_.assign(nNodes_, 0);
@@ -68,12 +69,15 @@ private:
     // with its own list, so that the graph is the same for any number of workers.
     void buildNeighbourGraphs() {
         std::vector<int> start(nNodes_ + 1, 0);  // node -> elements incidence
-        for (const auto& e : space_.model().elements)
-            for (int node : mesh_.cellNodes(e.cell)) ++start[node + 1];
+        auto counted = [&](size_t e) { return allElements_ || space_.owns(e); };
+        for (size_t e = 0; e < space_.elementCount(); ++e)
+            if (counted(e))
+                for (int node : mesh_.cellNodes(space_.model().elements[e].cell)) ++start[node + 1];
         for (int i = 0; i < nNodes_; ++i) start[i + 1] += start[i];
         std::vector<int> incidence(start.back()), fill(start.begin(), start.end() - 1);
         for (size_t e = 0; e < space_.elementCount(); ++e)
-            for (int node : mesh_.cellNodes(space_.model().elements[e].cell)) incidence[fill[node]++] = static_cast<int>(e);
+            if (counted(e))
+                for (int node : mesh_.cellNodes(space_.model().elements[e].cell)) incidence[fill[node]++] = static_cast<int>(e);
         fill = {};
         graphs_.assign(workers_, Graph{});
         firstNode_.assign(workers_ + 1, nNodes_);
@@ -109,9 +113,11 @@ private:
 
     bool special(int d) const { return !extraColumns_.empty() && !extraColumns_[d].empty(); }
 
-    // Rare rows (contact couplings): element columns, couplings and multipliers, sorted, unique.
+    // Rare rows (contact couplings): element columns, couplings and multipliers, sorted, unique;
+    // the diagonal too (a distributed pattern may hold no element of the row's node).
     void specialRow(int d, std::vector<int>& out, std::span<const int> neighbours) const {
         out.clear();
+        out.push_back(c_.eq[d]);
         for (int other : neighbours)
             for (int e = numbering_.first(other); e < numbering_.first(other + 1); ++e)
                 if (c_.eq[e] >= 0) out.push_back(c_.eq[e]);
@@ -204,6 +210,7 @@ private:
     const DirichletConstraints& c_;
     const int nNodes_;
     const int workers_;
+    const bool allElements_;
     std::vector<std::vector<int>> dofMultipliers_;
     std::vector<std::vector<int>> extraColumns_;
     std::vector<int> nodeFree_;  // free dofs (equations) of each node
@@ -215,12 +222,13 @@ private:
 }  // namespace
 
 CsrMatrix buildSparsityPattern(const Discretisation& space, const DirichletConstraints& c,
-                               const AdditionalTerms* additional) {
+                               const AdditionalTerms* additional, bool allElements) {
     const auto t0 = std::chrono::steady_clock::now();
     const double cpu0 = threadCpuSeconds();
-    CsrMatrix matrix = PatternBuilder(space, c, additional).build();
-    msg().infof("    matrix pattern: {} equations ({} free dofs, {} eliminated, {} multipliers), {} non-zeros, "
+    CsrMatrix matrix = PatternBuilder(space, c, additional, allElements).build();
+    msg().infof("    matrix pattern{}: {} equations ({} free dofs, {} eliminated, {} multipliers), {} non-zeros, "
                 "{:.3f} s (cpu {:.3f} s)",
+                space.distributed() ? (allElements ? " of the whole matrix (ordering)" : " of this process's cells") : "",
                 matrix.rows, c.freeCount, static_cast<int>(c.eq.size()) - c.freeCount, c.multi.size(), matrix.nonZeros(),
                 secondsSince(t0), threadCpuSeconds() - cpu0);
     return matrix;

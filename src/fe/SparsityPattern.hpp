@@ -11,7 +11,10 @@
 namespace ma {
 
 // The pattern (values left empty: allocated by the first assembly); logs its size and cost.
+// Distributed (docs/mpi.md): the element couplings of this process's elements only, unless
+// `allElements` (the whole matrix's pattern, for the ordering on rank 0); multiplier rows and the
+// additional terms' couplings always whole.
 CsrMatrix buildSparsityPattern(const Discretisation& space, const DirichletConstraints& constraints,
-                               const AdditionalTerms* additional);
+                               const AdditionalTerms* additional, bool allElements = false);
 
 }  // namespace ma

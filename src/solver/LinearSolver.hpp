@@ -7,6 +7,7 @@
 // and the componentwise backward error; a singular matrix raises NumericalError with the likely
 // cause.
 #include <array>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -41,6 +42,9 @@ struct SolverOptions {
     // The matrix is the sum of the MPI processes' parts (docs/mpi.md, MUMPS only): each process
     // passes its own; right-hand sides are the same on every process, and so are the solutions.
     bool distributed = false;
+    // Distributed: the pattern of the whole matrix (each process holds only its cells' part), for
+    // the fill-reducing ordering on rank 0; built when asked and freed after the analysis.
+    std::function<CsrMatrix()> wholePattern;
     // Appended to the "singular system" message: what the caller knows about likely causes.
     std::string singularHint =
         "a missing boundary condition (rigid body motion) or an unattached enriched dof";

@@ -18,7 +18,7 @@ int communicator(const SolverOptions& options);
 // After JOB=-1: the distributed input format.
 void setInputFormat(DMUMPS_STRUC_C& id, const SolverOptions& options);
 // Whether this process passes entry (i, j) of value v of its part: a distributed part passes its
-// non-zeros only, and rank 0 every diagonal entry (so that every row is seen, multipliers too).
+// non-zeros only, and rank 0 also the diagonal entries of its pattern, zero or not.
 bool passes(const SolverOptions& options, int i, int j, double v);
 // The entries (1-based) as MUMPS's centralised or distributed input.
 void setEntries(DMUMPS_STRUC_C& id, const SolverOptions& options, MUMPS_INT8 nnz, MUMPS_INT* irn, MUMPS_INT* jcn,

@@ -206,12 +206,14 @@ private:
         const bool havePoints = rowPoints.size() == size_t(A.rows) && A.rows > 0;
         id_.icntl[6] = orderingCode(options_.renum, havePoints, ordering_);
         orderingNote_.clear();
-        // On the host (rank 0) only: every process holds the whole pattern (docs/mpi.md).
+        // On the host (rank 0) only, on the whole matrix's pattern (docs/mpi.md).
         if (id_.icntl[6] == kUserOrdering) mpi::collectively([&] {
             if (!mpi::isRoot()) return;
+            const CsrMatrix whole = options_.wholePattern ? options_.wholePattern() : CsrMatrix{};
+            const CsrMatrix& graph = options_.wholePattern ? whole : A;
             const bool byPoints = ordering_ == "COORDINATES";
-            const FillReducingOrdering nd = byPoints ? coordinateNestedDissection(A, rowPoints, options_.threads)
-                                                     : nestedDissectionOrdering(A, options_.threads);
+            const FillReducingOrdering nd = byPoints ? coordinateNestedDissection(graph, rowPoints, options_.threads)
+                                                     : nestedDissectionOrdering(graph, options_.threads);
             permIn_.resize(nd.pivotRank.size());
             for (size_t i = 0; i < permIn_.size(); ++i) permIn_[i] = nd.pivotRank[i] + 1;
             id_.perm_in = permIn_.data();
