@@ -5,15 +5,13 @@
 #include <span>
 #include <vector>
 
-#include "solver/LargeArray.hpp"
-
 namespace ma {
 
 struct CsrMatrix {
     int rows = 0;
-    LargeVector<long long> rowStart{0};  // rows + 1 offsets into cols/values
-    LargeVector<int> cols;               // sorted within each row
-    LargeVector<double> values;
+    std::vector<long long> rowStart{0};  // rows + 1 offsets into cols/values
+    std::vector<int> cols;               // sorted within each row
+    std::vector<double> values;
 
     long long nonZeros() const { return static_cast<long long>(cols.size()); }
     // Position of (row, col) in values; -1 when outside the pattern.
