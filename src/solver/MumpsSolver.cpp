@@ -189,7 +189,11 @@ private:
         initialised_ = true;
         if (id_.infog[0] < 0) throw NumericalError(mumpsErrorText(id_.infog[0], id_.infog[1]));
         // Silence MUMPS's own printing; we log what matters.
-        id_.icntl[0] = -1, id_.icntl[1] = -1, id_.icntl[2] = -1, id_.icntl[3] = 0;
+        // Units 0, not -1: MUMPS's guarded messages test LP > 0 either way, but a few of its error
+        // paths write to ICNTL(1) unguarded, and gfortran stops a process that writes to a negative
+        // unit (seen on 4 processes: "Unit number is negative" in dfac_process_blocfacto_LDLT.F,
+        // the others then waited for it forever). Unit 0 is stderr.
+        id_.icntl[0] = 0, id_.icntl[1] = 0, id_.icntl[2] = 0, id_.icntl[3] = 0;
         id_.icntl[13] = options_.pcentPivot;
         mumps::setInputFormat(id_, options_);
         refuseLowRank(options_);
