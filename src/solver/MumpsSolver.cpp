@@ -42,7 +42,8 @@ int orderingCode(const std::string& renum, bool havePoints, std::string& used) {
     if (renum == "QAMD") return used = "QAMD", 6;
     if (renum == "PARMETIS" || renum == "PTSCOTCH") {
         used = renum == "PARMETIS" ? "METIS" : "SCOTCH";
-        msg().infof("    RENUM='{}': the sequential solver uses its sequential counterpart {}", renum, used);
+        msg().infof("    RENUM='{}': MUMPS's analysis runs on the host alone, ordered by the sequential counterpart {}",
+                    renum, used);
         return used == "METIS" ? kUserOrdering : 3;
     }
     return used = "METIS", kUserOrdering;  // METIS, AUTO
