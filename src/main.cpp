@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
     ma::med::initialiseBeforeMpi();
     try {
         ma::mpi::initialise(&argc, &argv);
+        ma::mpi::abortJobOnEarlyExit();
     } catch (const std::exception& e) {
         std::fprintf(stderr, "miniaster: %s (OpenMPI)\n", e.what());
         return 1;

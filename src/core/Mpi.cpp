@@ -39,20 +39,6 @@ void reduceThenBroadcast(std::span<T> values, MPI_Datatype type, MPI_Op op) {
 
 }  // namespace
 
-namespace {
-
-// Reached with MPI still running only when a library ends the process with exit() before main()
-// finalises (gfortran's runtime errors in MUMPS do): on several processes the others would wait
-// for this one in their next collective, and MPI_Finalize here for them, forever; MPI_Abort has
-// mpirun end them all, with exit status 1.
-void finaliseAtExit() {
-    if (!running()) return;
-    if (size() > 1) MPI_Abort(MPI_COMM_WORLD, 1);
-    MPI_Finalize();
-}
-
-}  // namespace
-
 bool launchedByMpirun() {
     return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMIX_RANK") || std::getenv("PMI_RANK");
 }
@@ -69,7 +55,18 @@ void initialise(int* argc, char*** argv) {
     int provided = 0;
     if (MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS)
         throw std::runtime_error("MPI_Init_thread failed");
-    std::atexit(finaliseAtExit);
+    std::atexit(finalise);
+}
+
+void abortJobOnEarlyExit() {
+    // Reached with MPI still running only when a library ends the process with exit() before
+    // main() finalises (gfortran's runtime errors inside MUMPS do): on several processes the
+    // others would wait for this one in their next collective, and MPI_Finalize here for them,
+    // forever. MPI_Abort has mpirun end them all, with exit status 1. Registered after
+    // initialise(), so it runs before finalise()'s own handler.
+    std::atexit([] {
+        if (running() && size() > 1) MPI_Abort(MPI_COMM_WORLD, 1);
+    });
 }
 
 void finalise() {

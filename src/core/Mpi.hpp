@@ -21,6 +21,9 @@ namespace ma::mpi {
 // calls it lazily.
 void initialise(int* argc = nullptr, char*** argv = nullptr);
 void finalise();
+// For a program's main(): an exit() before finalise() on one of several processes aborts the job
+// (MPI_Abort) instead of leaving the others waiting for it.
+void abortJobOnEarlyExit();
 // Between MPI_Init and MPI_Finalize (objects released at exit check it before a collective call).
 bool running();
 
