@@ -1,5 +1,6 @@
 #pragma once
-// Direct solvers behind one interface: MUMPS (sequential, the default, SOLVEUR METHODE='MUMPS')
+// Direct solvers behind one interface: MUMPS (the default, SOLVEUR METHODE='MUMPS'; on one process
+// or distributed over several, docs/mpi.md)
 // and Eigen's sparse factorisations (METHODE='MULT_FRONT' / 'LDLT'). Both factorise the
 // symmetrically diagonal-scaled matrix D^-1/2 A D^-1/2 and refine the solution iteratively
 // (transparent to callers: A, b and x are the unscaled ones). Each logs the system size,
@@ -38,7 +39,9 @@ struct SolverOptions {
     bool diagonalScaling = true;     // factorise D^-1/2 A D^-1/2 (code_aster: PRETRAITEMENTS)
     int maxRefinementSteps = 3;      // iterative refinement while it helps; 0 = none (POSTTRAITEMENTS)
     int info = 1;
-    int threads = 1;  // the METIS ordering's two halves in two processes when >= 2
+    // Threads of the solver's own loops (MUMPS's input, the residuals, the coordinate ordering's
+    // top halves) and processes of the METIS ordering's two halves, when >= 2.
+    int threads = 1;
     // The matrix is the sum of the MPI processes' parts (docs/mpi.md, MUMPS only): each process
     // passes its own; right-hand sides are the same on every process, and so are the solutions.
     bool distributed = false;

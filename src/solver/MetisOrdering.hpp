@@ -1,6 +1,7 @@
 #pragma once
 // Fill-reducing ordering by nested dissection (METIS_NodeND, libmetis) of the graph of a
-// symmetric sparse matrix: the ordering RENUM='METIS' (and 'AUTO') hands to the factorisation.
+// symmetric sparse matrix: the ordering RENUM='METIS' (and 'AUTO' when some equation has no point: solver/CoordinateOrdering
+// otherwise) hands to the factorisation.
 // Independent of the solver: MUMPS takes the result as PERM_IN (ICNTL(7)=1), sequential or not.
 #include <vector>
 
