@@ -1,8 +1,11 @@
 // LIRE_MAILLAGE (commands_spec §7.7): from logical unit UNITE (default 20), FORMAT='MED' (the
 // first mesh of the file or NOM_MED, docs/med.md) or FORMAT='ASTER' (.mail text, docs/mesh.md).
+#include <fmt/format.h>
+
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "core/Units.hpp"
+#include "fe/CellOrientation.hpp"
 #include "med_io/MedReader.hpp"
 #include "mesh/AsterMeshReader.hpp"
 #include "mesh/MeshSummary.hpp"
@@ -33,6 +36,37 @@ std::shared_ptr<Mesh> readMailMesh(const std::string& path, int unit) {
     return mesh;
 }
 
+std::string cellList(const Mesh& mesh, const std::vector<int>& cells) {
+    std::string s;
+    for (size_t i = 0; i < cells.size() && i < 5; ++i)
+        s += (i ? ", " : "") + mesh.cellNames[size_t(cells[i])] + " (" + cellTypeName(mesh.cellTypes[size_t(cells[i])]) + ")";
+    return cells.size() > 5 ? s + ", ..." : s;
+}
+
+// Reversed volume cells are an alarm (code_aster integrates them with |det J| and says nothing),
+// distorted ones code_aster's alarm MAILLAGE1_1, degenerate ones an error before any computation.
+void reportOrientation(const Mesh& mesh, const std::string& name) {
+    const OrientationCensus census = orientationCensus(mesh);
+    if (!census.degenerate.empty())
+        throw UserError(fmt::format("LIRE_MAILLAGE: mesh {}: {} cell(s) are degenerate, their Jacobian round-off for their "
+                                    "size (coincident or aligned nodes, or non-finite coordinates): {}",
+                                    name, census.degenerate.size(), cellList(mesh, census.degenerate)));
+    if (census.reversedCount() > 0) {
+        std::string counts;
+        for (const auto& [type, n] : census.reversed)
+            counts += fmt::format("{}{} of {} {}", counts.empty() ? "" : ", ", n, census.total.at(type), cellTypeName(type));
+        msg().alarm("MAILLAGE_ORIENTATION",
+                    fmt::format("mesh {}: {} cells are {} in code_aster's node order (negative Jacobian): {}; they are "
+                                "integrated with |det J|, as code_aster does, and give the same elements as cells "
+                                "numbered the other way",
+                                name, census.reversedCount(), census.dimension == 3 ? "left-handed" : "clockwise", counts));
+    }
+    if (!census.distorted.empty())
+        msg().alarm("MAILLAGE1_1", fmt::format("mesh {}: {} cell(s) are too distorted, their Jacobian changes sign among "
+                                               "the integration points: {}; is the connectivity in code_aster's order?",
+                                               name, census.distorted.size(), cellList(mesh, census.distorted)));
+}
+
 ConceptPtr lireMaillage(const KeywordSet& kw, CommandContext& ctx) {
     const std::string format = kw.text("FORMAT");
     if (format != "MED" && format != "ASTER")
@@ -50,6 +84,7 @@ ConceptPtr lireMaillage(const KeywordSet& kw, CommandContext& ctx) {
 
     const std::string name = ctx.resultName.empty() ? meshName : ctx.resultName;
     msg().info(meshSummary(*mesh, name));
+    reportOrientation(*mesh, name);
     return mesh;
 }
 

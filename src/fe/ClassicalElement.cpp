@@ -28,8 +28,9 @@ const Hexa8& hexa8() {
 
 void badJacobian(const Mesh& mesh, int cell, double det) {
     throw NumericalError(fmt::format(
-        "cell {} ({}) has a {} Jacobian ({:.3e}): the cell is degenerate or its nodes are not in code_aster's order",
-        mesh.cellNames[cell], cellTypeName(mesh.cellTypes[cell]), det == 0.0 ? "zero" : "negative", det));
+        "cell {} ({}) is degenerate: its Jacobian ({:.3e}) is round-off for its size (coincident or aligned nodes, "
+        "or non-finite coordinates)",
+        mesh.cellNames[cell], cellTypeName(mesh.cellTypes[cell]), det));
 }
 
 }  // namespace ma::classical

@@ -9,6 +9,7 @@
 // (computePointGeometry, ElementIntegration loops of MechanicalProblem.cpp) operation for
 // operation, so both give the same bits; tests/unit/fe_classical.cpp checks it.
 #include <array>
+#include <cmath>
 
 #include "fe/Quadrature.hpp"
 #include "mesh/ElementGeometry.hpp"
@@ -54,11 +55,11 @@ const Hexa8& hexa8();
 template <class Ref>
 struct Geometry {
     double grad[Ref::points][Ref::nodes][Ref::dim];  // physical gradients of N_a
-    double weight[Ref::points];                      // reference weight x det J
+    double weight[Ref::points];                      // reference weight x |det J|
     std::array<double, 3> xyz[Ref::points];
 };
 
-// NumericalError naming the cell (the general path's message) for a non-positive Jacobian.
+// NumericalError naming the cell (the general path's message) for a degenerate Jacobian.
 [[noreturn]] void badJacobian(const Mesh& mesh, int cell, double det);
 
 template <class Ref>
@@ -75,8 +76,8 @@ inline void computeGeometry(const Ref& ref, const Mesh& mesh, int cell, Geometry
         double J[D][D], inv[D][D];
         jacobian<D, D>(NN, [&](int a) -> const Vec3& { return *X[a]; }, [&](int a, int j) { return ref.dN[p][a][j]; }, J);
         const double det = invertJacobian<D>(J, inv);
-        if (!(det > 0.0)) badJacobian(mesh, cell, det);
-        g.weight[p] = ref.weight[p] * det;
+        if (degenerateJacobian<D>(J, det)) badJacobian(mesh, cell, det);
+        g.weight[p] = ref.weight[p] * std::abs(det);
         for (int a = 0; a < NN; ++a)
             physicalGradient<D>(inv, [&](int i) { return ref.dN[p][a][i]; }, g.grad[p][a]);
     }

@@ -73,8 +73,8 @@ void computePointGeometry(const Mesh& mesh, int cell, int spaceDim, bool boundar
         }
         double inv[3][3] = {};
         const double det = invertJacobian(spaceDim, J, inv);
-        if (!(det > 0.0)) classical::badJacobian(mesh, cell, det);
-        geo.weight[p] = integration.refWeights[p] * det;
+        if (degenerateJacobian(spaceDim, J, det)) classical::badJacobian(mesh, cell, det);
+        geo.weight[p] = integration.refWeights[p] * std::abs(det);
         for (int a = 0; a < n; ++a) {
             double* g = &geo.gradN[(size_t(p) * n + a) * 3];
             g[0] = g[1] = g[2] = 0.0;

@@ -68,6 +68,29 @@ inline double invertJacobian(const Matrix& J, Inverse& inv) {
     return det;
 }
 
+// Whether det J is round-off for the cell's own size: |det J| <= kDegenerateJacobian times the
+// product of the lengths of J's columns (the reference edges once mapped). The ratio is the volume
+// of the mapped edges over that of a box with the same edge lengths: near 1 for a well-shaped cell
+// however thin, 0 for coincident or aligned nodes. Its sign (the cell's orientation) does not
+// matter: left-handed and clockwise cells are integrated with |det J|, as code_aster does. A NaN
+// (non-finite coordinates) counts as degenerate.
+inline constexpr double kDegenerateJacobian = 1e-12;
+
+template <int D, class Matrix>
+inline bool degenerateJacobian(const Matrix& J, double det) {
+    double product = 1.0;
+    for (int j = 0; j < D; ++j) {
+        double column = 0.0;
+        for (int i = 0; i < D; ++i) column += J[i][j] * J[i][j];
+        product *= column;
+    }
+    return !(det * det > kDegenerateJacobian * kDegenerateJacobian * product);
+}
+
+inline bool degenerateJacobian(int dim, const double J[3][3], double det) {
+    return dim == 2 ? degenerateJacobian<2>(J, det) : degenerateJacobian<3>(J, det);
+}
+
 // Runtime dimension (2 or 3) form of invertJacobian on 3 x 3 storage.
 inline double invertJacobian(int dim, const double J[3][3], double inv[3][3]) {
     return dim == 2 ? invertJacobian<2>(J, inv) : invertJacobian<3>(J, inv);
