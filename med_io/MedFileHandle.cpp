@@ -3,9 +3,11 @@
 
 #include <hdf5.h>
 #include <sys/mman.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -175,17 +177,62 @@ herr_t checkObject(hid_t group, const char* name, const H5L_info_t* info, void* 
 
 }  // namespace
 
-void checkMedStructure(const std::string& path) {
-    silenceHdf5Errors();
-    StderrCapture capture;
+namespace {
+
+// The visit of every object; "" when all of them read, else the first that does not ("/" for a
+// structure that cannot be read to its end).
+std::string firstDamagedObject(const std::string& path) {
     const hid_t h5 = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-    if (h5 < 0) throw UserError("MED file '" + path + "' is damaged or truncated: HDF5 cannot open it");
+    if (h5 < 0) return "/";
     std::string failedAt;
     const herr_t rc = H5Lvisit(h5, H5_INDEX_NAME, H5_ITER_NATIVE, checkObject, &failedAt);
     H5Fclose(h5);
-    if (!failedAt.empty())
-        throw UserError("MED file '" + path + "' is damaged: its object /" + failedAt + " cannot be read");
-    if (rc < 0) throw UserError("MED file '" + path + "' is damaged: its structure cannot be read to the end");
+    return failedAt.empty() && rc < 0 ? "/" : failedAt;
+}
+
+}  // namespace
+
+// The visit runs in a child process: on some damaged object headers HDF5 itself crashes (a
+// segmentation fault while it frees them at H5Fclose), which must end as a clear error, not as
+// the end of the run. The child only reads the file and reports through a pipe.
+void checkMedStructure(const std::string& path) {
+    silenceHdf5Errors();
+    StderrCapture capture;
+    int fds[2];
+    if (::pipe(fds) != 0) throw UserError("MED file '" + path + "': cannot check its structure (no pipe: " + std::strerror(errno) + ")");
+    std::fflush(nullptr);
+    const pid_t child = ::fork();
+    if (child < 0) {
+        ::close(fds[0]), ::close(fds[1]);
+        throw UserError("MED file '" + path + "': cannot check its structure (fork: " + std::strerror(errno) + ")");
+    }
+    if (child == 0) {
+        // The run's handlers (its fatal-signal paragraph, its stop signals) are the parent's.
+        for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTERM, SIGINT, SIGHUP, SIGXCPU}) std::signal(sig, SIG_DFL);
+        ::close(fds[0]);
+        const std::string failedAt = firstDamagedObject(path);
+        const ssize_t written = ::write(fds[1], failedAt.data(), failedAt.size());
+        ::_exit(written == ssize_t(failedAt.size()) ? 0 : 3);
+    }
+    ::close(fds[1]);
+    std::string failedAt;
+    char buffer[512];
+    for (ssize_t n; (n = ::read(fds[0], buffer, sizeof buffer)) != 0;) {
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) break;
+        failedAt.append(buffer, size_t(n));
+    }
+    ::close(fds[0]);
+    int status = 0;
+    while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (WIFSIGNALED(status))
+        throw UserError("MED file '" + path + "' is damaged: the HDF5 library fails on its structure (signal " +
+                        std::to_string(WTERMSIG(status)) + " while reading it)");
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        throw UserError("MED file '" + path + "' is damaged: its structure cannot be read to the end");
+    if (failedAt == "/") throw UserError("MED file '" + path + "' is damaged: its structure cannot be read to the end");
+    if (!failedAt.empty()) throw UserError("MED file '" + path + "' is damaged: its object /" + failedAt + " cannot be read");
 }
 
 MedFile::MedFile(const std::string& path, med_access_mode mode) : path_(path) {

@@ -60,7 +60,7 @@ TEST(MedCli, BadMeshFilesAndGroupsStopTheRunWithStatus1) {
     r = runComm(dir, "DEBUT()\nMA=LIRE_MAILLAGE(FORMAT='MED',\n   NOM_MED='MAIL')\nFIN()\n", ma::test::astest("ssnv511a.mmed"));
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.mess.find("line 2): NOM_MED='MAIL': MED file"), std::string::npos) << r.mess;
-    EXPECT_NE(r.mess.find("meshes in the file: 'MAILLAGE'"), std::string::npos);
+    EXPECT_NE(r.mess.find("meshes in the file: 'MA'"), std::string::npos);
 
     r = runComm(dir,
                 "DEBUT()\nMA=LIRE_MAILLAGE(FORMAT='MED')\nMA=DEFI_GROUP(reuse=MA, MAILLAGE=MA,\n"

@@ -94,11 +94,56 @@ TEST(FeClassical, DispatchCoversTheModelDimensionsOnly) {
     EXPECT_EQ(seen, 14);
 }
 
-TEST(FeClassical, InvertedCellIsReportedAsByTheGeneralPath) {
+// A clockwise cell is the same element as its counter-clockwise numbering (|det J|, code_aster's
+// dfdm2d): the same weights and, node for node, the same gradients, on both paths.
+TEST(FeClassical, ClockwiseCellIsTheSameElement) {
     Mesh mesh;
     mesh.dim = 2;
-    for (const auto& x : {std::array<double, 3>{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}}) mesh.addNode(x);
+    for (const auto& x : {std::array<double, 3>{0, 0, 0}, {0.2, 1.1, 0}, {1.3, 0.9, 0}, {1, -0.1, 0}}) mesh.addNode(x);
     mesh.addCell(CellType::QUAD4, std::vector<int>{0, 1, 2, 3});  // clockwise: negative Jacobian
+    mesh.addCell(CellType::QUAD4, std::vector<int>{0, 3, 2, 1});  // the same cell, counter-clockwise
+    classical::Geometry<classical::Quad4> g[2];
+    PointGeometry geo[2];
+    for (int c = 0; c < 2; ++c) {
+        classical::computeGeometry(classical::quad4(), mesh, c, g[c]);
+        ElementIntegration ei;
+        classicalIntegration(mesh, c, false, ei);
+        computePointGeometry(mesh, c, 2, false, ei, geo[c]);
+    }
+    const int nodeOf[2][4] = {{0, 1, 2, 3}, {0, 3, 2, 1}};
+    double area[2] = {0, 0};
+    for (int c = 0; c < 2; ++c)
+        for (int p = 0; p < 4; ++p) {
+            EXPECT_GT(g[c].weight[p], 0.0);
+            EXPECT_EQ(g[c].weight[p], geo[c].weight[p]);
+            area[c] += g[c].weight[p];
+        }
+    EXPECT_NEAR(area[0], area[1], 1e-15);
+    EXPECT_NEAR(area[0], 1.14, 1e-14);  // shoelace formula of the four corners
+    // Gradients of the same node at the same physical point: point p of cell 0 is, in cell 1's
+    // reference frame, the point with xi and eta swapped (rule points are symmetric).
+    for (int p = 0; p < 4; ++p) {
+        int q = -1;
+        for (int k = 0; k < 4; ++k)
+            if (std::abs(g[1].xyz[k][0] - g[0].xyz[p][0]) < 1e-14 && std::abs(g[1].xyz[k][1] - g[0].xyz[p][1]) < 1e-14) q = k;
+        ASSERT_GE(q, 0);
+        EXPECT_NEAR(g[0].weight[p], g[1].weight[q], 1e-15);
+        for (int a = 0; a < 4; ++a)
+            for (int b = 0; b < 4; ++b)
+                if (nodeOf[0][a] == nodeOf[1][b])
+                    for (int i = 0; i < 2; ++i) EXPECT_NEAR(g[0].grad[p][a][i], g[1].grad[q][b][i], 1e-14);
+    }
+}
+
+// A degenerate cell (its nodes aligned: det J round-off for its size) is an error naming the
+// cell, the same on both paths; a thin but well-shaped one is not.
+TEST(FeClassical, DegenerateCellIsReportedAsByTheGeneralPath) {
+    Mesh mesh;
+    mesh.dim = 2;
+    for (const auto& x : {std::array<double, 3>{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {1, 1e-20, 0}, {0, 1e-9, 0}, {1, 1e-9, 0}})
+        mesh.addNode(x);
+    mesh.addCell(CellType::QUAD4, std::vector<int>{0, 1, 2, 3});  // flat: aligned nodes
+    mesh.addCell(CellType::QUAD4, std::vector<int>{0, 1, 5, 4});  // 1 x 1e-9: thin, not degenerate
     ElementIntegration ei;
     classicalIntegration(mesh, 0, false, ei);
     PointGeometry geo;
@@ -106,8 +151,11 @@ TEST(FeClassical, InvertedCellIsReportedAsByTheGeneralPath) {
     classical::Geometry<classical::Quad4> g;
     const std::string fixed = errorOf([&] { classical::computeGeometry(classical::quad4(), mesh, 0, g); });
     EXPECT_EQ(fixed, general);
-    EXPECT_EQ(fixed, "cell M1 (QUAD4) has a negative Jacobian (-2.500e-01): the cell is degenerate or its nodes are not "
-                     "in code_aster's order");
+    EXPECT_EQ(fixed.substr(0, 45), "cell M1 (QUAD4) is degenerate: its Jacobian (") << fixed;
+    EXPECT_EQ(errorOf([&] { classical::computeGeometry(classical::quad4(), mesh, 1, g); }), "no error");
+    double area = 0.0;
+    for (double w : g.weight) area += w;
+    EXPECT_NEAR(area, 1e-9, 1e-24);
 }
 
 TEST(FeClassical, ThreadsDoNotChangeABit) {
@@ -156,15 +204,15 @@ TEST(FeClassical, ThreadsDoNotChangeABit) {
     }
 }
 
-// Inverted cells in both workers' shares of a batch: the error names the first inverted cell in
-// element order, as the serial loop does, whatever the number of threads.
+// Degenerate cells in both workers' shares of a batch: the error names the first one in element
+// order, as the serial loop does, whatever the number of threads.
 TEST(FeClassical, ThreadedLoopsReportTheFirstBadElement) {
     using namespace fetest;
     msg().setEcho(false);
     auto mesh = planeMesh(100, 100, false);  // 10000 QUAD4: two workers when 2 threads are allowed
-    for (int cell : {7000, 5000}) {  // reverse the node order of two cells: negative Jacobians
+    for (int cell : {7000, 5000}) {  // collapse two cells onto their first edge: zero Jacobians
         auto* nodes = mesh->connectivity.data() + mesh->cellOffsets[cell];
-        std::swap(nodes[1], nodes[3]);
+        nodes[2] = nodes[1], nodes[3] = nodes[0];
     }
     auto model = affeModele(mesh, "D_PLAN", {"ALL"});
     auto mat = material(model, 2.0e5, 0.3);
@@ -185,7 +233,7 @@ TEST(FeClassical, ThreadedLoopsReportTheFirstBadElement) {
             problem.solveIncrement(0.0, conv);
             ADD_FAILURE() << threads << " thread(s): no error";
         } catch (const NumericalError& e) {
-            EXPECT_EQ(std::string(e.what()).substr(0, 38), "cell M5001 (QUAD4) has a negative Jaco") << threads;
+            EXPECT_EQ(std::string(e.what()).substr(0, 33), "cell M5001 (QUAD4) is degenerate:") << threads;
         }
     }
     setWorkerCount(0);

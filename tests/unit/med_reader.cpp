@@ -76,18 +76,22 @@ TEST(MedReader, AstestQuad4MeshAsREADME) {
     const auto path = test::astest("ssnv511a.mmed");
     med::MeshReadReport rep;
     auto m = med::readMesh(path, "", &rep);
-    EXPECT_EQ(rep.meshName, "MAILLAGE");
+    EXPECT_EQ(rep.meshName, "MA");  // code_aster's own file (written by code_aster 11 from GIBI)
     EXPECT_EQ(m->dim, 2);
     EXPECT_EQ(m->nodeCount(), 36);
     EXPECT_EQ(countType(*m, CellType::QUAD4), 25);
     EXPECT_EQ(countType(*m, CellType::SEG2), 20);
-    // SEG2 (102) come first in code_aster numbering, then QUAD4 (204).
+    // SEG2 (102) come first in code_aster numbering (cells in file order, by MED type: lrmmma),
+    // then QUAD4 (204); the names are the file's: the quadrangles are M1..M25.
     EXPECT_EQ(m->cellTypes.front(), CellType::SEG2);
-    EXPECT_EQ(m->cellNames[20], "M21");
+    EXPECT_EQ(m->cellNames[0], "M26");
+    EXPECT_EQ(m->cellNames[20], "M1");
     EXPECT_EQ(m->nodeNames[35], "N36");
     for (const char* g : {"LB", "LD", "LH", "LG"}) EXPECT_EQ(m->cellGroups.get(g).size(), 5u) << g;
     EXPECT_EQ(m->cellGroups.get("SURF").size(), 25u);
-    EXPECT_EQ(m->nodeGroups.size(), 0u);
+    EXPECT_EQ(m->cellGroups.get("MAILLE").size(), 25u);
+    EXPECT_EQ(m->nodeGroups.size(), 4u);  // P1..P4, one corner node each
+    for (const char* g : {"P1", "P2", "P3", "P4"}) EXPECT_EQ(m->nodeGroups.get(g).size(), 1u) << g;
     expectSameAsProbe(*m, path);
 }
 
@@ -101,7 +105,7 @@ TEST(MedReader, AstestTria3Mesh) {
     expectSameAsProbe(*m, path);
 }
 
-TEST(MedReader, AstestHexa8MeshesWithPositiveJacobian) {
+TEST(MedReader, AstestHexa8MeshesAreLeftHanded) {
     for (const char* file : {"ssnv511c.mmed", "ssnv511g.mmed"}) {
         const auto path = test::astest(file);
         auto m = med::readMesh(path);
@@ -112,7 +116,8 @@ TEST(MedReader, AstestHexa8MeshesWithPositiveJacobian) {
         EXPECT_EQ(m->cellGroups.get("SD").size(), 5u);
         EXPECT_EQ(m->cellGroups.get("SG").size(), 5u);
         expectSameAsProbe(*m, path);
-        // Internal (VTK-like) order: the tetra (1,2,4,5) of every hexahedron is positive.
+        // code_aster's own meshes: in its node order the tetra (1,2,4,5) of every hexahedron is
+        // negative (left-handed cells, which code_aster integrates with |det J|).
         for (int c = 0; c < m->cellCount(); ++c) {
             if (m->cellTypes[c] != CellType::HEXA8) continue;
             auto n = m->cellNodes(c);
@@ -120,7 +125,7 @@ TEST(MedReader, AstestHexa8MeshesWithPositiveJacobian) {
             for (int k : {0, 1, 3, 4}) t.addNode(m->coords[n[k]]);
             std::vector<int> tet{0, 1, 2, 3};
             t.addCell(CellType::TETRA4, tet);
-            EXPECT_GT(signedVolumeTetra(t, 0), 0.0) << file << " cell " << c;
+            EXPECT_LT(signedVolumeTetra(t, 0), 0.0) << file << " cell " << c;
         }
     }
     auto g = med::readMesh(test::astest("ssnv511g.mmed"));
@@ -145,8 +150,8 @@ TEST(MedReader, AstestTetra4MeshesArePositive) {
             }
     }
     auto h = med::readMesh(test::astest("ssnv511h.mmed"));
-    EXPECT_EQ(countType(*h, CellType::TRIA3), 148);
-    EXPECT_EQ(h->cellGroups.get("ENV").size(), 148u);
+    EXPECT_EQ(countType(*h, CellType::TRIA3), 216);
+    EXPECT_EQ(h->cellGroups.get("ENV").size(), 216u);
 }
 
 TEST(MedReader, QuadraticCellsAndMultiGroupFamiliesFromAnotherWriter) {
@@ -250,10 +255,10 @@ TEST(MedReader, BadInputIsAClearUserError) {
     std::filesystem::copy_file(test::astest("ssnv511a.mmed"), damaged);
     std::filesystem::permissions(damaged, std::filesystem::perms::owner_write, std::filesystem::perm_options::add);
     test::runCommand("/usr/bin/python3 -c \"import h5py; f = h5py.File('" + damaged +
-                     "', 'r+'); del f['/ENS_MAA/MAILLAGE/-0000000000000000001-0000000000000000001/MAI/QU4/NOD']\"");
+                     "', 'r+'); del f['/ENS_MAA/MA/-0000000000000000001-0000000000000000001/MAI/QU4/NOD']\"");
     EXPECT_EQ(errorOf([&] { med::readMesh(damaged); }),
               "MED file '" + damaged + "' is damaged or truncated: cannot read the connectivity of the QUAD4 cells "
-              "of mesh 'MAILLAGE'");
+              "of mesh 'MA'");
 
     auto empty = dir + "/empty.med";
     {
@@ -264,7 +269,7 @@ TEST(MedReader, BadInputIsAClearUserError) {
 
     EXPECT_EQ(errorOf([&] { med::readMesh(test::astest("ssnv511a.mmed"), "MAIL"); }),
               "NOM_MED='MAIL': MED file '" + test::astest("ssnv511a.mmed") +
-                  "' has no mesh of that name; meshes in the file: 'MAILLAGE'");
+                  "' has no mesh of that name; meshes in the file: 'MA'");
     std::filesystem::remove_all(dir);
 }
 

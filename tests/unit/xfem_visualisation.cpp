@@ -7,7 +7,10 @@
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
+#include "fe/ElementKinematics.hpp"
+#include "med_io/MedReader.hpp"
 #include "mesh/ShapeFunctions.hpp"
+#include "xfem/CellGeometry.hpp"
 #include "xfem/Visualisation.hpp"
 #include "xfem_test_meshes.hpp"
 
@@ -197,5 +200,49 @@ TEST(XfemVisualisation, Ssnv511aMeshAndLips) {
             // A model on another mesh is refused.
             EXPECT_THROW(visualisationResult(res, model), UserError);
         }
+    }
+}
+
+// POST_MAIL_XFEM on code_aster's own meshes (left-handed HEXA8 in ssnv511c): the uncut cells are
+// copied with their node order, every sub-cell is written positive (counter-clockwise, right-handed
+// in code_aster's node order) whatever its parent's orientation, and the cells tile the domain.
+TEST(XfemVisualisation, SubcellsArePositiveOnCodeAstersLeftHandedMeshes) {
+    msg().setEcho(false);
+    for (const char* file : {"ssnv511a.mmed", "ssnv511c.mmed", "ssnv511d.mmed"}) {
+        auto mesh = med::readMesh(std::string(MINIASTER_SHARED_DIR) + "/astest/" + file);
+        auto j = xfemtest::ssnv511Cracks(mesh);
+        auto model = std::make_shared<Model>(xfemtest::model(mesh));
+        auto xm = std::make_shared<XfemModel>(*model, std::vector<std::shared_ptr<const Crack>>{j.fiss1, j.fiss2, j.fiss3});
+        model->enrichment = xm;
+        const Visualisation v = buildVisualisation(*model, *xm);
+        const Mesh& vm = *v.mesh;
+        double total = 0.0;
+        int subcells = 0;
+        for (int c = 0; c < vm.cellCount(); ++c) {
+            if (cellDimension(vm.cellTypes[c]) != model->dim) continue;
+            std::vector<std::array<double, 3>> x;
+            for (int n : vm.cellNodes(c)) x.push_back(vm.coords[n]);
+            if (v.cells[c].original >= 0) {
+                const auto in = mesh->cellNodes(v.cells[c].original);
+                for (size_t k = 0; k < x.size(); ++k) EXPECT_EQ(x[k], mesh->coords[in[k]]) << file << " " << vm.cellNames[c];
+                continue;
+            }
+            ++subcells;
+            const double measure = xfem::simplexMeasure(model->dim, x);
+            EXPECT_GT(measure, 0.0) << file << " " << vm.cellNames[c];
+            total += measure;
+        }
+        EXPECT_GT(subcells, 20) << file;
+        // The X-FEM parents' measure: their elements' weights (|det J|, whatever the orientation).
+        double parents = 0.0;
+        for (int c : xm->xfemCells()) {
+            if (cellDimension(mesh->cellTypes[c]) != model->dim) continue;
+            ElementIntegration ei;
+            classicalIntegration(*mesh, c, false, ei);
+            PointGeometry geo;
+            computePointGeometry(*mesh, c, model->dim, false, ei, geo);
+            for (double w : geo.weight) parents += w;
+        }
+        EXPECT_NEAR(total, parents, 1e-12 * parents) << file;
     }
 }

@@ -2,8 +2,9 @@
 // The ssnv511-family meshes with N divisions per side (tools/ssnv511_mesh, tests): the rectangle
 // [xmin,xmax]x[ymin,ymax] (default the square [-5,5]^2), 2D QUAD4 or TRIA3 with the edge groups
 // LB/LD/LH/LG (SEG2, counter-clockwise), or one layer zmin<=z<=zmax of HEXA8 or TETRA4 with VOLU
-// and the outward skin ENV (HEXA8 also SD/SG, the faces x=xmax and x=xmin). Same group names,
-// numbering and orientation conventions as the meshes of ../shared/astest (docs/med.md).
+// and the outward skin ENV (HEXA8 also SD/SG, the faces x=xmax and x=xmin). The same cells and
+// group names as code_aster's ssnv511 meshes in ../shared/astest, numbered row by row and with
+// right-handed volumes (code_aster's HEXA8 files are left-handed; docs/med.md).
 #include <memory>
 #include <string>
 
