@@ -1,5 +1,6 @@
 #pragma once
-// code_aster concept type names used by the catalog (Concept::typeName() of the C++ classes).
+// code_aster concept type names used by the catalog (Concept::typeName() of the C++ classes), and
+// the one-line keywords many commands share.
 #include <string>
 #include <vector>
 

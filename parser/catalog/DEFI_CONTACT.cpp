@@ -1,44 +1,11 @@
-// X-FEM commands: DEFI_FISS_XFEM, MODI_MODELE_XFEM, DEFI_CONTACT (FORMULATION='XFEM'),
-// POST_MAIL_XFEM, POST_CHAM_XFEM (xfem_spec §1, §3, §5, §6, §7; commands_spec §8.8, §9).
-#include "parser/catalog/Types.hpp"
+// DEFI_CONTACT: X-FEM contact zones (FORMULATION='XFEM', frictionless).
+#include "parser/catalog/common/Types.hpp"
 
 namespace ma::catalog_entries {
 using namespace cata;
 using namespace cata::types;
 
-void addXfemCommands(Catalog& c) {
-    c.add(cmd("DEFI_FISS_XFEM", kCrack)
-              .keywords(join({
-                  {CO("MAILLAGE", {kMesh}),
-                   CO("MODELE", {kModel}),  // legacy (≤ 2013-10): the mesh is taken from the model
-                   TXM("TYPE_DISCONTINUITE").into({"FISSURE", "INTERFACE", "COHESIF"}).notSupported({"COHESIF"})
-                       .def("FISSURE"),
-                   TXM("CHAM_DISCONTINUITE").into({"DEPL"}).def("DEPL"),
-                   fact("DEFI_FISS").mandatory().keywords(join({
-                       {CO("FONC_LN", kAnyFunction).mandatory(), CO("FONC_LT", kAnyFunction)},
-                       unsupported({"GROUP_MA_FISS", "GROUP_MA_FOND", "FORM_FISS", "CHAM_NO_LSN", "CHAM_NO_LST",
-                                    "GROUP_MA_BORD_FISS"},
-                                   "level sets are given by FONC_LN (and FONC_LT)"),
-                   })),
-                   fact("JONCTION").keywords({CO("FISSURE", {kCrack}).many().mandatory(),
-                                              R("POINT").max(3).mandatory()}),
-                   info({1, 2, 3})},
-                  unsupported({"GROUP_MA_ENRI", "TYPE_ENRI_FOND", "RAYON_ENRI", "NB_COUCHES", "FOND_FISS",
-                               "FISS_INITIALE", "ORIE_FOND", "CHAM_NO_FOND"},
-                              "miniaster enriches every node cut by the interface"),
-              }))
-              .rules({unParmi({"MAILLAGE", "MODELE"})}));
-
-    c.add(cmd("MODI_MODELE_XFEM", kModel).keywords({
-        CO("MODELE_IN", {kModel}).mandatory(), CO("FISSURE", {kCrack}).many().mandatory().max(99),
-        // 'P1P1' (≤ 2013-10) and 'OUI' (2013-10 … 2014-10) are older names of 'STANDARD'.
-        TXM("CONTACT").into({"SANS", "STANDARD", "MORTAR", "P1P1", "OUI"}).notSupported({"MORTAR"})
-            .legacy({{"P1P1", "STANDARD"}, {"OUI", "STANDARD"}}).def("SANS"),
-        TXM("PRETRAITEMENTS").into({"AUTO", "SANS", "FORCE"}).def("AUTO"),
-        TXM("DECOUPE_FACETTE").into({"DEFAUT", "SOUS_ELEMENTS"}).def("DEFAUT"),
-        info({1, 2, 3}),
-    }));
-
+void DEFI_CONTACT(Catalog& c) {
     c.add(cmd("DEFI_CONTACT", kContact).keywords(join({
         {CO("MODELE", {kModel}).mandatory(),
          TXM("FORMULATION").into({"DISCRETE", "CONTINUE", "XFEM", "LIAISON_UNIL"})
@@ -76,16 +43,6 @@ void addXfemCommands(Catalog& c) {
         unsupported({"ALGO_RESO_CONT", "ALGO_RESO_GEOM", "LISSAGE", "VERI_NORM", "STRATEGIE", "RESI_PRIMAL"},
                     "options of the DISCRETE/CONTINUE formulations"),
     })));
-
-    c.add(cmd("POST_MAIL_XFEM", kMesh).keywords({
-        CO("MODELE", {kModel}).mandatory(), TXM("PREF_NOEUD_X").def("NX"), TXM("PREF_NOEUD_M").def("NM"),
-        TXM("PREF_NOEUD_P").def("NP"), TXM("PREF_MAILLE_X").def("MX"), TXM("PREF_GROUP_CO").def("NFISSU"), titre(),
-        info()}));
-
-    // The result has the type of RESULTAT (evol_elas or evol_noli).
-    c.add(cmd("POST_CHAM_XFEM")
-              .keywords({CO("MODELE_VISU", {kModel}).mandatory(), CO("RESULTAT", kAnyResult).mandatory(), info()})
-              .resultFrom([](const KeywordSet& kw) { return kw.rawObject("RESULTAT")->typeName(); }));
 }
 
 }  // namespace ma::catalog_entries
