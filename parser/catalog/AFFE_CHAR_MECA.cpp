@@ -3,8 +3,6 @@
 #include "parser/catalog/common/Blocks.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 void AFFE_CHAR_MECA(Catalog& c) {
     auto meca = loadKeywords(false);

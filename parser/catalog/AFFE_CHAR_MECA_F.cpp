@@ -2,8 +2,6 @@
 #include "parser/catalog/common/Blocks.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 void AFFE_CHAR_MECA_F(Catalog& c) {
     c.add(cmd("AFFE_CHAR_MECA_F", kMechanicalLoad)

@@ -2,8 +2,6 @@
 #include "parser/catalog/common/Types.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 void AFFE_MATERIAU(Catalog& c) {
     c.add(cmd("AFFE_MATERIAU", kMaterialField)

@@ -2,8 +2,6 @@
 #include "parser/catalog/common/Blocks.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 void CALC_TABLE(Catalog& c) {
     c.add(cmd("CALC_TABLE", kTable)

@@ -2,8 +2,6 @@
 #include "parser/catalog/common/Types.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 void CREA_CHAMP(Catalog& c) {
     c.add(cmd("CREA_CHAMP")

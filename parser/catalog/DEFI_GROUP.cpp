@@ -2,8 +2,6 @@
 #include "parser/catalog/common/Types.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 namespace {
 const std::vector<std::string> kCellTypes{"TOUT", "0D", "1D", "2D", "3D", "POI1", "SEG2", "SEG3", "TRIA3",

@@ -2,8 +2,6 @@
 #include "parser/catalog/common/Types.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 void DEFI_LIST_REEL(Catalog& c) {
     c.add(cmd("DEFI_LIST_REEL", kRealList)

@@ -2,8 +2,6 @@
 #include "parser/catalog/common/Types.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 void FORMULE(Catalog& c) {
     // Other keywords are the objects of the evaluation context (depx=depx...).

@@ -2,8 +2,6 @@
 #include "parser/catalog/common/Types.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 void IMPR_RESU(Catalog& c) {
     c.add(cmd("IMPR_RESU").keywords(join({

@@ -2,8 +2,6 @@
 #include "parser/catalog/common/Types.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 void LIRE_MAILLAGE(Catalog& c) {
     c.add(cmd("LIRE_MAILLAGE", kMesh).keywords(join({

@@ -2,8 +2,6 @@
 #include "parser/catalog/common/Blocks.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 void MECA_STATIQUE(Catalog& c) {
     c.add(cmd("MECA_STATIQUE", kStaticResult)

@@ -2,8 +2,6 @@
 #include "parser/catalog/common/Types.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 void MODI_MODELE_XFEM(Catalog& c) {
     c.add(cmd("MODI_MODELE_XFEM", kModel).keywords({

@@ -2,8 +2,6 @@
 #include "parser/catalog/common/Types.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 void POST_CHAM_XFEM(Catalog& c) {
     // The result has the type of RESULTAT (evol_elas or evol_noli).

@@ -2,8 +2,6 @@
 #include "parser/catalog/common/Types.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 void POST_MAIL_XFEM(Catalog& c) {
     c.add(cmd("POST_MAIL_XFEM", kMesh).keywords({

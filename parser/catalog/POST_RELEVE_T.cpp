@@ -2,8 +2,6 @@
 #include "parser/catalog/common/Types.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 void POST_RELEVE_T(Catalog& c) {
     c.add(cmd("POST_RELEVE_T", kTable).keywords({

@@ -3,8 +3,6 @@
 #include "parser/catalog/common/Types.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 void PRE_GIBI(Catalog& c) {
     c.add(cmd("PRE_GIBI").keywords({I("UNITE_GIBI").def(19), I("UNITE_MAILLAGE").def(20)}));

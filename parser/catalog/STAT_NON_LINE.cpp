@@ -2,8 +2,6 @@
 #include "parser/catalog/common/Blocks.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 void STAT_NON_LINE(Catalog& c) {
     c.add(cmd("STAT_NON_LINE", kNonlinearResult)

@@ -2,8 +2,6 @@
 #include "parser/catalog/common/Blocks.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 void TEST_TABLE(Catalog& c) {
     c.add(cmd("TEST_TABLE")

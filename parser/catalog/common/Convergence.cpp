@@ -2,8 +2,6 @@
 #include "parser/catalog/common/Blocks.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 Keyword convergence() {
     return fact("CONVERGENCE").byDefault().keywords(join({

@@ -2,8 +2,6 @@
 #include "parser/catalog/common/Blocks.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 Keyword excit(bool nonlinear) {
     std::vector<Keyword> k{CO("CHARGE", {kMechanicalLoad}).mandatory(), CO("FONC_MULT", kAnyFunction)};

@@ -2,8 +2,6 @@
 #include "parser/catalog/common/Blocks.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 namespace {
 // A load value: a real (AFFE_CHAR_MECA) or a function/formula (AFFE_CHAR_MECA_F).

@@ -36,3 +36,9 @@ inline Keyword titre() { return TXM("TITRE").many(); }
 inline Keyword critere() { return TXM("CRITERE").into({"RELATIF", "ABSOLU"}).def("RELATIF"); }
 
 }  // namespace ma::cata::types
+
+// The catalog files are written in the builders' vocabulary (parser/Catalog.hpp, the types above).
+namespace ma::catalog_entries {
+using namespace cata;
+using namespace cata::types;
+}  // namespace ma::catalog_entries
