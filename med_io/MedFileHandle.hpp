@@ -9,7 +9,7 @@ namespace ma::med {
 
 // HDF5 prints its error stack on stderr by default; MED calls that fail are reported by us as
 // UserError, so the spew is switched off once per process (OpenMPI HDF5 flavour: the one
-// libmedC is linked with, see ../shared/docs/med_notes.md §2).
+// libmedC is linked with, see docs/med.md "One HDF5 in the process").
 void silenceHdf5Errors();
 
 // Checks that `path` is an existing, readable MED file before the MED library touches it

@@ -10,33 +10,16 @@
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
+#include "parser/catalog/Commands.hpp"
 
 namespace ma {
 
-// Entries, grouped by area (parser/catalog/*.cpp). Explicit calls, not static registration:
+// One file per command (parser/catalog/Commands.hpp). Explicit calls, not static registration:
 // ma_parser is a static library and unreferenced registration objects would be dropped.
-namespace catalog_entries {
-void addSupervisionCommands(Catalog&);
-void addMeshCommands(Catalog&);
-void addModelCommands(Catalog&);
-void addLoadCommands(Catalog&);
-void addSolverCommands(Catalog&);
-void addXfemCommands(Catalog&);
-void addPostCommands(Catalog&);
-void addTableCommands(Catalog&);
-}  // namespace catalog_entries
-
 const Catalog& Catalog::instance() {
     static const Catalog catalog = [] {
         Catalog c;
-        catalog_entries::addSupervisionCommands(c);
-        catalog_entries::addMeshCommands(c);
-        catalog_entries::addModelCommands(c);
-        catalog_entries::addLoadCommands(c);
-        catalog_entries::addSolverCommands(c);
-        catalog_entries::addXfemCommands(c);
-        catalog_entries::addPostCommands(c);
-        catalog_entries::addTableCommands(c);
+        for (const auto& file : catalog_entries::commandFiles()) file.add(c);
         return c;
     }();
     return catalog;

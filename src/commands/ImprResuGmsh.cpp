@@ -1,5 +1,5 @@
 // IMPR_RESU FORMAT='GMSH': result fields as gmsh views, the way code_aster's irgmsh chooses them
-// (../shared/docs/gmsh_output_format.md §2-§3, docs/visualisation.md). IMPR_RESU (ImprResu.cpp)
+// (docs/visualisation.md, "IMPR_RESU FORMAT='GMSH'"). IMPR_RESU (ImprResu.cpp)
 // hands the call over here.
 #include "commands/ImprResuGmsh.hpp"
 

@@ -6,7 +6,7 @@
 
 namespace ma::tables {
 
-// The occurrence's keywords are those of the catalog's filterKeywords (parser/catalog/Tables.cpp),
+// The occurrence's keywords are those of the catalog's tableFilter (parser/catalog/common/TableRows.cpp),
 // defaults filled. CRITERE and PRECISION exist only where the comparison has a tolerance (EQ, and
 // NE in CALC_TABLE); the filter does not read them elsewhere.
 inline RowFilter rowFilter(const KeywordSet& occ) {

@@ -32,8 +32,9 @@ struct ContactZone {
     ContactIntegration integration;  // INTEGRATION, ORDRE_INT: the rule of the zone's facets
 };
 
-// Nitsche parameters (docs/contact.md): gamma = gammaZero * E * |facets| / |adjacent blocks|,
-// theta = 1 (symmetric).
+// Nitsche parameters (docs/contact.md, "Parameters"): at each facet pair gamma = gammaZero * M *
+// |shared interface| / (|block -| + |block +|), M the larger P-wave modulus lambda + 2 mu of the two
+// sides; theta = 1 (symmetric).
 struct NitscheParameters {
     double gammaZero = 100.0;
     double theta = 1.0;

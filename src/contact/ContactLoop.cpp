@@ -200,9 +200,8 @@ ContactIncrementReport solveIncrementWithContact(MechanicalProblem& problem, Con
                 const std::string hint = penaltySingularHint(terms);
                 // A penalty far above the stiffness shows as a singular system or as a Newton loop that
                 // cannot reduce its residual below the round-off of the penalised terms.
-                const std::string what = e.what();
-                const bool singular = what.find("singular system") != std::string::npos;
-                const bool stalled = what.find("Newton did not converge") != std::string::npos &&
+                const bool singular = dynamic_cast<const SingularSystemError*>(&e) != nullptr;
+                const bool stalled = dynamic_cast<const NonConvergenceError*>(&e) != nullptr &&
                                      penaltyStrength(terms).second > kPenaltyRoundOffRatio;
                 if (hint.empty() || (!singular && !stalled)) throw;
                 throw NumericalError(fmt::format("{}\n{}", e.what(), hint));

@@ -27,7 +27,7 @@ namespace {
 const QuadratureRule& facetRule(int dim, const ContactIntegration& integration) {
     const std::string family = facetFamily(dim, integration);
     if (family.empty())
-        throw std::logic_error("contact: no facet family for INTEGRATION='" + integration.scheme + "'");
+        throw InternalError("contact: no facet family for INTEGRATION='" + integration.scheme + "'");
     return quadratureRule(dim == 2 ? CellType::SEG2 : CellType::TRIA3, family);
 }
 
@@ -157,7 +157,7 @@ void addSideTerms(const xfem::XfemModel& xm, const Model& model, const DofNumber
             for (int c = 0; c < dim; ++c) {
                 const int d = numbering.dof(nodes[a], k, c);
                 if (d < 0)
-                    throw std::logic_error(fmt::format("contact: node {} has no slot {}", mesh.nodeNames[nodes[a]], k));
+                    throw InternalError(fmt::format("contact: node {} has no slot {}", mesh.nodeNames[nodes[a]], k));
                 auto it = std::find(cp.dofs.begin(), cp.dofs.end(), d);
                 size_t i = static_cast<size_t>(it - cp.dofs.begin());
                 if (it == cp.dofs.end()) {

@@ -24,11 +24,24 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// The linear solver found the system singular (null pivot, NaN or Inf in the solution): callers
+// that know a likely cause (e.g. ContactLoop, a huge penalty) add it by this type.
+class SingularSystemError : public NumericalError {
+public:
+    using NumericalError::NumericalError;
+};
+
+// The Newton loop did not reach its criteria within ITER_GLOB_MAXI iterations (ARRET='OUI').
+class NonConvergenceError : public NumericalError {
+public:
+    using NumericalError::NumericalError;
+};
+
 // A bug of miniaster, not of the input: e.g. a command reads a keyword that the call does not
 // hold and the catalog gives no default for. Reported as an internal error naming the command.
-class InternalError : public std::logic_error {
+class InternalError : public std::runtime_error {
 public:
-    using std::logic_error::logic_error;
+    using std::runtime_error::runtime_error;
 };
 
 }  // namespace ma

@@ -14,7 +14,7 @@ namespace ma::mpi {
 
 namespace {
 
-enum Kind { kUser = 1, kNotImplemented, kNumerical, kInternal, kOutOfMemory, kOther };
+enum Kind { kUser = 1, kNotImplemented, kNumerical, kInternal, kOutOfMemory, kOther, kSingular, kNonConvergence };
 
 }  // namespace
 
@@ -136,6 +136,10 @@ Failure failureOf(const std::exception_ptr& error) {
         return {kUser, e.what()};
     } catch (const NotImplemented& e) {
         return {kNotImplemented, e.what()};
+    } catch (const SingularSystemError& e) {
+        return {kSingular, e.what()};
+    } catch (const NonConvergenceError& e) {
+        return {kNonConvergence, e.what()};
     } catch (const NumericalError& e) {
         return {kNumerical, e.what()};
     } catch (const InternalError& e) {
@@ -154,6 +158,8 @@ void rethrow(const Failure& f) {
         case kUser: throw UserError(f.text);
         case kNotImplemented: throw NotImplemented(f.text);
         case kNumerical: throw NumericalError(f.text);
+        case kSingular: throw SingularSystemError(f.text);
+        case kNonConvergence: throw NonConvergenceError(f.text);
         case kInternal: throw InternalError(f.text);
         case kOutOfMemory: throw std::bad_alloc();
         default: throw std::runtime_error(f.text);

@@ -6,6 +6,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "core/Mpi.hpp"
 #include "fe/ElasticityKernels.hpp"
@@ -129,7 +130,7 @@ void addAdditionalTangent(const DirichletConstraints& c, const AdditionalTerms& 
         const int row = c.eq[i], col = c.eq[j];
         if (row < 0 || col < 0) return;
         const long long k = matrix.find(row, col);
-        if (k < 0) throw std::logic_error(fmt::format("additional term ({}, {}) outside the declared couplings", i, j));
+        if (k < 0) throw InternalError(fmt::format("additional term ({}, {}) outside the declared couplings", i, j));
         matrix.values[k] += v;
     });
 }

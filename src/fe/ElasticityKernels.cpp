@@ -45,7 +45,7 @@ void localDofs(const Mesh& mesh, const DofNumbering& numbering, const ElementInt
             for (int c = 0; c < dim; ++c) {
                 const int d = numbering.dof(nodes[a], k, c);
                 if (d < 0)
-                    throw std::logic_error(fmt::format("element on cell {} uses slot {} of node {}, which the "
+                    throw InternalError(fmt::format("element on cell {} uses slot {} of node {}, which the "
                                                        "enrichment does not give to the node",
                                                        mesh.cellNames[ei.cell], k, mesh.nodeNames[nodes[a]]));
                 dofs.push_back(d);

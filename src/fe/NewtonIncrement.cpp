@@ -104,7 +104,7 @@ void reportNonConvergence(double inst, const ConvergenceOptions& options, const 
         "Newton did not converge at INST {} in {} iterations (ITER_GLOB_MAXI): RESI_GLOB_RELA = {:.3e}, "
         "RESI_GLOB_MAXI = {:.3e}",
         inst, options.maxIterations, report.relativeResidual, report.maxResidual);
-    if (options.stopOnFailure) throw NumericalError(text);
+    if (options.stopOnFailure) throw NonConvergenceError(text);
     msg().alarm("MECANONLINE5_37", text + "\nARRET='NON': the computation goes on with this unconverged state.");
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // Threads for the element and pattern loops. Work is split into contiguous ranges in a fixed way and
-// every floating-point sum keeps its serial order (see MechanicalProblem::assembleMatrix), so the
+// every floating-point sum keeps its serial order (see batchedElementLoop, fe/ElementLoop.hpp), so the
 // results do not depend on the number of threads.
 //
 // Number of threads: OMP_NUM_THREADS when set (the variable OpenBLAS and code_aster's OpenMP parts

@@ -1,7 +1,7 @@
 #pragma once
 // gmsh's legacy list-based post-processing format ("POS ASCII", versions 1.0 and 1.2), as
-// code_aster's IMPR_RESU FORMAT='GMSH' writes it (../shared/docs/gmsh_output_format.md §4-§5,
-// docs/visualisation.md): one $View per field component (scalar), vector or tensor; every
+// code_aster's IMPR_RESU FORMAT='GMSH' writes it (docs/visualisation.md, "File layout" and the
+// cells): one $View per field component (scalar), vector or tensor; every
 // record carries its nodes' coordinates, so the file needs no mesh.
 #include <string>
 #include <vector>

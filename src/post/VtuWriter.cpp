@@ -66,7 +66,7 @@ std::string xmlEscaped(const std::string& s) {
 std::string dataArray(const DataArray& a, size_t tuples) {
     const int nc = std::max(a.componentCount(), 1);
     if (a.values.size() != tuples * size_t(nc))
-        throw std::logic_error(fmt::format("VTU array {}: {} values for {} tuples of {}", a.name, a.values.size(), tuples, nc));
+        throw InternalError(fmt::format("VTU array {}: {} values for {} tuples of {}", a.name, a.values.size(), tuples, nc));
     std::string head = fmt::format(R"(        <DataArray type="{}" Name="{}" NumberOfComponents="{}")",
                                    a.flag ? "UInt8" : "Float64", xmlEscaped(a.name), nc);
     for (int c = 0; c < a.componentCount() && nc > 1; ++c)

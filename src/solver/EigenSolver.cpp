@@ -39,15 +39,15 @@ protected:
                                      "') met a null pivot. Likely cause: " + options_.singularHint + ".";
         if (spd_) {
             ldlt_.compute(M);
-            if (ldlt_.info() != Eigen::Success) throw NumericalError(singular);
+            if (ldlt_.info() != Eigen::Success) throw SingularSystemError(singular);
             const auto& d = ldlt_.vectorD();
             const double dmax = d.cwiseAbs().maxCoeff();
             const double dmin = d.cwiseAbs().minCoeff();
             if (options_.nprec >= 0 && (dmin <= std::pow(10.0, -options_.nprec) * dmax || d.minCoeff() <= 0.0))
-                throw NumericalError(fmt::format("{} (smallest/largest pivot {:.3e}/{:.3e})", singular, dmin, dmax));
+                throw SingularSystemError(fmt::format("{} (smallest/largest pivot {:.3e}/{:.3e})", singular, dmin, dmax));
         } else {
             lu_.compute(M);
-            if (lu_.info() != Eigen::Success) throw NumericalError(singular + " " + lu_.lastErrorMessage());
+            if (lu_.info() != Eigen::Success) throw SingularSystemError(singular + " " + lu_.lastErrorMessage());
         }
         msg().infof("    Eigen {} ({}): n = {}, non-zeros = {}, ordering {}, factorisation {:.3f} s",
                     spd_ ? "SimplicialLDLT" : "SparseLU", options_.method, A.rows, A.nonZeros(),

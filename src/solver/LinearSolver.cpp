@@ -39,7 +39,7 @@ double relativeResidual(const CsrMatrix& A, std::span<const double> x, std::span
 void checkSolution(std::span<const double> x, double residual, const SolverOptions& options) {
     for (double v : x)
         if (!std::isfinite(v))
-            throw NumericalError("singular system: the solution contains NaN or Inf. Likely cause: " +
+            throw SingularSystemError("singular system: the solution contains NaN or Inf. Likely cause: " +
                                  options.singularHint + ".");
     if (!std::isfinite(residual) || residual > 1e-6)
         msg().alarm("FACTOR_57", fmt::format("The relative residual of the linear solve is {:.3e}: the solution "

@@ -262,14 +262,14 @@ private:
                 continue;
             }
             if (code == -10 || code == -6)
-                throw NumericalError(fmt::format("singular system: {}. Likely cause: {}.",
+                throw SingularSystemError(fmt::format("singular system: {}. Likely cause: {}.",
                                                  mumpsErrorText(code, id_.infog[1]), options_.singularHint));
             if (code < 0) throw NumericalError(mumpsErrorText(code, id_.infog[1]));
             break;
         }
         factorisationSeconds_ = secondsSince(t0);
         if (options_.nprec >= 0 && id_.infog[27] > 0)
-            throw NumericalError(fmt::format(
+            throw SingularSystemError(fmt::format(
                 "singular system: MUMPS found {} null pivot(s) (pivot below 1e-{} of the norm of the diagonal-scaled matrix, "
                 "SOLVEUR/NPREC={}). Likely cause: {}.",
                 id_.infog[27], options_.nprec, options_.nprec, options_.singularHint));

@@ -31,7 +31,7 @@ std::string lowestRuleOfDegree(CellType simplex, int degree) {
     };
     if (simplex == CellType::TRIA3) return pick(triangle);
     if (simplex == CellType::TETRA4) return pick(tetrahedron);
-    throw std::logic_error("lowestRuleOfDegree: " + cellTypeName(simplex) + " is not a volume sub-cell");
+    throw InternalError("lowestRuleOfDegree: " + cellTypeName(simplex) + " is not a volume sub-cell");
 }
 
 std::string subcellRule(const SubcellKind& kind, int degree) {

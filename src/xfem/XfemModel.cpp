@@ -346,7 +346,7 @@ std::vector<std::pair<int, int>> XfemModel::inactiveSlots() const {
 }
 
 void XfemModel::integration(int cell, ElementIntegration& out) const {
-    if (!isEnriched(cell)) throw std::logic_error("XfemModel::integration on a classical cell");
+    if (!isEnriched(cell)) throw InternalError("XfemModel::integration on a classical cell");
     const CellCut& cut = cuts_[cellIndex_[cell]];
     const auto nodes = mesh_->cellNodes(cell);
     const int nn = static_cast<int>(nodes.size());

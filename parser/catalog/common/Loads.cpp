@@ -1,10 +1,7 @@
-// Mechanical loads: AFFE_CHAR_MECA (real values) and AFFE_CHAR_MECA_F (functions of X, Y, Z, INST)
-// (commands_spec §8.5, xfem_spec §4).
-#include "parser/catalog/Types.hpp"
+// The keywords of AFFE_CHAR_MECA and AFFE_CHAR_MECA_F: imposed dofs, pressure, volume force.
+#include "parser/catalog/common/Blocks.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 namespace {
 // A load value: a real (AFFE_CHAR_MECA) or a function/formula (AFFE_CHAR_MECA_F).
@@ -16,6 +13,8 @@ const std::vector<std::string> kDofs{"DX",  "DY",  "DZ",  "H1X", "H1Y", "H1Z", "
 std::vector<Keyword> cellSelection() {
     return {TXM("TOUT").into({"OUI"}), TXM("GROUP_MA").many(), TXM("MAILLE").many()};
 }
+
+}  // namespace
 
 std::vector<Keyword> loadKeywords(bool functions) {
     std::vector<Keyword> ddl = join({{TXM("TOUT").into({"OUI"}), TXM("GROUP_MA").many(), TXM("MAILLE").many(),
@@ -46,20 +45,6 @@ std::vector<Keyword> loadKeywords(bool functions) {
                      "FORCE_ELEC", "INTE_ELEC", "CHAMNO_IMPO", "VECT_ASSE", "SIGM_INTERNE", "CARA_ELEM"},
                     "miniaster loads are DDL_IMPO, PRES_REP and FORCE_INTERNE"),
     });
-}
-}  // namespace
-
-void addLoadCommands(Catalog& c) {
-    auto meca = loadKeywords(false);
-    // Legacy X-FEM syntax (≤ 2013): interface relations and contact given as a load.
-    meca.push_back(yesNo("LIAISON_XFEM"));
-    meca.push_back(CO("CONTACT_XFEM", {kContact}));
-    c.add(cmd("AFFE_CHAR_MECA", kMechanicalLoad)
-              .keywords(std::move(meca))
-              .rules({auMoinsUn({"DDL_IMPO", "PRES_REP", "FORCE_INTERNE", "LIAISON_XFEM", "CONTACT_XFEM"})}));
-    c.add(cmd("AFFE_CHAR_MECA_F", kMechanicalLoad)
-              .keywords(loadKeywords(true))
-              .rules({auMoinsUn({"DDL_IMPO", "PRES_REP", "FORCE_INTERNE"})}));
 }
 
 }  // namespace ma::catalog_entries

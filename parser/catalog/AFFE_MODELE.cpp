@@ -1,11 +1,9 @@
-// Model and material commands: AFFE_MODELE, DEFI_MATERIAU, AFFE_MATERIAU (commands_spec §8.3, §8.4).
-#include "parser/catalog/Types.hpp"
+// AFFE_MODELE: model: a modelling (D_PLAN, C_PLAN, 3D) assigned to cells.
+#include "parser/catalog/common/Types.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
-void addModelCommands(Catalog& c) {
+void AFFE_MODELE(Catalog& c) {
     c.add(cmd("AFFE_MODELE", kModel).keywords(join({
         {CO("MAILLAGE", {kMesh}).mandatory(),
          fact("AFFE").many().mandatory().keywords({
@@ -28,30 +26,6 @@ void addModelCommands(Catalog& c) {
         unsupported({"PARTITION", "GRANDEUR_CARA", "AFFE_SOUS_STRUC", "VERI_NORM_IFS"},
                     "sub-structures and characteristic sizes are not modelled"),
     })));
-
-    c.add(cmd("DEFI_MATERIAU", kMaterial)
-              .keywords(join({
-                  {fact("ELAS").keywords({R("E").mandatory().range(0, {}), R("NU").mandatory().range(-1.0, 0.5),
-                                          R("RHO"), R("ALPHA"), R("AMOR_ALPHA"), R("AMOR_BETA"), R("AMOR_HYST")}),
-                   info()},
-                  unsupported({"ELAS_FO", "ELAS_ORTH", "ELAS_ISTR", "ECRO_LINE", "ECRO_PUIS", "TRACTION", "THER",
-                               "THER_NL", "BETON_DOUBLE_DP", "ENDO_ORTH_BETON", "MAZARS", "RUPT_FRAG", "VISCOCHAB",
-                               "CIN1_CHAB", "ROUSSELIER", "DIS_CONTACT", "ELAS_HYPER"},
-                              "miniaster models linear isotropic elasticity (ELAS) only"),
-              }))
-              .rules({auMoinsUn({"ELAS"})}));
-
-    c.add(cmd("AFFE_MATERIAU", kMaterialField)
-              .keywords(join({
-                  {CO("MAILLAGE", {kMesh}), CO("MODELE", {kModel}),
-                   fact("AFFE").many().mandatory().keywords({
-                       TXM("TOUT").into({"OUI"}), TXM("GROUP_MA").many(), TXM("MAILLE").many(),
-                       CO("MATER", {kMaterial}).mandatory().max(30)})
-                       .rules({unParmi({"TOUT", "GROUP_MA", "MAILLE"})}),
-                   info()},
-                  unsupported({"AFFE_VARC", "AFFE_COMPOR", "AFFE_NOM_VARC"}, "command variables (temperature...)"),
-              }))
-              .rules({auMoinsUn({"MAILLAGE", "MODELE"})}));
 }
 
 }  // namespace ma::catalog_entries

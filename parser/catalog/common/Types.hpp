@@ -1,5 +1,6 @@
 #pragma once
-// code_aster concept type names used by the catalog (Concept::typeName() of the C++ classes).
+// code_aster concept type names used by the catalog (Concept::typeName() of the C++ classes), and
+// the one-line keywords many commands share.
 #include <string>
 #include <vector>
 
@@ -35,3 +36,9 @@ inline Keyword titre() { return TXM("TITRE").many(); }
 inline Keyword critere() { return TXM("CRITERE").into({"RELATIF", "ABSOLU"}).def("RELATIF"); }
 
 }  // namespace ma::cata::types
+
+// The catalog files are written in the builders' vocabulary (parser/Catalog.hpp, the types above).
+namespace ma::catalog_entries {
+using namespace cata;
+using namespace cata::types;
+}  // namespace ma::catalog_entries

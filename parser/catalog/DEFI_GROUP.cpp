@@ -1,9 +1,7 @@
-// Mesh commands: LIRE_MAILLAGE, DEFI_GROUP, MODI_MAILLAGE (commands_spec §7.7, §8.1, §8.2).
-#include "parser/catalog/Types.hpp"
+// DEFI_GROUP: cell and node groups created or destroyed in a mesh.
+#include "parser/catalog/common/Types.hpp"
 
 namespace ma::catalog_entries {
-using namespace cata;
-using namespace cata::types;
 
 namespace {
 const std::vector<std::string> kCellTypes{"TOUT", "0D", "1D", "2D", "3D", "POI1", "SEG2", "SEG3", "TRIA3",
@@ -50,16 +48,7 @@ Keyword creaGroupNo() {
 }
 }  // namespace
 
-void addMeshCommands(Catalog& c) {
-    c.add(cmd("LIRE_MAILLAGE", kMesh).keywords(join({
-        {I("UNITE").def(20),
-         TXM("FORMAT").into({"ASTER", "GIBI", "GMSH", "IDEAS", "MED"}).notSupported({"GIBI", "GMSH", "IDEAS"}).def("MED"),
-         bloc(when("FORMAT", {"MED"}), {TXM("NOM_MED"), I("INFO_MED").intoInt({1, 2, 3}).def(1)}),
-         fact("VERI_MAIL").byDefault().keywords({yesNo("VERIF").def("OUI"), R("APLAT").def(1.0e-3)}),
-         info()},
-        unsupported({"PARTITIONNEUR", "LECTURE_PARALLELE"}, "parallel reading"),
-    })));
-
+void DEFI_GROUP(Catalog& c) {
     c.add(cmd("DEFI_GROUP", kMesh)
               .reuse(Reuse::Mandatory)
               .keywords({CO("MAILLAGE", {kMesh}).mandatory(), creaGroupMa(), creaGroupNo(),
@@ -67,20 +56,6 @@ void addMeshCommands(Catalog& c) {
                          fact("DETR_GROUP_NO").many().keywords({TXM("NOM").many().mandatory()}),
                          yesNo("ALARME").def("OUI"), info()})
               .rules({auMoinsUn({"CREA_GROUP_MA", "CREA_GROUP_NO", "DETR_GROUP_MA", "DETR_GROUP_NO"})}));
-
-    c.add(cmd("MODI_MAILLAGE", kMesh)
-              .reuse(Reuse::Mandatory)
-              .keywords(join({
-                  {CO("MAILLAGE", {kMesh}).mandatory(),
-                   fact("ORIE_PEAU_2D").many().keywords({TXM("GROUP_MA").many().mandatory(), TXM("GROUP_MA_SURF").many()}),
-                   fact("ORIE_PEAU_3D").many().keywords({TXM("GROUP_MA").many().mandatory(), TXM("GROUP_MA_VOLU").many()}),
-                   info()},
-                  unsupported({"ORIE_FISSURE", "ORIE_NORM_COQUE", "ORIE_LIGNE", "DEFORME", "TRANSLATION", "ROTATION",
-                               "MODI_MAILLE", "ECHELLE", "PLAQ_TUBE", "TUBE_COUDE", "SYMETRIE", "ORIE_SHB",
-                               "ABSC_CURV", "MODI_BASE"},
-                              "miniaster only orients skins (ORIE_PEAU_2D / ORIE_PEAU_3D)"),
-              }))
-              .rules({auMoinsUn({"ORIE_PEAU_2D", "ORIE_PEAU_3D"})}));
 }
 
 }  // namespace ma::catalog_entries

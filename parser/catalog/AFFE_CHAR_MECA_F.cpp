@@ -1,0 +1,12 @@
+// AFFE_CHAR_MECA_F: mechanical load whose values are functions of X, Y, Z, INST.
+#include "parser/catalog/common/Blocks.hpp"
+
+namespace ma::catalog_entries {
+
+void AFFE_CHAR_MECA_F(Catalog& c) {
+    c.add(cmd("AFFE_CHAR_MECA_F", kMechanicalLoad)
+              .keywords(loadKeywords(true))
+              .rules({auMoinsUn({"DDL_IMPO", "PRES_REP", "FORCE_INTERNE"})}));
+}
+
+}  // namespace ma::catalog_entries

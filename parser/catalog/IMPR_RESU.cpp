@@ -1,0 +1,34 @@
+// IMPR_RESU: results written as MED or GMSH files.
+#include "parser/catalog/common/Types.hpp"
+
+namespace ma::catalog_entries {
+
+void IMPR_RESU(Catalog& c) {
+    c.add(cmd("IMPR_RESU").keywords(join({
+        {TXM("FORMAT").into({"MED", "RESULTAT", "ASTER", "IDEAS", "GMSH", "CASTEM"})
+             .notSupported({"RESULTAT", "ASTER", "IDEAS", "CASTEM"}).def("MED"),
+         bloc(when("FORMAT", {"MED"}), {I("UNITE").def(80)}),
+         bloc(when("FORMAT", {"GMSH"}), {I("UNITE").def(37), R("VERSION").def(1.2)}),
+         yesNo("PROC0").def("OUI"),
+         fact("RESU").many().mandatory().keywords(join({
+             {CO("MAILLAGE", {kMesh}), CO("RESULTAT", kAnyResult), CO("CHAM_GD", kAnyField),
+              bloc(whenPresent("RESULTAT"),
+                   {TXM("NOM_CHAM").many(), I("NUME_ORDRE").many(), TXM("TOUT_ORDRE").into({"OUI"}), R("INST").many(),
+                    critere(), R("PRECISION").def(1.0e-6)},
+                   {exclus({"NUME_ORDRE", "TOUT_ORDRE", "INST"})}),
+              TXM("NOM_CMP").many(), yesNo("INFO_MAILLAGE").def("NON"),
+              // FORMAT='GMSH' only (IMPR_RESU refuses them with MED).
+              TXM("TYPE_CHAM").into({"SCALAIRE", "VECT_2D", "VECT_3D", "TENS_2D", "TENS_3D"}),
+              TXM("GROUP_MA").many(), TXM("MAILLE").many()},
+             unsupported({"GROUP_NO", "NOEUD", "NOM_CHAM_MED", "CARA_ELEM", "IMPR_NOM_VARI",
+                          "PARTIE", "LIST_INST", "LIST_ORDRE", "FREQ", "NUME_MODE", "TOUT_CHAM", "NOM_CMP_MED",
+                          "NOM_RESU_MED", "VALE_MAX", "VALE_MIN", "SOUS_TITRE", "FORMAT_R"},
+                         "not supported by miniaster's MED output"),
+         }))
+             .rules({auMoinsUn({"MAILLAGE", "RESULTAT", "CHAM_GD"}), exclus({"RESULTAT", "CHAM_GD"})}),
+         info()},
+        unsupported({"VERSION_MED", "MODELE", "CONCEPT"}, "not supported by miniaster's MED output"),
+    })));
+}
+
+}  // namespace ma::catalog_entries

@@ -1,0 +1,33 @@
+// SOLVEUR: the linear solver (MUMPS by default, MULT_FRONT, LDLT; PETSC and GCPC accepted by the syntax).
+#include "parser/catalog/common/Blocks.hpp"
+
+namespace ma::catalog_entries {
+
+Keyword solveur() {
+    return fact("SOLVEUR").byDefault().keywords({
+        TXM("METHODE").into({"MUMPS", "MULT_FRONT", "LDLT", "PETSC", "GCPC"}).def("MUMPS"),
+        bloc(when("METHODE", {"MUMPS"}),
+             {TXM("RENUM").into({"AUTO", "AMD", "AMF", "PORD", "METIS", "QAMD", "SCOTCH", "PARMETIS", "PTSCOTCH"})
+                  .def("AUTO"),
+              I("NPREC").def(8), I("PCENT_PIVOT").def(20).range(0, {}), R("RESI_RELA"),
+              TXM("ELIM_LAGR").into({"NON", "OUI", "LAGR2"}),
+              TXM("TYPE_RESOL").into({"AUTO", "NONSYM", "SYMGEN", "SYMDEF"}).def("AUTO"),
+              TXM("PRETRAITEMENTS").into({"SANS", "AUTO"}).def("AUTO"),
+              TXM("POSTTRAITEMENTS").into({"SANS", "AUTO", "FORCE", "MINI"}).def("AUTO"),
+              TXM("GESTION_MEMOIRE").into({"AUTO", "IN_CORE", "OUT_OF_CORE", "EVAL"}).def("AUTO"),
+              TXM("ACCELERATION").into({"AUTO", "FR", "FR+", "FR++", "LR", "LR+", "LR++"}).def("AUTO"),
+              R("LOW_RANK_SEUIL").def(0.0).range(0.0, {}),  // only with ACCELERATION='LR*', refused
+              yesNo("MATR_DISTRIBUEE"), yesNo("STOP_SINGULIER").def("OUI")}),
+        bloc(when("METHODE", {"MULT_FRONT"}),
+             {TXM("RENUM").into({"MD", "MDA", "METIS"}).def("METIS"), I("NPREC").def(8),
+              yesNo("STOP_SINGULIER").def("OUI"), TXM("ELIM_LAGR").into({"NON", "OUI"})}),
+        bloc(when("METHODE", {"LDLT"}),
+             {TXM("RENUM").into({"RCMK", "SANS"}).def("RCMK"), I("NPREC").def(8), yesNo("STOP_SINGULIER").def("OUI"),
+              TXM("ELIM_LAGR").into({"NON", "OUI"})}),
+        bloc(when("METHODE", {"PETSC", "GCPC"}),
+             {TXM("PRE_COND"), TXM("ALGORITHME"), TXM("RENUM"), R("RESI_RELA").def(1.0e-6), I("NMAX_ITER").def(0),
+              I("REAC_PRECOND"), R("PCENT_PIVOT"), TXM("ELIM_LAGR").into({"NON", "OUI"})}),
+    });
+}
+
+}  // namespace ma::catalog_entries
