@@ -130,8 +130,9 @@ TEST(FeClassical, ClockwiseCellIsTheSameElement) {
         EXPECT_NEAR(g[0].weight[p], g[1].weight[q], 1e-15);
         for (int a = 0; a < 4; ++a)
             for (int b = 0; b < 4; ++b)
-                if (nodeOf[0][a] == nodeOf[1][b])
+                if (nodeOf[0][a] == nodeOf[1][b]) {
                     for (int i = 0; i < 2; ++i) EXPECT_NEAR(g[0].grad[p][a][i], g[1].grad[q][b][i], 1e-14);
+                }
     }
 }
 
