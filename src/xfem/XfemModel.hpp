@@ -59,6 +59,10 @@ public:
     // element, §3.9, and slots dropped by the conditioning guard, §3.10): (node, slot k >= 1).
     // The engine must fix these unknowns to 0 (eliminate them like DDL_IMPO = 0).
     std::vector<std::pair<int, int>> inactiveSlots() const override;
+    // DDL_IMPO of a displacement component (DX, DY, DZ, HkX ...) on this model: the relations of
+    // xfemDirichlet (xfem/XfemDirichlet.hpp); other components are left to the load engine.
+    bool imposeDof(const Model& model, const ImposedDof& request, double inst,
+                   std::vector<LinearRelation>& out) const override;
 
     // Data access.
     const std::vector<std::shared_ptr<const Crack>>& cracks() const { return cracks_; }
