@@ -107,6 +107,8 @@ public:
 private:
     void buildCells(const Model& model);
     void buildNodes();
+    void supportDomains(int node, const std::vector<int>& active, std::vector<std::vector<signed char>>& keys,
+                        std::vector<double>& weight, double& total, std::vector<double>& grad) const;
     std::vector<signed char> domainKeyFor(const std::vector<int>& active, const CellCut& cut, int s) const;
 
     std::shared_ptr<const Mesh> mesh_;
