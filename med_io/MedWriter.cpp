@@ -92,6 +92,88 @@ double measureAt(CellType type, std::span<const std::array<double, 3>> nodes, co
     return jacobianMeasure(J, referenceDimension(type));
 }
 
+// Cells, type by type in increasing MED code: connectivity, names, numbers, families.
+template <class Fail>
+void writeCells(med_idt fid, const Mesh& mesh, const std::string& meshName, const Families& cellFam, const Fail& fail) {
+    for (CellType type : typesInOrder(mesh)) {
+        const int nper = nodeCount(type);
+        std::vector<med_int> conn, fam, num;
+        std::string names;
+        std::vector<int> med(static_cast<size_t>(nper));
+        for (int c = 0; c < mesh.cellCount(); ++c) {
+            if (mesh.cellTypes[size_t(c)] != type) continue;
+            internalToMed(type, mesh.cellNodes(c), med);
+            for (int v : med) conn.push_back(v + 1);
+            fam.push_back(cellFam.number[size_t(c)]);
+            num.push_back(c + 1);
+            names += padName(mesh.cellNames[size_t(c)], MED_SNAME_SIZE);
+        }
+        const med_int n = med_int(fam.size());
+        const auto geo = med_geometry_type(type);
+        const std::string what = "the " + cellTypeName(type) + " cells";
+        if (MEDmeshElementConnectivityWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, 0.0, MED_CELL, geo, MED_NODAL,
+                                         MED_FULL_INTERLACE, n, conn.data()) < 0 ||
+            MEDmeshEntityNameWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, MED_CELL, geo, n, names.c_str()) < 0 ||
+            MEDmeshEntityNumberWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, MED_CELL, geo, n, num.data()) < 0 ||
+            MEDmeshEntityFamilyNumberWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, MED_CELL, geo, n, fam.data()) < 0)
+            fail(what);
+    }
+}
+
+// Families: names are the joined group names (<= 64 characters) or FAMILLE_<n>.
+template <class Fail>
+void writeFamilies(med_idt fid, const std::string& meshName, const Families& fams, const Fail& fail) {
+    std::set<std::string> used;
+    for (const auto& [num, groups] : fams.list) {
+        std::string name = joinedFamilyName(groups);
+        if (name.size() > MED_NAME_SIZE || used.count(name)) name = fmt::format("FAMILLE_{}", std::abs(num));
+        for (int k = 2; used.count(name); ++k) name = fmt::format("FAMILLE_{}_{}", std::abs(num), k);
+        used.insert(name);
+        std::string g;
+        for (const auto& s : groups) g += padName(s, MED_LNAME_SIZE);
+        if (MEDfamilyCr(fid, meshName.c_str(), name.c_str(), num, med_int(groups.size()), g.c_str()) < 0)
+            fail("family " + name);
+    }
+}
+
+// Index of each cell among the cells of its type, as written by writeMesh.
+std::vector<int> ranksInType(const Mesh& mesh) {
+    std::vector<int> rankInType(size_t(mesh.cellCount()));
+    std::map<CellType, int> seen;
+    for (int c = 0; c < mesh.cellCount(); ++c) rankInType[size_t(c)] = seen[mesh.cellTypes[size_t(c)]]++;
+    return rankInType;
+}
+
+// Elements of a Gauss field grouped by cell type, then by their exact set of reference points
+// (one MED localisation each). Elements of a type without a reference element are counted in
+// `skipped` and left out, with an alarm.
+std::map<CellType, std::map<std::vector<double>, std::vector<int>>> elementsByLocalisation(
+    const std::string& fieldName, const GaussField& field, int& skipped) {
+    const Mesh& mesh = *field.mesh;
+    std::map<CellType, std::map<std::vector<double>, std::vector<int>>> groups;
+    std::set<std::string> skippedTypes;
+    for (int e = 0; e < int(field.cells.size()); ++e) {
+        const CellType type = mesh.cellTypes[size_t(field.cells[size_t(e)])];
+        if (!hasShapeFunctions(type)) {
+            ++skipped;
+            skippedTypes.insert(cellTypeName(type));
+            continue;
+        }
+        std::vector<double> key;
+        for (int p = field.pointOffsets[size_t(e)]; p < field.pointOffsets[size_t(e) + 1]; ++p)
+            key.insert(key.end(), field.pointRefCoords[size_t(p)].begin(), field.pointRefCoords[size_t(p)].end());
+        groups[type][key].push_back(e);
+    }
+    if (skipped > 0) {
+        std::string list;
+        for (const auto& t : skippedTypes) list += " " + t;
+        msg().alarm("MED_ELGA", fmt::format("field {}: {} elements of types{} have no reference element "
+                                            "in miniaster; their values are not printed",
+                                            fieldName, skipped, list));
+    }
+    return groups;
+}
+
 }  // namespace
 
 struct MedWriter::Impl {
@@ -186,6 +268,24 @@ struct MedWriter::Impl {
                        units.c_str(), "", meshName.c_str()) < 0)
             throwMedError("MED file '" + target.finalPath() + "': cannot create field " + fieldName);
     }
+    // The localisation of `npt` points of a `type` cell (lkey: type, points and weights), written
+    // the first time it is met.
+    std::string localisation(CellType type, int npt, const std::string& lkey, const std::vector<med_float>& refNodes,
+                             const std::vector<med_float>& pts, const std::vector<med_float>& weights) {
+        if (auto found = localizations.find(lkey); found != localizations.end()) return found->second;
+        std::string loc;
+        for (int k = int(usedLocalizationNames.size()) + 1;; ++k) {
+            loc = fmt::format("LOC_{}_{}PG_{}", cellTypeName(type), npt, k);
+            if (!usedLocalizationNames.count(loc)) break;
+        }
+        if (MEDlocalizationWr(fid(), loc.c_str(), med_geometry_type(type), referenceDimension(type), refNodes.data(),
+                              MED_FULL_INTERLACE, npt, pts.data(), weights.data(), MED_NO_INTERPOLATION,
+                              MED_NO_MESH_SUPPORT) < 0)
+            throwMedError("MED file '" + target.finalPath() + "': cannot write localisation " + loc);
+        usedLocalizationNames.insert(loc);
+        localizations.emplace(lkey, loc);
+        return loc;
+    }
 };
 
 MedWriter::MedWriter(const std::string& path, bool append) : impl_(std::make_unique<Impl>(path)) {
@@ -256,46 +356,10 @@ bool MedWriter::writeMesh(const Mesh& mesh, const std::string& meshName) {
 
     // Cells, type by type in increasing MED code.
     const Families cellFam = buildFamilies(mesh.cellCount(), mesh.cellGroups, -1);
-    for (CellType type : typesInOrder(mesh)) {
-        const int nper = nodeCount(type);
-        std::vector<med_int> conn, fam, num;
-        std::string names;
-        std::vector<int> med(static_cast<size_t>(nper));
-        for (int c = 0; c < mesh.cellCount(); ++c) {
-            if (mesh.cellTypes[size_t(c)] != type) continue;
-            internalToMed(type, mesh.cellNodes(c), med);
-            for (int v : med) conn.push_back(v + 1);
-            fam.push_back(cellFam.number[size_t(c)]);
-            num.push_back(c + 1);
-            names += padName(mesh.cellNames[size_t(c)], MED_SNAME_SIZE);
-        }
-        const med_int n = med_int(fam.size());
-        const auto geo = med_geometry_type(type);
-        const std::string what = "the " + cellTypeName(type) + " cells";
-        if (MEDmeshElementConnectivityWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, 0.0, MED_CELL, geo, MED_NODAL,
-                                         MED_FULL_INTERLACE, n, conn.data()) < 0 ||
-            MEDmeshEntityNameWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, MED_CELL, geo, n, names.c_str()) < 0 ||
-            MEDmeshEntityNumberWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, MED_CELL, geo, n, num.data()) < 0 ||
-            MEDmeshEntityFamilyNumberWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, MED_CELL, geo, n, fam.data()) < 0)
-            fail(what);
-    }
+    writeCells(fid, mesh, meshName, cellFam, fail);
 
-    // Families: names are the joined group names (<= 64 characters) or FAMILLE_<n>.
-    auto writeFamilies = [&](const Families& fams) {
-        std::set<std::string> used;
-        for (const auto& [num, groups] : fams.list) {
-            std::string name = joinedFamilyName(groups);
-            if (name.size() > MED_NAME_SIZE || used.count(name)) name = fmt::format("FAMILLE_{}", std::abs(num));
-            for (int k = 2; used.count(name); ++k) name = fmt::format("FAMILLE_{}_{}", std::abs(num), k);
-            used.insert(name);
-            std::string g;
-            for (const auto& s : groups) g += padName(s, MED_LNAME_SIZE);
-            if (MEDfamilyCr(fid, meshName.c_str(), name.c_str(), num, med_int(groups.size()), g.c_str()) < 0)
-                fail("family " + name);
-        }
-    };
-    writeFamilies(nodeFam);
-    writeFamilies(cellFam);
+    writeFamilies(fid, meshName, nodeFam, fail);
+    writeFamilies(fid, meshName, cellFam, fail);
     if (MEDfamilyCr(fid, meshName.c_str(), "FAMILLE_ZERO", 0, 0, "") < 0) fail("family 0");
     return true;
 }
@@ -348,36 +412,9 @@ int MedWriter::writeGaussField(const std::string& fieldName, const std::string& 
         field.pointRefCoords.size() != npoints || field.values.size() != npoints * size_t(nc))
         throw UserError("field " + fieldName + " is incomplete (integration points without reference coordinates or "
                         "values); it cannot be printed with its MED localisations");
-    // Index of each cell among the cells of its type, as written by writeMesh.
-    std::vector<int> rankInType(size_t(mesh.cellCount()));
-    {
-        std::map<CellType, int> seen;
-        for (int c = 0; c < mesh.cellCount(); ++c) rankInType[size_t(c)] = seen[mesh.cellTypes[size_t(c)]]++;
-    }
-    const int nelem = int(field.cells.size());
-    // Elements grouped by cell type, then by their exact set of reference points.
-    std::map<CellType, std::map<std::vector<double>, std::vector<int>>> groups;
+    const std::vector<int> rankInType = ranksInType(mesh);
     int skipped = 0;
-    std::set<std::string> skippedTypes;
-    for (int e = 0; e < nelem; ++e) {
-        const CellType type = mesh.cellTypes[size_t(field.cells[size_t(e)])];
-        if (!hasShapeFunctions(type)) {
-            ++skipped;
-            skippedTypes.insert(cellTypeName(type));
-            continue;
-        }
-        std::vector<double> key;
-        for (int p = field.pointOffsets[size_t(e)]; p < field.pointOffsets[size_t(e) + 1]; ++p)
-            key.insert(key.end(), field.pointRefCoords[size_t(p)].begin(), field.pointRefCoords[size_t(p)].end());
-        groups[type][key].push_back(e);
-    }
-    if (skipped > 0) {
-        std::string list;
-        for (const auto& t : skippedTypes) list += " " + t;
-        msg().alarm("MED_ELGA", fmt::format("field {}: {} elements of types{} have no reference element "
-                                            "in miniaster; their values are not printed",
-                                            fieldName, skipped, list));
-    }
+    const auto groups = elementsByLocalisation(fieldName, field, skipped);
     if (groups.empty()) return skipped;
     impl_->ensureField(fieldName, meshName, field.components);
 
@@ -412,21 +449,7 @@ int MedWriter::writeGaussField(const std::string& fieldName, const std::string& 
             }
             std::string lkey = fmt::format("{}|{}|", int(type), fmt::join(key, ","));
             lkey += fmt::format("{}", fmt::join(weights, ","));
-            std::string loc;
-            auto found = impl_->localizations.find(lkey);
-            if (found != impl_->localizations.end()) {
-                loc = found->second;
-            } else {
-                for (int k = int(impl_->usedLocalizationNames.size()) + 1;; ++k) {
-                    loc = fmt::format("LOC_{}_{}PG_{}", cellTypeName(type), npt, k);
-                    if (!impl_->usedLocalizationNames.count(loc)) break;
-                }
-                if (MEDlocalizationWr(impl_->fid(), loc.c_str(), geo, rdim, refNodes.data(), MED_FULL_INTERLACE, npt,
-                                      pts.data(), weights.data(), MED_NO_INTERPOLATION, MED_NO_MESH_SUPPORT) < 0)
-                    throwMedError("MED file '" + impl_->target.finalPath() + "': cannot write localisation " + loc);
-                impl_->usedLocalizationNames.insert(loc);
-                impl_->localizations.emplace(lkey, loc);
-            }
+            const std::string loc = impl_->localisation(type, npt, lkey, refNodes, pts, weights);
             // Values: elements in MED order within the type.
             std::vector<int> sorted = elems;
             std::sort(sorted.begin(), sorted.end(), [&](int a, int b) {

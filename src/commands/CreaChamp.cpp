@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "core/Messages.hpp"
-#include "fields/Fields.hpp"
+#include "fe/Result.hpp"
 #include "parser/CommandRegistry.hpp"
 
 namespace ma {

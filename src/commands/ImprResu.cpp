@@ -10,7 +10,7 @@
 #include "core/Messages.hpp"
 #include "core/Mpi.hpp"
 #include "core/Units.hpp"
-#include "fields/Fields.hpp"
+#include "fe/Result.hpp"
 #include "commands/ImprResuGmsh.hpp"
 #include "med_io/MedWriter.hpp"
 #include "parser/CommandRegistry.hpp"

@@ -15,7 +15,7 @@
 #include "core/Messages.hpp"
 #include "core/Mpi.hpp"
 #include "core/Units.hpp"
-#include "fields/Fields.hpp"
+#include "fe/Result.hpp"
 #include "post/GmshWriter.hpp"
 
 namespace ma {

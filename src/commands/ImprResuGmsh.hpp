@@ -2,7 +2,7 @@
 // IMPR_RESU FORMAT='GMSH' (ImprResuGmsh.cpp), called by IMPR_RESU's entry in ImprResu.cpp.
 #include <vector>
 
-#include "fields/Fields.hpp"
+#include "fe/Result.hpp"
 #include "parser/CommandRegistry.hpp"
 
 namespace ma {

@@ -6,10 +6,10 @@
 #include <chrono>
 
 #include "commands/LegacyContactLoad.hpp"
+#include "commands/MechanicalResult.hpp"
 #include "commands/MechanicsKeywords.hpp"
 #include "core/Messages.hpp"
 #include "fe/MechanicalProblem.hpp"
-#include "fields/Fields.hpp"
 #include "parser/CommandRegistry.hpp"
 
 namespace ma {
@@ -36,26 +36,15 @@ ConceptPtr mecaStatique(const KeywordSet& kw, CommandContext& ctx) {
     const auto loads = mechanics::loadCases(kw);
     mechanics::refuseContactLoads(loads, "MECA_STATIQUE");
     MechanicalProblem problem(model, material, loads, mechanics::solverOptions(kw, ctx.info));
-    auto result = std::make_shared<Result>("evol_elas");
-    result->mesh = model->mesh;
-    result->model = model;
-    result->material = material;
-    ConvergenceOptions linear;  // one solve, no convergence test: the problem is linear
-    linear.maxIterations = 0;
-    linear.resiGlobMaxi = -1.0;
-    linear.resiGlobRela = -1.0;
+    auto result = mechanics::mechanicalResult("evol_elas", model, material);
+    const ConvergenceOptions linear;  // one solve, no convergence test: the problem is linear
     const bool stresses = kw.text("OPTION") == "SIEF_ELGA";
     int order = 0;
     for (double inst : instants) {
         problem.resetState();
         const auto report = problem.solveIncrement(inst, linear);
         if (inst == instants.back()) problem.releaseFactorisation();  // no solve follows: SIEF_ELGA without the factors
-        ResultStep step;
-        step.order = ++order;
-        step.inst = inst;
-        step.nodalFields.emplace_back("DEPL", problem.displacementField());
-        if (stresses) step.gaussFields.emplace_back("SIEF_ELGA", problem.stressField());
-        result->steps.push_back(std::move(step));
+        mechanics::archiveState(*result, problem, ++order, inst, true, stresses);
         msg().infof("    NUME_ORDRE {} INST {}: max |R| after the solve = {:.3e} (relative {:.3e})", order, inst,
                     report.maxResidual, report.relativeResidual);
     }

@@ -1,5 +1,5 @@
 // MODI_MODELE_XFEM: a copy of MODELE_IN whose elements cut by the interfaces become X-FEM
-// elements (xfem_spec §3). Also installs the X-FEM meaning of DDL_IMPO (§4) in the load engine.
+// elements (xfem_spec §3). The model's enrichment also gives DDL_IMPO its X-FEM meaning (§4).
 #include <fmt/format.h>
 
 #include <cmath>
@@ -8,13 +8,11 @@
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
-#include "fe/MechanicalLoad.hpp"
 #include "fe/Quadrature.hpp"
 #include "fe/Model.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "parser/RunOptions.hpp"
 #include "xfem/SubcellQuadrature.hpp"
-#include "xfem/XfemDirichlet.hpp"
 #include "xfem/XfemModel.hpp"
 
 namespace ma {
@@ -165,12 +163,6 @@ ConceptPtr modiModeleXfem(const KeywordSet& kw, CommandContext& ctx) {
 }
 
 MA_REGISTER_COMMAND("MODI_MODELE_XFEM", modiModeleXfem);
-
-// DDL_IMPO on X-FEM models (the load engine asks this hook first).
-const bool kDirichletHook = [] {
-    setEnrichedImposedDofHandler(&xfem::xfemImposedDofHandler);
-    return true;
-}();
 
 }  // namespace
 }  // namespace ma

@@ -5,7 +5,7 @@
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "fe/Model.hpp"
-#include "fields/Fields.hpp"
+#include "fe/Result.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "xfem/Visualisation.hpp"
 

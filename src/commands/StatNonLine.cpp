@@ -11,11 +11,11 @@
 #include <cmath>
 
 #include "commands/LegacyContactLoad.hpp"
+#include "commands/MechanicalResult.hpp"
 #include "commands/MechanicsKeywords.hpp"
 #include "contact/ContactLoop.hpp"
 #include "core/Messages.hpp"
 #include "fe/MechanicalProblem.hpp"
-#include "fields/Fields.hpp"
 #include "parser/CommandRegistry.hpp"
 
 namespace ma {
@@ -25,16 +25,94 @@ bool near(double a, double b, double precision) { return std::abs(a - b) <= prec
 
 // CONVERGENCE: RESI_GLOB_RELA = 1e-6 when neither criterion is given.
 ConvergenceOptions convergenceOptions(const KeywordSet& kw) {
+    const KeywordSet& o = kw.factor("CONVERGENCE").front();
     ConvergenceOptions conv;
-    if (const auto& c = kw.factor("CONVERGENCE"); !c.empty()) {
-        const KeywordSet& o = c.front();
-        conv.maxIterations = static_cast<int>(o.integer("ITER_GLOB_MAXI"));
-        conv.resiGlobMaxi = o.has("RESI_GLOB_MAXI") ? o.real("RESI_GLOB_MAXI") : -1.0;
-        conv.resiGlobRela = o.has("RESI_GLOB_RELA") ? o.real("RESI_GLOB_RELA") : -1.0;
-        if (conv.resiGlobMaxi < 0.0 && conv.resiGlobRela < 0.0) conv.resiGlobRela = 1e-6;
-        conv.stopOnFailure = o.text("ARRET") == "OUI";
-    }
+    conv.maxIterations = static_cast<int>(o.integer("ITER_GLOB_MAXI"));
+    conv.resiGlobMaxi = o.has("RESI_GLOB_MAXI") ? o.real("RESI_GLOB_MAXI") : -1.0;
+    conv.resiGlobRela = o.has("RESI_GLOB_RELA") ? o.real("RESI_GLOB_RELA") : -1.0;
+    if (conv.resiGlobMaxi < 0.0 && conv.resiGlobRela < 0.0) conv.resiGlobRela = 1e-6;
+    conv.stopOnFailure = o.text("ARRET") == "OUI";
     return conv;
+}
+
+void refuseUnsupportedBehaviour(const KeywordSet& kw) {
+    for (const auto& occ : kw.factor("COMPORTEMENT")) {
+        if (occ.text("RELATION") != "ELAS")
+            throw NotImplemented(occ.pathOf("RELATION") + "='" + occ.text("RELATION") + "': only ELAS is supported");
+        if (occ.text("DEFORMATION") != "PETIT")
+            throw NotImplemented(occ.pathOf("DEFORMATION") + "='" + occ.text("DEFORMATION") + "': only PETIT");
+    }
+    if (kw.text("METHODE") != "NEWTON")
+        throw NotImplemented("STAT_NON_LINE/METHODE='" + kw.text("METHODE") + "': only NEWTON");
+}
+
+// INCREMENT: the instants of LIST_INST from `first` (the initial state) to `last`.
+struct Increments {
+    std::vector<double> list;
+    size_t first = 0, last = 0;
+};
+
+Increments incrementsOf(const KeywordSet& kw) {
+    const auto& incr = kw.factor("INCREMENT");
+    if (incr.empty()) throw UserError("STAT_NON_LINE: INCREMENT/LIST_INST is required");
+    const KeywordSet& inc = incr.front();
+    Increments out;
+    out.list = inc.object<RealList>("LIST_INST")->values;
+    const auto& list = out.list;
+    const double precision = inc.real("PRECISION");
+    auto indexOf = [&](double t, const std::string& key) {
+        for (size_t i = 0; i < list.size(); ++i)
+            if (near(list[i], t, precision)) return i;
+        throw UserError(fmt::format("{} = {} is not an instant of LIST_INST", inc.pathOf(key), t));
+    };
+    out.last = list.size() - 1;
+    if (inc.has("INST_INIT")) out.first = indexOf(inc.real("INST_INIT"), "INST_INIT");
+    if (inc.has("NUME_INST_INIT")) out.first = static_cast<size_t>(inc.integer("NUME_INST_INIT"));
+    if (inc.has("INST_FIN")) out.last = indexOf(inc.real("INST_FIN"), "INST_FIN");
+    if (inc.has("NUME_INST_FIN")) out.last = static_cast<size_t>(inc.integer("NUME_INST_FIN"));
+    if (out.first >= list.size() || out.last >= list.size() || out.last <= out.first)
+        throw UserError(fmt::format("STAT_NON_LINE/INCREMENT: no step between instants #{} and #{} of LIST_INST "
+                                    "({} instants)",
+                                    out.first, out.last, list.size()));
+    return out;
+}
+
+// ARCHIVAGE: which instants are stored (every one unless it restricts them; the last computed
+// one always) and which fields are left out.
+struct Archiving {
+    std::vector<char> instants;  // per instant of LIST_INST
+    std::vector<std::string> excluded;
+    bool keeps(const std::string& field) const {
+        return std::find(excluded.begin(), excluded.end(), field) == excluded.end();
+    }
+};
+
+Archiving archivingOf(const KeywordSet& kw, const Increments& steps) {
+    const auto& list = steps.list;
+    Archiving out{std::vector<char>(list.size(), 1), {}};
+    const auto& a = kw.factor("ARCHIVAGE");
+    if (a.empty()) return out;
+    const KeywordSet& o = a.front();
+    if (o.has("CHAM_EXCLU")) out.excluded = o.texts("CHAM_EXCLU");
+    const double aprec = o.real("PRECISION");
+    std::vector<double> wanted;
+    if (o.has("LIST_INST")) wanted = o.object<RealList>("LIST_INST")->values;
+    if (o.has("INST")) wanted = o.reals("INST");
+    auto& archive = out.instants;
+    if (!wanted.empty()) {
+        std::fill(archive.begin(), archive.end(), 0);
+        for (size_t i = 0; i < list.size(); ++i)
+            for (double t : wanted)
+                if (near(list[i], t, aprec)) archive[i] = 1;
+    }
+    if (o.has("PAS_ARCH")) {
+        const long long pas = o.integer("PAS_ARCH");
+        if (pas <= 0) throw UserError(o.pathOf("PAS_ARCH") + " must be positive");
+        for (size_t i = steps.first; i < list.size(); ++i)
+            archive[i] = (i - steps.first) % static_cast<size_t>(pas) == 0;
+    }
+    archive[steps.last] = 1;
+    return out;
 }
 
 // Order 0's SIEF_ELGA (sigma = 0 at u = 0) on the points of the last archived one, made once the
@@ -45,71 +123,31 @@ void addInitialStresses(Result& result) {
     result.steps.front().gaussFields.emplace_back("SIEF_ELGA", std::move(zero));
 }
 
+// One increment to `inst`: Newton iterations, inside the contact loop when there is contact.
+IncrementReport solveIncrement(MechanicalProblem& problem, contact::ContactTerms* contactTerms, size_t increment,
+                               double inst, const ConvergenceOptions& conv) {
+    if (!contactTerms) return problem.solveIncrement(inst, conv);
+    const auto cr = contact::solveIncrementWithContact(problem, *contactTerms, inst, conv);
+    IncrementReport report = cr.lastNewton;
+    report.iterations = cr.newtonIterations;
+    msg().infof("    increment {} (INST {}): {} contact iteration(s), {} active contact points of {}", increment, inst,
+                cr.contactIterations, cr.last.active, cr.last.points);
+    return report;
+}
+
 ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
     const auto t0 = std::chrono::steady_clock::now();
     if (ctx.reused) throw NotImplemented("STAT_NON_LINE with reuse= (continuation) is not supported by miniaster");
-    for (const auto& occ : kw.factor("COMPORTEMENT")) {
-        if (occ.text("RELATION") != "ELAS")
-            throw NotImplemented(occ.pathOf("RELATION") + "='" + occ.text("RELATION") + "': only ELAS is supported");
-        if (occ.text("DEFORMATION") != "PETIT")
-            throw NotImplemented(occ.pathOf("DEFORMATION") + "='" + occ.text("DEFORMATION") + "': only PETIT");
-    }
-    if (kw.text("METHODE") != "NEWTON")
-        throw NotImplemented("STAT_NON_LINE/METHODE='" + kw.text("METHODE") + "': only NEWTON");
+    refuseUnsupportedBehaviour(kw);
     auto model = kw.object<Model>("MODELE");
     auto material = kw.object<MaterialField>("CHAM_MATER");
     if (material->mesh != model->mesh)
         throw UserError("STAT_NON_LINE: CHAM_MATER " + material->name + " is not defined on the mesh of MODELE " + model->name);
-
-    // Instants.
-    const auto& incr = kw.factor("INCREMENT");
-    if (incr.empty()) throw UserError("STAT_NON_LINE: INCREMENT/LIST_INST is required");
-    const KeywordSet& inc = incr.front();
-    const auto list = inc.object<RealList>("LIST_INST")->values;
-    const double precision = inc.real("PRECISION");
-    auto indexOf = [&](double t, const std::string& key) {
-        for (size_t i = 0; i < list.size(); ++i)
-            if (near(list[i], t, precision)) return i;
-        throw UserError(fmt::format("{} = {} is not an instant of LIST_INST", inc.pathOf(key), t));
-    };
-    size_t first = 0, last = list.size() - 1;
-    if (inc.has("INST_INIT")) first = indexOf(inc.real("INST_INIT"), "INST_INIT");
-    if (inc.has("NUME_INST_INIT")) first = static_cast<size_t>(inc.integer("NUME_INST_INIT"));
-    if (inc.has("INST_FIN")) last = indexOf(inc.real("INST_FIN"), "INST_FIN");
-    if (inc.has("NUME_INST_FIN")) last = static_cast<size_t>(inc.integer("NUME_INST_FIN"));
-    if (first >= list.size() || last >= list.size() || last <= first)
-        throw UserError(fmt::format("STAT_NON_LINE/INCREMENT: no step between instants #{} and #{} of LIST_INST "
-                                    "({} instants)",
-                                    first, last, list.size()));
-
+    const Increments steps = incrementsOf(kw);
+    const auto& list = steps.list;
+    const size_t first = steps.first, last = steps.last;
     const ConvergenceOptions conv = convergenceOptions(kw);
-
-    // Archiving: every step unless ARCHIVAGE restricts it.
-    std::vector<char> archive(list.size(), 1);
-    std::vector<std::string> excluded;
-    if (const auto& a = kw.factor("ARCHIVAGE"); !a.empty()) {
-        const KeywordSet& o = a.front();
-        if (o.has("CHAM_EXCLU")) excluded = o.texts("CHAM_EXCLU");
-        const double aprec = o.real("PRECISION");
-        std::vector<double> wanted;
-        if (o.has("LIST_INST")) wanted = o.object<RealList>("LIST_INST")->values;
-        if (o.has("INST")) wanted = o.reals("INST");
-        if (!wanted.empty()) {
-            std::fill(archive.begin(), archive.end(), 0);
-            for (size_t i = 0; i < list.size(); ++i)
-                for (double t : wanted)
-                    if (near(list[i], t, aprec)) archive[i] = 1;
-        }
-        if (o.has("PAS_ARCH")) {
-            const long long pas = o.integer("PAS_ARCH");
-            if (pas <= 0) throw UserError(o.pathOf("PAS_ARCH") + " must be positive");
-            for (size_t i = first; i < list.size(); ++i) archive[i] = (i - first) % static_cast<size_t>(pas) == 0;
-        }
-        archive[last] = 1;  // the last computed step is always archived
-    }
-    auto keep = [&](const std::string& field) {
-        return std::find(excluded.begin(), excluded.end(), field) == excluded.end();
-    };
+    const Archiving archiving = archivingOf(kw, steps);
 
     const auto loads = mechanics::loadCases(kw);
     const auto definition = mechanics::contactOfTheSolve(kw, loads);
@@ -121,42 +159,25 @@ ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
                                         definition->name, definition->model->name, model->name));
         contactTerms = contact::attachContact(problem, *material, definition);
     }
-    auto result = std::make_shared<Result>("evol_noli");
-    result->mesh = model->mesh;
-    result->model = model;
-    result->material = material;
+    auto result = mechanics::mechanicalResult("evol_noli", model, material);
     int order = 0;
     auto store = [&](double inst, bool stresses) {
-        ResultStep step;
-        step.order = order++;
-        step.inst = inst;
-        if (keep("DEPL")) step.nodalFields.emplace_back("DEPL", problem.displacementField());
-        if (stresses && keep("SIEF_ELGA")) step.gaussFields.emplace_back("SIEF_ELGA", problem.stressField());
-        result->steps.push_back(std::move(step));
+        mechanics::archiveState(*result, problem, order++, inst, archiving.keeps("DEPL"),
+                                stresses && archiving.keeps("SIEF_ELGA"));
     };
     store(list[first], last == first);  // initial state u = 0; its SIEF_ELGA: addInitialStresses
     int totalIterations = 0;
     for (size_t i = first + 1; i <= last; ++i) {
-        IncrementReport report;
-        if (contactTerms) {
-            const auto cr = contact::solveIncrementWithContact(problem, *contactTerms, list[i], conv);
-            report = cr.lastNewton;
-            report.iterations = cr.newtonIterations;
-            msg().infof("    increment {} (INST {}): {} contact iteration(s), {} active contact points of {}", i - first,
-                        list[i], cr.contactIterations, cr.last.active, cr.last.points);
-        } else {
-            report = problem.solveIncrement(list[i], conv);
-        }
+        const IncrementReport report = solveIncrement(problem, contactTerms.get(), i - first, list[i], conv);
         totalIterations += report.iterations;
         if (i == last) problem.releaseFactorisation();  // no solve follows
         msg().infof("    increment {} (INST {}): {} Newton iteration(s), RESI_GLOB_RELA {:.3e}, RESI_GLOB_MAXI {:.3e}",
                     i - first, list[i], report.iterations, report.relativeResidual, report.maxResidual);
-        if (archive[i]) store(list[i], true);
+        if (archiving.instants[i]) store(list[i], true);
     }
-    if (last > first && keep("SIEF_ELGA")) addInitialStresses(*result);
+    if (last > first && archiving.keeps("SIEF_ELGA")) addInitialStresses(*result);
     msg().infof("    STAT_NON_LINE: {} increment(s), {} Newton iteration(s), {} archived order(s), {:.3f} s",
-                last - first, totalIterations, result->steps.size(),
-                secondsSince(t0));
+                last - first, totalIterations, result->steps.size(), secondsSince(t0));
     return result;
 }
 

@@ -46,7 +46,7 @@ public:
 
     std::shared_ptr<const Model> model;  // the X-FEM model (MODI_MODELE_XFEM, CONTACT='STANDARD')
     std::vector<ContactZone> zones;
-    int maxContactIterations = 30;  // ITER_CONT_MAXI
+    int maxContactIterations = 0;  // ITER_CONT_MAXI (DEFI_CONTACT)
     NitscheParameters nitsche;
 
     const xfem::XfemModel& xfemModel() const;

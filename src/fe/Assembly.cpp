@@ -3,81 +3,73 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <numeric>
 #include <stdexcept>
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "core/Mpi.hpp"
 #include "fe/ElasticityKernels.hpp"
-#include "fe/ElementLoop.hpp"
+#include "fe/ElementAssembler.hpp"
 
 namespace ma {
 
 namespace {
 
-// Element stiffnesses of one batch: phase 1, each worker keeps the matrices of its share (with
-// their equations, sorted); phase 2, each worker adds the whole batch, in element order, into the
-// rows it owns. Every matrix entry thus receives its element contributions in element order
-// whatever the number of workers.
-class StiffnessAssembler {
+// Element stiffnesses with their equations, sorted (insertion sort of <= 24 entries), so that
+// phase 2 merges each element row with the sorted matrix row.
+class StiffnessKernel {
 public:
-    StiffnessAssembler(const Discretisation& space, const DirichletConstraints& c, CsrMatrix& matrix)
-        : space_(space), c_(c), matrix_(matrix), workers_(elementWorkers(space.elementCount())), parts_(workers_),
-          entries_(kElementBatch) {
-        for (int t = 0; t < workers_; ++t) scratch_.emplace_back(space.material());
-    }
+    StiffnessKernel(const DirichletConstraints& c, CsrMatrix& matrix) : c_(c), matrix_(matrix) {}
 
-    int workers() const { return workers_; }
-
-    // Returns the workers' CPU time.
-    double run() {
-        std::vector<double> cpu;
-        batchedElementLoop(
-            space_.elementCount(), kElementBatch, workers_, cpu,
-            [&](int t) { parts_[t].rows.clear(), parts_[t].local.clear(), parts_[t].Ke.clear(); },
-            [&](size_t e, int t) { compute(e, t); }, [&](size_t, size_t count, int t) { scatter(count, t); });
-        return std::accumulate(cpu.begin(), cpu.end(), 0.0);
-    }
-
-private:
     struct Part {  // one worker's element matrices of the current batch
         std::vector<int> rows, local;  // per element: m (equation, local index), sorted
         std::vector<double> Ke;
+        void clear() { rows.clear(), local.clear(), Ke.clear(); }
     };
     struct Entry {
-        int part = 0, nd = 0, m = 0;
+        int nd = 0, m = 0;
         size_t Ke = 0, rows = 0;
     };
 
-    void compute(size_t e, int t) {
-        const size_t slot = e % kElementBatch;
-        if (!space_.owns(e)) return keep(t, slot, nullptr, 0, nullptr);  // another process's cell
-        ElementScratch& w = scratch_[t];
-        const Mesh& mesh = space_.mesh();
-        const int cell = space_.model().elements[e].cell;
-        const IsotropicLaw& law = w.laws.of(space_.model().elements[e]);
-        space_.visit(
-            e, w.general,
-            [&](const auto& ref, const auto& g) {
-                using Ref = std::decay_t<decltype(ref)>;
-                int edofs[Ref::dofs];
-                double eK[Ref::dofs * Ref::dofs];
-                classicalDofs<Ref>(mesh, space_.numbering(), cell, edofs);
-                classicalStiffness(g, law, eK);
-                keep(t, slot, edofs, Ref::dofs, eK);
-            },
-            [&](const ElementIntegration& ei, const PointGeometry& geo) {
-                localDofs(mesh, space_.numbering(), ei, w.dofs);
-                generalStiffness(ei, geo, law, space_.dim(), static_cast<int>(w.dofs.size()), w.values);
-                keep(t, slot, w.dofs.data(), static_cast<int>(w.dofs.size()), w.values.data());
-            });
+    Entry none(Part& part) const { return keep(part, nullptr, 0, nullptr); }
+
+    template <class Ref, class Geometry>
+    Entry classical(const Ref&, const Geometry& g, const ElementContext& el, Part& part) const {
+        int edofs[Ref::dofs];
+        double eK[Ref::dofs * Ref::dofs];
+        classicalDofs<Ref>(el.mesh, el.numbering, el.cell, edofs);
+        classicalStiffness(g, el.law, eK);
+        return keep(part, edofs, Ref::dofs, eK);
     }
 
-    void keep(int t, size_t slot, const int* edofs, int nd, const double* eK) {
-        Part& part = parts_[t];
-        Entry& entry = entries_[slot];
-        entry.part = t, entry.nd = nd;
+    Entry general(const ElementIntegration& ei, const PointGeometry& geo, const ElementContext& el, Part& part) const {
+        ElementScratch& w = el.scratch;
+        localDofs(el.mesh, el.numbering, ei, w.dofs);
+        generalStiffness(ei, geo, el.law, el.dim, static_cast<int>(w.dofs.size()), w.values);
+        return keep(part, w.dofs.data(), static_cast<int>(w.dofs.size()), w.values.data());
+    }
+
+    void scatter(const Part& p, const Entry& entry, int worker, int workers) const {
+        const int* cols = matrix_.cols.data();
+        double* values = matrix_.values.data();
+        const int* rows = p.rows.data() + entry.rows;
+        const int* local = p.local.data() + entry.rows;
+        const double* eK = p.Ke.data() + entry.Ke;
+        for (int i = 0; i < entry.m; ++i) {
+            if (!ownedBy(rows[i], worker, workers)) continue;
+            long long k = matrix_.rowStart[rows[i]];
+            const double* Kr = eK + size_t(local[i]) * entry.nd;
+            for (int j = 0; j < entry.m; ++j) {
+                while (cols[k] < rows[j]) ++k;
+                values[k] += Kr[local[j]];
+            }
+        }
+    }
+
+private:
+    Entry keep(Part& part, const int* edofs, int nd, const double* eK) const {
+        Entry entry;
+        entry.nd = nd;
         entry.Ke = part.Ke.size(), entry.rows = part.rows.size();
         part.Ke.insert(part.Ke.end(), eK, eK + size_t(nd) * nd);
         int m = 0;
@@ -92,36 +84,11 @@ private:
             ++m;
         }
         entry.m = m;
+        return entry;
     }
 
-    void scatter(size_t count, int t) {
-        const int* cols = matrix_.cols.data();
-        double* values = matrix_.values.data();
-        for (size_t slot = 0; slot < count; ++slot) {
-            const Entry& entry = entries_[slot];
-            const Part& p = parts_[entry.part];
-            const int* rows = p.rows.data() + entry.rows;
-            const int* local = p.local.data() + entry.rows;
-            const double* eK = p.Ke.data() + entry.Ke;
-            for (int i = 0; i < entry.m; ++i) {
-                if (!ownedBy(rows[i], t, workers_)) continue;
-                long long k = matrix_.rowStart[rows[i]];
-                const double* Kr = eK + size_t(local[i]) * entry.nd;
-                for (int j = 0; j < entry.m; ++j) {
-                    while (cols[k] < rows[j]) ++k;
-                    values[k] += Kr[local[j]];
-                }
-            }
-        }
-    }
-
-    const Discretisation& space_;
     const DirichletConstraints& c_;
     CsrMatrix& matrix_;
-    const int workers_;
-    std::vector<Part> parts_;
-    std::vector<Entry> entries_;
-    std::vector<ElementScratch> scratch_;
 };
 
 void addAdditionalTangent(const DirichletConstraints& c, const AdditionalTerms& additional,
@@ -172,7 +139,8 @@ double assembleSystemMatrix(const Discretisation& space, const DirichletConstrai
     const auto t0 = std::chrono::steady_clock::now();
     if (matrix.values.size() != matrix.cols.size()) matrix.values.assign(matrix.cols.size(), 0.0);
     else matrix.setZero();
-    StiffnessAssembler assembler(space, c, matrix);
+    StiffnessKernel kernel(c, matrix);
+    ElementAssembler assembler(space, kernel);
     double cpuTotal = 0.0;
     // This process's cells and contact points only when distributed (a failure on one process
     // stops all of them: core/Mpi.hpp).

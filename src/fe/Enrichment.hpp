@@ -1,14 +1,18 @@
 #pragma once
 // The interface through which an X-FEM model (src/xfem) changes what the classical engine does:
-// more unknowns per node, and sub-cell integration of cut elements. The engine (src/fe) knows
+// more unknowns per node, sub-cell integration of cut elements, and what DDL_IMPO means on
+// enriched nodes. The engine (src/fe) knows
 // only this interface, so fe does not depend on xfem.
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "fe/DirichletRelation.hpp"
 #include "fe/ElementIntegration.hpp"
 
 namespace ma {
+
+class Model;  // fe/Model.hpp
 
 class Enrichment {
 public:
@@ -25,6 +29,13 @@ public:
     // inactive cracks of multi-crack elements and slots dropped by the conditioning guard
     // (xfem_spec §3.9, §3.10). The engine must fix these unknowns to 0 (like DDL_IMPO = 0).
     virtual std::vector<std::pair<int, int>> inactiveSlots() const { return {}; }
+    // DDL_IMPO on `model` (whose enrichment this is): appends the relations of `request` at `inst`
+    // and returns true when the enrichment imposes it; false leaves the request to the load engine
+    // (one-term relations on the nodes that carry the component).
+    virtual bool imposeDof(const Model& /*model*/, const ImposedDof& /*request*/, double /*inst*/,
+                           std::vector<LinearRelation>& /*out*/) const {
+        return false;
+    }
 };
 
 }  // namespace ma

@@ -7,15 +7,6 @@
 
 namespace ma {
 
-namespace {
-EnrichedImposedDofHandler& enrichedHandler() {
-    static EnrichedImposedDofHandler handler;
-    return handler;
-}
-}  // namespace
-
-void setEnrichedImposedDofHandler(EnrichedImposedDofHandler handler) { enrichedHandler() = std::move(handler); }
-
 std::vector<double> evaluateAtPoints(const Function& f, const std::vector<std::array<double, 3>>& points,
                                      double inst) {
     const size_t n = points.size();
@@ -35,7 +26,7 @@ void MechanicalLoad::appendRelations(double inst, std::vector<LinearRelation>& o
     // Which nodes carry which slots (the numbering knows; cheap compared with a solve).
     const DofNumbering numbering(m);
     for (const auto& request : imposed) {
-        if (m.enrichment && enrichedHandler() && enrichedHandler()(m, request, inst, out)) continue;
+        if (m.enrichment && m.enrichment->imposeDof(m, request, inst, out)) continue;
         std::vector<int> nodes;
         for (int node : request.nodes)
             if (numbering.dofOf(node, request.component) >= 0) nodes.push_back(node);

@@ -3,41 +3,20 @@
 // pressure on skin elements, volume forces.
 //
 // Every Dirichlet condition is a linear relation  sum_i coef_i * u(node_i, component_i) = value.
-// DDL_IMPO makes one-term relations; X-FEM boundary conditions on enriched nodes (xfem_spec §4)
-// make multi-term ones through the hook setEnrichedImposedDofHandler(), which src/xfem registers
-// at start-up: for a model with an enrichment, every DDL_IMPO request is first offered to it.
+// DDL_IMPO makes one-term relations; on a model with an enrichment every DDL_IMPO request is first
+// offered to it (Enrichment::imposeDof: X-FEM boundary conditions on enriched nodes, xfem_spec §4,
+// make multi-term ones).
 #include <array>
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "core/Concept.hpp"
 #include "core/Function.hpp"
+#include "fe/DirichletRelation.hpp"
 #include "fe/Model.hpp"
 
 namespace ma {
-
-struct DofTerm {
-    int node = -1;
-    std::string component;  // "DX", "H1Y" ...
-    double coef = 1.0;
-};
-
-struct LinearRelation {
-    std::vector<DofTerm> terms;
-    double value = 0.0;
-};
-
-// One component of one DDL_IMPO occurrence: value given as a real or as a function of
-// X, Y, Z, INST (evaluated at the nodes, in one batch).
-struct ImposedDof {
-    std::string path;        // "DDL_IMPO[2]/DX", for messages
-    std::vector<int> nodes;  // nodes of the occurrence (all of them; the handler filters)
-    std::string component;
-    double value = 0.0;
-    std::shared_ptr<const Function> function;  // null: constant value
-};
 
 struct PressureLoad {
     std::string path;
@@ -72,13 +51,6 @@ public:
     // factor is applied by the caller). A component a node does not carry is skipped.
     void appendRelations(double inst, std::vector<LinearRelation>& out) const;
 };
-
-// X-FEM extension point. Called for each ImposedDof of a load whose model has an enrichment;
-// returns true when it produced the relations of the request itself (then the default
-// one-term relations are not generated).
-using EnrichedImposedDofHandler =
-    std::function<bool(const Model& model, const ImposedDof& request, double inst, std::vector<LinearRelation>& out)>;
-void setEnrichedImposedDofHandler(EnrichedImposedDofHandler handler);
 
 // Values of `f` at the given points (columns X, Y, Z and INST), in one batch.
 std::vector<double> evaluateAtPoints(const Function& f, const std::vector<std::array<double, 3>>& points, double inst);

@@ -14,10 +14,12 @@
 
 namespace ma {
 
+// STAT_NON_LINE's CONVERGENCE (its defaults are the catalogue's); as constructed: one solve and
+// no convergence test (MECA_STATIQUE: the problem is linear).
 struct ConvergenceOptions {
-    int maxIterations = 10;       // ITER_GLOB_MAXI
+    int maxIterations = 0;        // ITER_GLOB_MAXI: iterations 0 .. maxIterations
     double resiGlobMaxi = -1.0;   // < 0: not checked
-    double resiGlobRela = 1e-6;   // < 0: not checked
+    double resiGlobRela = -1.0;   // < 0: not checked
     bool stopOnFailure = true;    // ARRET='OUI'
 };
 

@@ -1,9 +1,5 @@
 #include "fields/Fields.hpp"
 
-#include <cmath>
-
-#include "core/Error.hpp"
-
 namespace ma {
 
 void NodalField::resize(const std::shared_ptr<const Mesh>& m, std::vector<std::string> comps) {
@@ -35,24 +31,6 @@ std::shared_ptr<GaussField> ResultStep::gauss(const std::string& name) const {
     for (const auto& [n, f] : gaussFields)
         if (n == name) return f;
     return nullptr;
-}
-
-const ResultStep& Result::step(int order) const {
-    for (const auto& s : steps)
-        if (s.order == order) return s;
-    throw UserError("result " + name + " has no NUME_ORDRE " + std::to_string(order));
-}
-
-ResultStep& Result::step(int order) {
-    return const_cast<ResultStep&>(static_cast<const Result&>(*this).step(order));
-}
-
-const ResultStep& Result::stepAtInst(double inst, double precision, bool relative) const {
-    for (const auto& s : steps) {
-        double tol = relative ? precision * std::abs(inst) : precision;
-        if (std::abs(s.inst - inst) <= tol) return s;
-    }
-    throw UserError("result " + name + " has no step at INST " + std::to_string(inst));
 }
 
 }  // namespace ma

@@ -1,5 +1,5 @@
 #pragma once
-// Fields (cham_no / cham_elem) and results (evol_elas / evol_noli).
+// Fields (cham_no / cham_elem) and the archived steps of a result (fe/Result.hpp).
 #include <memory>
 #include <string>
 #include <vector>
@@ -8,9 +8,6 @@
 #include "mesh/Mesh.hpp"
 
 namespace ma {
-
-class Model;          // src/fe/Model.hpp
-class MaterialField;  // src/fe/Material.hpp
 
 // A field on the nodes (cham_no, e.g. DEPL). Components are the union over all nodes, in the
 // order of the physical quantity (DX, DY, DZ, H1X, H1Y, ..., LAGS_C ...); a node carries a
@@ -59,7 +56,7 @@ public:
     int componentIndex(const std::string& comp) const;
 };
 
-// One archived state of a result.
+// One archived state of a result (NUME_ORDRE, INST and its fields).
 struct ResultStep {
     int order = 0;      // NUME_ORDRE
     double inst = 0.0;  // INST
@@ -68,27 +65,6 @@ struct ResultStep {
 
     std::shared_ptr<NodalField> nodal(const std::string& name) const;
     std::shared_ptr<GaussField> gauss(const std::string& name) const;
-};
-
-// evol_elas (MECA_STATIQUE) or evol_noli (STAT_NON_LINE), also POST_CHAM_XFEM's output.
-class Result : public Concept {
-public:
-    explicit Result(std::string kind = "evol_elas") : kind_(std::move(kind)) {}
-    std::string typeName() const override { return kind_; }
-
-    std::shared_ptr<const Mesh> mesh;
-    std::shared_ptr<Model> model;
-    std::shared_ptr<MaterialField> material;
-    std::vector<ResultStep> steps;
-
-    // The step with this NUME_ORDRE; UserError naming the result when absent.
-    const ResultStep& step(int order) const;
-    ResultStep& step(int order);
-    // The step at this INST within a relative/absolute precision.
-    const ResultStep& stepAtInst(double inst, double precision, bool relative) const;
-
-private:
-    std::string kind_;
 };
 
 }  // namespace ma

@@ -191,25 +191,40 @@ std::shared_ptr<Table> displacementErrorTable(const Model& model, const NodalFie
                       "ERREUR EN NORME L2 DU DEPLACEMENT");
 }
 
+namespace {
+
+// The six stress slots SIXX SIYY SIZZ SIXY SIXZ SIYZ of the energy norm: the field component and
+// the reference formula of each (-1: absent, counts as zero).
+struct StressSlots {
+    int field[6];
+    int reference[6];
+};
+
+StressSlots stressSlots(const GaussField& stress, const ReferenceFormulas& reference) {
+    static const char* kNames[6] = {"SIXX", "SIYY", "SIZZ", "SIXY", "SIXZ", "SIYZ"};
+    StressSlots slots;
+    for (int k = 0; k < 6; ++k) slots.field[k] = stress.componentIndex(kNames[k]);
+    if (slots.field[0] < 0 || slots.field[1] < 0)
+        throw UserError(fmt::format("CHAM_GD: field {} has no stress components SIXX, SIYY (SIEF_ELGA expected)",
+                                    stress.name));
+    for (int k = 0; k < 6; ++k) {
+        slots.reference[k] = -1;
+        for (size_t c = 0; c < reference.components.size(); ++c)
+            if (reference.components[c] == kNames[k]) slots.reference[k] = int(c);
+    }
+    return slots;
+}
+
+}  // namespace
+
 std::shared_ptr<Table> energyErrorTable(const Model& model, const GaussField& stress, const MaterialField& material,
                                         const std::vector<std::string>& groups, const ReferenceFormulas& reference) {
     checkFormulaCounts(reference, groups.size());
     const int dim = model.dim;
     const bool planeStress = model.modelisation == Modelisation::C_PLAN;
-    static const char* kNames[6] = {"SIXX", "SIYY", "SIZZ", "SIXY", "SIXZ", "SIYZ"};
-    // Field component of each of the 6 stress slots (-1: absent, counts as zero).
-    int fieldComp[6];
-    for (int k = 0; k < 6; ++k) fieldComp[k] = stress.componentIndex(kNames[k]);
-    if (fieldComp[0] < 0 || fieldComp[1] < 0)
-        throw UserError(fmt::format("CHAM_GD: field {} has no stress components SIXX, SIYY (SIEF_ELGA expected)",
-                                    stress.name));
-    // Reference formula slot of each stress slot.
-    int refComp[6];
-    for (int k = 0; k < 6; ++k) {
-        refComp[k] = -1;
-        for (size_t c = 0; c < reference.components.size(); ++c)
-            if (reference.components[c] == kNames[k]) refComp[k] = int(c);
-    }
+    const StressSlots slots = stressSlots(stress, reference);
+    const int* fieldComp = slots.field;
+    const int* refComp = slots.reference;
     const size_t nc = stress.components.size();
     // Components the difference uses: 2*dim of them (SIXX, SIYY, SIZZ, SIXY[, SIXZ, SIYZ]).
     const int used = dim == 3 ? 6 : 4;

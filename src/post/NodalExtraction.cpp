@@ -65,105 +65,126 @@ std::vector<int> nodeList(const Mesh& mesh, const NodalField& f, const std::vect
 
 size_t textWidth(size_t length, size_t minimum) { return std::max(length, minimum); }
 
+// One field of one action, resolved: the components and nodes it extracts.
+struct Block {
+    const NodalExtraction* action;
+    const NodalField* field;
+    const ResultStep* step;
+    std::vector<int> comps, nodes;
+};
+
+// Every action resolved first: the columns are declared once, from all of them.
+struct Extraction {
+    std::vector<Block> blocks;
+    std::vector<std::string> componentColumns;
+    bool anyField = false, anyResult = false;
+    size_t titleLen = 0, nodeLen = 0, fieldLen = 0, resultLen = 0, nameLen = 0;  // text column widths
+};
+
+// The fields an action reads (a CHAM_GD, or NOM_CHAM at each step of a RESULTAT).
+std::vector<std::pair<const NodalField*, const ResultStep*>> sourcesOf(const NodalExtraction& a, Extraction& x,
+                                                                     std::string& label) {
+    std::vector<std::pair<const NodalField*, const ResultStep*>> sources;
+    if (a.field) {
+        x.anyField = true;
+        x.fieldLen = std::max(x.fieldLen, a.field->name.size());
+        sources.emplace_back(a.field.get(), nullptr);
+        label = a.field->name;
+        return sources;
+    }
+    if (!a.result) throw UserError("POST_RELEVE_T: ACTION needs RESULTAT or CHAM_GD");
+    x.anyResult = true;
+    x.resultLen = std::max(x.resultLen, a.result->name.size());
+    x.nameLen = std::max(x.nameLen, a.fieldName.size());
+    for (const ResultStep* s : a.steps) {
+        auto f = s->nodal(a.fieldName);
+        if (!f)
+            throw UserError(fmt::format("NOM_CHAM: result {} has no nodal field {} at NUME_ORDRE {}", a.result->name,
+                                        a.fieldName, s->order));
+        sources.emplace_back(f.get(), s);
+    }
+    label = fmt::format("{} {}", a.result->name, a.fieldName);
+    return sources;
+}
+
+Extraction resolve(const std::vector<NodalExtraction>& actions) {
+    Extraction x;
+    for (const auto& a : actions) {
+        x.titleLen = std::max(x.titleLen, a.title.size());
+        std::string label;
+        for (auto [f, s] : sourcesOf(a, x, label)) {
+            if (!f->mesh) throw UserError(fmt::format("field {} has no mesh", label));
+            Block b{&a, f, s, requestedComponents(*f, a, label), {}};
+            b.nodes = nodeList(*f->mesh, *f, b.comps, a);
+            for (int n : b.nodes) x.nodeLen = std::max(x.nodeLen, f->mesh->nodeNames[size_t(n)].size());
+            for (int c : b.comps)
+                if (std::find(x.componentColumns.begin(), x.componentColumns.end(), f->components[size_t(c)]) ==
+                    x.componentColumns.end())
+                    x.componentColumns.push_back(f->components[size_t(c)]);
+            x.blocks.push_back(std::move(b));
+        }
+    }
+    return x;
+}
+
+void declareColumns(const Extraction& x, Table& table) {
+    table.addColumn("INTITULE", textColumnFor(textWidth(x.titleLen, 16)));
+    table.addColumn("NOEUD", textColumnFor(textWidth(x.nodeLen, 8)));
+    if (x.anyField) table.addColumn("CHAM_GD", textColumnFor(textWidth(x.fieldLen, 8)));
+    if (x.anyResult) {
+        table.addColumn("RESU", textColumnFor(textWidth(x.resultLen, 8)));
+        table.addColumn("NOM_CHAM", textColumnFor(textWidth(x.nameLen, 16)));
+        table.addColumn("NUME_ORDRE", ColumnType::integer());
+        table.addColumn("INST", ColumnType::real());  // evol_elas / evol_noli results
+    }
+    for (const char* c : {"ABSC_CURV", "COOR_X", "COOR_Y", "COOR_Z"}) table.addColumn(c, ColumnType::real());
+    for (const auto& c : x.componentColumns) table.addColumn(c, ColumnType::real());
+}
+
+// One row per node of the block, with its curvilinear abscissa along the node list.
+void addBlockRows(const Block& b, Table& table) {
+    const size_t colTitle = 0, colNode = 1;
+    const int colField = table.columnIndex("CHAM_GD"), colResu = table.columnIndex("RESU"),
+              colName = table.columnIndex("NOM_CHAM"), colOrder = table.columnIndex("NUME_ORDRE"),
+              colInst = table.columnIndex("INST");
+    const size_t colAbsc = size_t(table.columnIndex("ABSC_CURV"));
+    const Mesh& mesh = *b.field->mesh;
+    std::vector<size_t> compCol;
+    for (int c : b.comps) compCol.push_back(size_t(table.columnIndex(b.field->components[size_t(c)])));
+    double absc = 0.0;
+    for (size_t k = 0; k < b.nodes.size(); ++k) {
+        const int n = b.nodes[k];
+        const auto& x = mesh.coords[size_t(n)];
+        if (k > 0) {
+            const auto& p = mesh.coords[size_t(b.nodes[k - 1])];
+            absc += std::sqrt((x[0] - p[0]) * (x[0] - p[0]) + (x[1] - p[1]) * (x[1] - p[1]) +
+                              (x[2] - p[2]) * (x[2] - p[2]));
+        }
+        const size_t r = table.addRow();
+        table.set(r, colTitle, b.action->title);
+        table.set(r, colNode, mesh.nodeNames[size_t(n)]);
+        if (b.step) {
+            table.set(r, size_t(colResu), b.action->result->name);
+            table.set(r, size_t(colName), b.action->fieldName);
+            table.set(r, size_t(colOrder), (long long)b.step->order);
+            table.set(r, size_t(colInst), b.step->inst);
+        } else {
+            table.set(r, size_t(colField), b.field->name);
+        }
+        table.set(r, colAbsc, absc);
+        for (int d = 0; d < 3; ++d) table.set(r, colAbsc + 1 + size_t(d), x[size_t(d)]);
+        for (size_t j = 0; j < b.comps.size(); ++j)
+            if (b.field->has(n, b.comps[j])) table.set(r, compCol[j], b.field->at(n, b.comps[j]));
+    }
+}
+
 }  // namespace
 
 std::shared_ptr<Table> extractNodalValues(const std::vector<NodalExtraction>& actions) {
     auto table = std::make_shared<Table>();
-    bool anyField = false, anyResult = false;
-    size_t titleLen = 0, nodeLen = 0, fieldLen = 0, resultLen = 0, nameLen = 0;
-
-    // Resolve every action first: the columns are declared once, from all of them.
-    struct Block {
-        const NodalExtraction* action;
-        const NodalField* field;
-        const ResultStep* step;
-        std::vector<int> comps, nodes;
-    };
-    std::vector<Block> blocks;
-    std::vector<std::string> componentColumns;
-    for (const auto& a : actions) {
-        titleLen = std::max(titleLen, a.title.size());
-        std::vector<std::pair<const NodalField*, const ResultStep*>> sources;
-        std::string label;
-        if (a.field) {
-            anyField = true;
-            fieldLen = std::max(fieldLen, a.field->name.size());
-            sources.emplace_back(a.field.get(), nullptr);
-            label = a.field->name;
-        } else {
-            if (!a.result) throw UserError("POST_RELEVE_T: ACTION needs RESULTAT or CHAM_GD");
-            anyResult = true;
-            resultLen = std::max(resultLen, a.result->name.size());
-            nameLen = std::max(nameLen, a.fieldName.size());
-            for (const ResultStep* s : a.steps) {
-                auto f = s->nodal(a.fieldName);
-                if (!f)
-                    throw UserError(fmt::format("NOM_CHAM: result {} has no nodal field {} at NUME_ORDRE {}",
-                                                a.result->name, a.fieldName, s->order));
-                sources.emplace_back(f.get(), s);
-            }
-            label = fmt::format("{} {}", a.result->name, a.fieldName);
-        }
-        for (auto [f, s] : sources) {
-            if (!f->mesh) throw UserError(fmt::format("field {} has no mesh", label));
-            Block b{&a, f, s, requestedComponents(*f, a, label), {}};
-            b.nodes = nodeList(*f->mesh, *f, b.comps, a);
-            for (int n : b.nodes) nodeLen = std::max(nodeLen, f->mesh->nodeNames[size_t(n)].size());
-            for (int c : b.comps)
-                if (std::find(componentColumns.begin(), componentColumns.end(), f->components[size_t(c)]) ==
-                    componentColumns.end())
-                    componentColumns.push_back(f->components[size_t(c)]);
-            blocks.push_back(std::move(b));
-        }
-    }
-
-    table->addColumn("INTITULE", textColumnFor(textWidth(titleLen, 16)));
-    table->addColumn("NOEUD", textColumnFor(textWidth(nodeLen, 8)));
-    if (anyField) table->addColumn("CHAM_GD", textColumnFor(textWidth(fieldLen, 8)));
-    if (anyResult) {
-        table->addColumn("RESU", textColumnFor(textWidth(resultLen, 8)));
-        table->addColumn("NOM_CHAM", textColumnFor(textWidth(nameLen, 16)));
-        table->addColumn("NUME_ORDRE", ColumnType::integer());
-        table->addColumn("INST", ColumnType::real());  // evol_elas / evol_noli results
-    }
-    for (const char* c : {"ABSC_CURV", "COOR_X", "COOR_Y", "COOR_Z"}) table->addColumn(c, ColumnType::real());
-    for (const auto& c : componentColumns) table->addColumn(c, ColumnType::real());
-
-    const size_t colTitle = 0, colNode = 1;
-    const int colField = table->columnIndex("CHAM_GD"), colResu = table->columnIndex("RESU"),
-              colName = table->columnIndex("NOM_CHAM"), colOrder = table->columnIndex("NUME_ORDRE"),
-              colInst = table->columnIndex("INST");
-    const size_t colAbsc = size_t(table->columnIndex("ABSC_CURV"));
-    for (const Block& b : blocks) {
-        const Mesh& mesh = *b.field->mesh;
-        std::vector<size_t> compCol;
-        for (int c : b.comps) compCol.push_back(size_t(table->columnIndex(b.field->components[size_t(c)])));
-        double absc = 0.0;
-        for (size_t k = 0; k < b.nodes.size(); ++k) {
-            const int n = b.nodes[k];
-            const auto& x = mesh.coords[size_t(n)];
-            if (k > 0) {
-                const auto& p = mesh.coords[size_t(b.nodes[k - 1])];
-                absc += std::sqrt((x[0] - p[0]) * (x[0] - p[0]) + (x[1] - p[1]) * (x[1] - p[1]) +
-                                  (x[2] - p[2]) * (x[2] - p[2]));
-            }
-            const size_t r = table->addRow();
-            table->set(r, colTitle, b.action->title);
-            table->set(r, colNode, mesh.nodeNames[size_t(n)]);
-            if (b.step) {
-                table->set(r, size_t(colResu), b.action->result->name);
-                table->set(r, size_t(colName), b.action->fieldName);
-                table->set(r, size_t(colOrder), (long long)b.step->order);
-                table->set(r, size_t(colInst), b.step->inst);
-            } else {
-                table->set(r, size_t(colField), b.field->name);
-            }
-            table->set(r, colAbsc, absc);
-            for (int d = 0; d < 3; ++d) table->set(r, colAbsc + 1 + size_t(d), x[size_t(d)]);
-            for (size_t j = 0; j < b.comps.size(); ++j)
-                if (b.field->has(n, b.comps[j])) table->set(r, compCol[j], b.field->at(n, b.comps[j]));
-        }
-    }
+    const Extraction x = resolve(actions);
+    declareColumns(x, *table);
+    for (const Block& b : x.blocks) addBlockRows(b, *table);
     return table;
 }
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "fields/Fields.hpp"
+#include "fe/Result.hpp"
 #include "post/Table.hpp"
 
 namespace ma {

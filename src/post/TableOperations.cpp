@@ -87,6 +87,84 @@ std::string RowFilter::describe() const {
     return fmt::format("FILTRE -> NOM_PARA: {} CRIT_COMP: {} VALE: {}", column, comparison, vale);
 }
 
+namespace {
+
+// CRIT_COMP MAXI, MINI, MAXI_ABS, MINI_ABS: the rows holding the extreme value.
+std::vector<size_t> extremeRows(const std::vector<Cell>& cells, const std::string& op) {
+    std::vector<size_t> kept;
+    const bool useAbs = op.size() > 4;
+    const bool max = op.rfind("MAXI", 0) == 0;
+    bool any = false;
+    double best = 0;
+    for (const auto& c : cells) {
+        if (!isNumber(c)) continue;
+        const double v = useAbs ? std::abs(toDouble(c)) : toDouble(c);
+        if (!any || (max ? v > best : v < best)) best = v;
+        any = true;
+    }
+    for (size_t r = 0; r < cells.size(); ++r) {
+        if (!isNumber(cells[r])) continue;
+        const double v = toDouble(cells[r]);
+        if (useAbs ? (v == best || v == -best) : v == best) kept.push_back(r);
+    }
+    return kept;
+}
+
+// CRIT_COMP EQ, NE: texts compared stripped, numbers within CRITERE/PRECISION.
+std::vector<size_t> equalRows(const std::vector<Cell>& cells, const RowFilter& f, const std::vector<double>& numbers,
+                              bool numeric) {
+    const std::string& op = f.comparison;
+    std::vector<size_t> kept;
+    for (size_t r = 0; r < cells.size(); ++r) {
+        bool eq = false;
+        if (!f.texts.empty()) {
+            const std::string v = strip(pythonStr(cells[r]));
+            for (const auto& t : f.texts)
+                if (!isEmpty(cells[r]) && v == strip(t)) eq = true;
+        } else {
+            if (numbers.empty()) throw UserError(fmt::format("FILTRE CRIT_COMP='{}' needs VALE, VALE_I or VALE_K", op));
+            if (!numeric) throw UserError(fmt::format("FILTRE on text column '{}' needs VALE_K, not a number", f.column));
+            eq = isNumber(cells[r]) && numberEquals(toDouble(cells[r]), numbers, f.relative, f.precision);
+        }
+        if (eq == (op == "EQ")) kept.push_back(r);
+    }
+    return kept;
+}
+
+// CRIT_COMP GT, GE, LT, LE: against the smallest given value (GT/GE) or the largest (LT/LE).
+std::vector<size_t> orderedRows(const Column& col, const RowFilter& f, const std::vector<double>& numbers,
+                                bool numeric) {
+    const auto& cells = col.cells;
+    const std::string& op = f.comparison;
+    std::vector<size_t> kept;
+    const bool lower = op[0] == 'G';
+    if (!f.texts.empty()) {
+        checkTextFilter(col, f);
+        const std::string c = lower ? *std::min_element(f.texts.begin(), f.texts.end())
+                                    : *std::max_element(f.texts.begin(), f.texts.end());
+        for (size_t r = 0; r < cells.size(); ++r) {
+            auto* s = std::get_if<std::string>(&cells[r]);
+            if (!s) continue;
+            const bool ok = op == "GT" ? *s > c : op == "GE" ? *s >= c : op == "LT" ? *s < c : *s <= c;
+            if (ok) kept.push_back(r);
+        }
+        return kept;
+    }
+    if (numbers.empty()) throw UserError(fmt::format("FILTRE CRIT_COMP='{}' needs VALE, VALE_I or VALE_K", op));
+    if (!numeric) throw UserError(fmt::format("FILTRE on text column '{}' needs VALE_K, not a number", f.column));
+    const double c =
+        lower ? *std::min_element(numbers.begin(), numbers.end()) : *std::max_element(numbers.begin(), numbers.end());
+    for (size_t r = 0; r < cells.size(); ++r) {
+        if (!isNumber(cells[r])) continue;
+        const double v = toDouble(cells[r]);
+        const bool ok = op == "GT" ? v > c : op == "GE" ? v >= c : op == "LT" ? v < c : v <= c;
+        if (ok) kept.push_back(r);
+    }
+    return kept;
+}
+
+}  // namespace
+
 void filterRows(Table& table, const RowFilter& f) {
     const Column& col = table.column(f.column);
     const auto& cells = col.cells;
@@ -114,61 +192,11 @@ void filterRows(Table& table, const RowFilter& f) {
                 if (std::regex_search(*s, pattern)) kept.push_back(r);  // search, not full match
     } else if (op == "MAXI" || op == "MINI" || op == "MAXI_ABS" || op == "MINI_ABS") {
         if (!numeric) throw UserError(fmt::format("FILTRE CRIT_COMP='{}' on text column '{}'", op, f.column));
-        const bool useAbs = op.size() > 4;
-        const bool max = op.rfind("MAXI", 0) == 0;
-        bool any = false;
-        double best = 0;
-        for (const auto& c : cells) {
-            if (!isNumber(c)) continue;
-            const double v = useAbs ? std::abs(toDouble(c)) : toDouble(c);
-            if (!any || (max ? v > best : v < best)) best = v;
-            any = true;
-        }
-        for (size_t r = 0; r < cells.size(); ++r) {
-            if (!isNumber(cells[r])) continue;
-            const double v = toDouble(cells[r]);
-            if (useAbs ? (v == best || v == -best) : v == best) kept.push_back(r);
-        }
+        kept = extremeRows(cells, op);
     } else if (op == "EQ" || op == "NE") {
-        for (size_t r = 0; r < cells.size(); ++r) {
-            bool eq = false;
-            if (!f.texts.empty()) {
-                const std::string v = strip(pythonStr(cells[r]));
-                for (const auto& t : f.texts)
-                    if (!isEmpty(cells[r]) && v == strip(t)) eq = true;
-            } else {
-                if (numbers.empty()) throw UserError(fmt::format("FILTRE CRIT_COMP='{}' needs VALE, VALE_I or VALE_K", op));
-                if (!numeric)
-                    throw UserError(fmt::format("FILTRE on text column '{}' needs VALE_K, not a number", f.column));
-                eq = isNumber(cells[r]) && numberEquals(toDouble(cells[r]), numbers, f.relative, f.precision);
-            }
-            if (eq == (op == "EQ")) kept.push_back(r);
-        }
+        kept = equalRows(cells, f, numbers, numeric);
     } else if (op == "GT" || op == "GE" || op == "LT" || op == "LE") {
-        const bool lower = op[0] == 'G';  // GT/GE compare with the smallest given value
-        if (!f.texts.empty()) {
-            checkTextFilter(col, f);
-            const std::string c = lower ? *std::min_element(f.texts.begin(), f.texts.end())
-                                        : *std::max_element(f.texts.begin(), f.texts.end());
-            for (size_t r = 0; r < cells.size(); ++r) {
-                auto* s = std::get_if<std::string>(&cells[r]);
-                if (!s) continue;
-                const bool ok = op == "GT" ? *s > c : op == "GE" ? *s >= c : op == "LT" ? *s < c : *s <= c;
-                if (ok) kept.push_back(r);
-            }
-        } else {
-            if (numbers.empty()) throw UserError(fmt::format("FILTRE CRIT_COMP='{}' needs VALE, VALE_I or VALE_K", op));
-            if (!numeric)
-                throw UserError(fmt::format("FILTRE on text column '{}' needs VALE_K, not a number", f.column));
-            const double c = lower ? *std::min_element(numbers.begin(), numbers.end())
-                                   : *std::max_element(numbers.begin(), numbers.end());
-            for (size_t r = 0; r < cells.size(); ++r) {
-                if (!isNumber(cells[r])) continue;
-                const double v = toDouble(cells[r]);
-                const bool ok = op == "GT" ? v > c : op == "GE" ? v >= c : op == "LT" ? v < c : v <= c;
-                if (ok) kept.push_back(r);
-            }
-        }
+        kept = orderedRows(col, f, numbers, numeric);
     } else {
         throw UserError(fmt::format("FILTRE: unknown CRIT_COMP '{}'", op));
     }

@@ -125,6 +125,40 @@ int snapLevelSet(const Mesh& mesh, std::vector<double>& lsn) {
     return changes;
 }
 
+namespace {
+
+// Cut cells (§1.4): some vertex has LSN * LSN(first vertex) <= 0.
+std::vector<int> cutCellsOf(const Mesh& mesh, const std::vector<double>& ls) {
+    std::vector<int> cells;
+    for (int c = 0; c < mesh.cellCount(); ++c) {
+        if (mesh.cellTypes[c] == CellType::POI1) continue;
+        const auto nodes = mesh.cellNodes(c);
+        const double pivot = ls[nodes[0]];
+        for (size_t k = 1; k < nodes.size(); ++k)
+            if (ls[nodes[k]] * pivot <= 0.0) {
+                cells.push_back(c);
+                break;
+            }
+    }
+    return cells;
+}
+
+// Heaviside cells (§1.6): every cell but POI1 with an enriched node.
+std::vector<int> heavisideCellsOf(const Mesh& mesh, const std::vector<unsigned char>& nodeStatus) {
+    std::vector<int> cells;
+    for (int c = 0; c < mesh.cellCount(); ++c) {
+        if (mesh.cellTypes[c] == CellType::POI1) continue;
+        for (int n : mesh.cellNodes(c))
+            if (nodeStatus[n]) {
+                cells.push_back(c);
+                break;
+            }
+    }
+    return cells;
+}
+
+}  // namespace
+
 std::shared_ptr<Crack> buildCrack(const std::shared_ptr<const Mesh>& meshPtr, std::vector<double> lsn,
                                   const JunctionInput* junction) {
     const Mesh& mesh = *meshPtr;
@@ -137,17 +171,7 @@ std::shared_ptr<Crack> buildCrack(const std::shared_ptr<const Mesh>& meshPtr, st
     const auto& ls = crack->lsn;
     if (junction && !junction->masters.empty()) crack->masters = junctionMasters(mesh, *junction);
 
-    // Cut cells (§1.4): some vertex has LSN * LSN(first vertex) <= 0.
-    for (int c = 0; c < mesh.cellCount(); ++c) {
-        if (mesh.cellTypes[c] == CellType::POI1) continue;
-        const auto nodes = mesh.cellNodes(c);
-        const double pivot = ls[nodes[0]];
-        for (size_t k = 1; k < nodes.size(); ++k)
-            if (ls[nodes[k]] * pivot <= 0.0) {
-                crack->cutCells.push_back(c);
-                break;
-            }
-    }
+    crack->cutCells = cutCellsOf(mesh, ls);
     if (crack->cutCells.empty())
         throw UserError("DEFI_FISS/FONC_LN: the interface does not cut any cell of the mesh " + mesh.name +
                         " (it lies outside the structure); code_aster stops with XFEM_57");
@@ -197,15 +221,7 @@ std::shared_ptr<Crack> buildCrack(const std::shared_ptr<const Mesh>& meshPtr, st
         if (!forbidden) crack->nodeStatus[n] = 1;
     }
 
-    // Heaviside cells (§1.6): every cell but POI1 with an enriched node.
-    for (int c = 0; c < mesh.cellCount(); ++c) {
-        if (mesh.cellTypes[c] == CellType::POI1) continue;
-        for (int n : mesh.cellNodes(c))
-            if (crack->nodeStatus[n]) {
-                crack->heavisideCells.push_back(c);
-                break;
-            }
-    }
+    crack->heavisideCells = heavisideCellsOf(mesh, crack->nodeStatus);
     return crack;
 }
 

@@ -110,6 +110,73 @@ double contactPressure(const XfemModel& xm, const MaterialField& material, Model
     return std::min(law.lambdaEff * tr + 2.0 * law.mu * nGn, 0.0);
 }
 
+// The model's cells that are drawn (volume and skin, not POI1), in cell order.
+std::vector<int> visualisedCells(const Model& model, const Mesh& mesh) {
+    std::vector<int> modelCells;
+    for (const auto& e : model.elements) modelCells.push_back(e.cell);
+    for (const auto& e : model.skinElements) modelCells.push_back(e.cell);
+    std::sort(modelCells.begin(), modelCells.end());
+    modelCells.erase(std::unique(modelCells.begin(), modelCells.end()), modelCells.end());
+    modelCells.erase(std::remove_if(modelCells.begin(), modelCells.end(),
+                                    [&](int c) { return mesh.cellTypes[c] == CellType::POI1; }),
+                     modelCells.end());
+    return modelCells;
+}
+
+// Classical cells: their nodes first, in original order, then the cells.
+void addClassicalCells(const Mesh& mesh, const XfemModel& xm, const std::vector<int>& modelCells, Visualisation& out,
+                       std::vector<std::pair<int, int>>& cellMap) {
+    Mesh& vm = *out.mesh;
+    std::vector<int> nodeMap(mesh.nodeCount(), -1);
+    std::vector<char> used(mesh.nodeCount(), 0);
+    for (int c : modelCells)
+        if (!xm.isEnriched(c))
+            for (int n : mesh.cellNodes(c)) used[n] = 1;
+    const size_t usedCount = size_t(std::count(used.begin(), used.end(), 1));
+    vm.coords.reserve(usedCount), vm.nodeNames.reserve(usedCount), out.nodes.reserve(usedCount);
+    vm.cellTypes.reserve(modelCells.size()), vm.cellNames.reserve(modelCells.size());
+    vm.cellOffsets.reserve(modelCells.size() + 1), out.cells.reserve(modelCells.size());
+    for (int n = 0; n < mesh.nodeCount(); ++n)
+        if (used[n]) {
+            nodeMap[n] = vm.addNode(mesh.coords[n], mesh.nodeNames[n]);
+            out.nodes.push_back({n, -1, -1, -1, false});
+        }
+    for (int c : modelCells) {
+        if (xm.isEnriched(c)) continue;
+        const auto cn = mesh.cellNodes(c);
+        std::array<int, 27> nodes{};
+        for (size_t a = 0; a < cn.size(); ++a) nodes[a] = nodeMap[cn[a]];
+        const int id = vm.addCell(mesh.cellTypes[c], std::span<const int>(nodes.data(), cn.size()), mesh.cellNames[c]);
+        cellMap[c] = {id, id + 1};
+        out.cells.push_back({c, -1, -1});
+    }
+}
+
+// Name prefix of a node on an interface: the lip (side) of the interface closest to the point
+// among those the sub-cell has a side of.
+const std::string& lipPrefix(const CellCut& cut, const SubCell& sub, const CutPoint& p,
+                             const VisualisationNames& names) {
+    int best = -1;
+    double bestValue = std::numeric_limits<double>::infinity();
+    for (size_t j = 0; j < cut.cracks.size(); ++j) {
+        if (sub.heaviside[j] == 0) continue;
+        const double value = std::abs(namingLevelSet(cut, p, j));
+        if (value < bestValue) bestValue = value, best = static_cast<int>(j);
+    }
+    if (best < 0) return names.nodeX;
+    return sub.heaviside[best] < 0 ? names.nodeMinus : names.nodePlus;
+}
+
+// Sub-cells are positive in the parent's reference coordinates; keep them positive in physical
+// ones (a parent with a negative Jacobian flips them).
+void keepPositive(const CellCut& cut, int meshDim, const Mesh& vm, std::vector<int>& nodes) {
+    if (!((cut.dim == 2 && meshDim == 2) || cut.dim == 3)) return;
+    std::array<std::array<double, 3>, 4> pv{};
+    for (int v = 0; v < cut.vertexCount(); ++v) pv[v] = vm.coords[nodes[v]];
+    const auto span = std::span<const std::array<double, 3>>(pv.data(), cut.vertexCount());
+    if (simplexMeasure(cut.dim, span) < 0) std::swap(nodes[0], nodes[1]);
+}
+
 }  // namespace
 
 std::string base36(long long value) {
@@ -127,41 +194,10 @@ Visualisation buildVisualisation(const Model& model, const XfemModel& xm, const 
     Mesh& vm = *out.mesh;
     vm.dim = mesh.dim;
 
-    std::vector<int> modelCells;
-    for (const auto& e : model.elements) modelCells.push_back(e.cell);
-    for (const auto& e : model.skinElements) modelCells.push_back(e.cell);
-    std::sort(modelCells.begin(), modelCells.end());
-    modelCells.erase(std::unique(modelCells.begin(), modelCells.end()), modelCells.end());
-    modelCells.erase(std::remove_if(modelCells.begin(), modelCells.end(),
-                                    [&](int c) { return mesh.cellTypes[c] == CellType::POI1; }),
-                     modelCells.end());
-
-    // Classical cells: their nodes first, in original order, then the cells.
-    std::vector<int> nodeMap(mesh.nodeCount(), -1);
-    std::vector<char> used(mesh.nodeCount(), 0);
-    for (int c : modelCells)
-        if (!xm.isEnriched(c))
-            for (int n : mesh.cellNodes(c)) used[n] = 1;
-    const size_t usedCount = size_t(std::count(used.begin(), used.end(), 1));
-    vm.coords.reserve(usedCount), vm.nodeNames.reserve(usedCount), out.nodes.reserve(usedCount);
-    vm.cellTypes.reserve(modelCells.size()), vm.cellNames.reserve(modelCells.size());
-    vm.cellOffsets.reserve(modelCells.size() + 1), out.cells.reserve(modelCells.size());
-    for (int n = 0; n < mesh.nodeCount(); ++n)
-        if (used[n]) {
-            nodeMap[n] = vm.addNode(mesh.coords[n], mesh.nodeNames[n]);
-            out.nodes.push_back({n, -1, -1, -1, false});
-        }
+    const std::vector<int> modelCells = visualisedCells(model, mesh);
     // Cells of the visualisation mesh made from each cell: a contiguous range [first, last).
     std::vector<std::pair<int, int>> cellMap(mesh.cellCount(), {0, 0});
-    for (int c : modelCells) {
-        if (xm.isEnriched(c)) continue;
-        const auto cn = mesh.cellNodes(c);
-        std::array<int, 27> nodes{};
-        for (size_t a = 0; a < cn.size(); ++a) nodes[a] = nodeMap[cn[a]];
-        const int id = vm.addCell(mesh.cellTypes[c], std::span<const int>(nodes.data(), cn.size()), mesh.cellNames[c]);
-        cellMap[c] = {id, id + 1};
-        out.cells.push_back({c, -1, -1});
-    }
+    addClassicalCells(mesh, xm, modelCells, out, cellMap);
 
     // X-FEM cells: sub-cells, with nodes per (vertex, side) and per parent cell.
     long long nodeCounter = 0, cellCounter = 0;
@@ -187,18 +223,7 @@ Visualisation buildVisualisation(const Model& model, const XfemModel& xm, const 
                 bool onCrack = p.parentNode < 0;
                 for (size_t j = 0; j < cut->cracks.size() && !onCrack; ++j)
                     onCrack = namingLevelSet(*cut, p, j) == 0.0;
-                std::string prefix = names.nodeX;
-                if (onCrack) {
-                    // The interface closest to the point among those the sub-cell has a side of.
-                    int best = -1;
-                    double bestValue = std::numeric_limits<double>::infinity();
-                    for (size_t j = 0; j < cut->cracks.size(); ++j) {
-                        if (sub.heaviside[j] == 0) continue;
-                        const double value = std::abs(namingLevelSet(*cut, p, j));
-                        if (value < bestValue) bestValue = value, best = static_cast<int>(j);
-                    }
-                    if (best >= 0) prefix = sub.heaviside[best] < 0 ? names.nodeMinus : names.nodePlus;
-                }
+                const std::string& prefix = onCrack ? lipPrefix(*cut, sub, p, names) : names.nodeX;
                 const auto x = mapToPhysical(cut->type, xs, p.ref);
                 std::string digits = base36(++nodeCounter);
                 while (clashes(digits, names)) digits = base36(++nodeCounter);
@@ -208,14 +233,7 @@ Visualisation buildVisualisation(const Model& model, const XfemModel& xm, const 
                 made.emplace(std::move(key), id);
                 nodes.push_back(id);
             }
-            // Sub-cells are positive in the parent's reference coordinates; keep them positive in
-            // physical ones (a parent with a negative Jacobian flips them).
-            if ((cut->dim == 2 && mesh.dim == 2) || cut->dim == 3) {
-                std::array<std::array<double, 3>, 4> pv{};
-                for (int v = 0; v < cut->vertexCount(); ++v) pv[v] = vm.coords[nodes[v]];
-                const auto span = std::span<const std::array<double, 3>>(pv.data(), cut->vertexCount());
-                if (simplexMeasure(cut->dim, span) < 0) std::swap(nodes[0], nodes[1]);
-            }
+            keepPositive(*cut, mesh.dim, vm, nodes);
             const int id = vm.addCell(simplex, nodes, names.cellX + std::to_string(++cellCounter));
             cellMap[c] = {s == 0 ? id : cellMap[c].first, id + 1};
             out.cells.push_back({-1, c, s});

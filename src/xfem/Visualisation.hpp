@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "fe/Model.hpp"
-#include "fields/Fields.hpp"
+#include "fe/Result.hpp"
 #include "mesh/Mesh.hpp"
 
 namespace ma::xfem {

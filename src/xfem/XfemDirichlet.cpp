@@ -8,6 +8,7 @@
 
 #include "core/Messages.hpp"
 #include "fe/DofNumbering.hpp"
+#include "fe/MechanicalLoad.hpp"
 #include "xfem/CellGeometry.hpp"
 #include "xfem/XfemModel.hpp"
 
@@ -224,10 +225,8 @@ std::vector<LinearRelation> xfemDirichlet(const XfemModel& xm, const ImposedDof&
     return DirichletBuilder(xm, request).build(inst);
 }
 
-bool xfemImposedDofHandler(const Model& model, const ImposedDof& request, double inst,
-                           std::vector<LinearRelation>& out) {
-    const auto* xm = dynamic_cast<const XfemModel*>(model.enrichment.get());
-    if (!xm) return false;
+bool XfemModel::imposeDof(const Model& model, const ImposedDof& request, double inst,
+                          std::vector<LinearRelation>& out) const {
     int slot = 0, comp = 0;
     if (!parseDisplacementComponent(request.component, slot, comp)) return false;
     // Nodes outside the model carry no unknown: let them out like the classical path does.
@@ -236,7 +235,7 @@ bool xfemImposedDofHandler(const Model& model, const ImposedDof& request, double
     kept.nodes.clear();
     for (int n : request.nodes)
         if (numbering.hasNode(n)) kept.nodes.push_back(n);
-    auto relations = xfemDirichlet(*xm, kept, inst);
+    auto relations = xfemDirichlet(*this, kept, inst);
     out.insert(out.end(), relations.begin(), relations.end());
     return true;
 }

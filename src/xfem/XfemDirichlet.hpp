@@ -15,7 +15,7 @@
 //     interface gets DX = f+ and the H1X that gives f- on the - side.
 #include <vector>
 
-#include "fe/MechanicalLoad.hpp"
+#include "fe/DirichletRelation.hpp"
 
 namespace ma::xfem {
 
@@ -24,10 +24,5 @@ class XfemModel;
 // Relations of one DDL_IMPO component (request) on an X-FEM model. Function values are evaluated
 // in one batch at the nodes and at the points just on each side of the crossings.
 std::vector<LinearRelation> xfemDirichlet(const XfemModel& xm, const ImposedDof& request, double inst);
-
-// The hook for MechanicalLoad (fe/MechanicalLoad.hpp): handles displacement components on a model
-// whose enrichment is an XfemModel, declines (false) otherwise.
-bool xfemImposedDofHandler(const Model& model, const ImposedDof& request, double inst,
-                           std::vector<LinearRelation>& out);
 
 }  // namespace ma::xfem

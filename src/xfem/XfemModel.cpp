@@ -159,6 +159,39 @@ std::vector<int> XfemModel::cellsOfNode(int node) const {
     return {nodeCells_.begin() + nodeCellOffsets_[node], nodeCells_.begin() + nodeCellOffsets_[node + 1]};
 }
 
+// Domains of node n's support, in order of first appearance, with their weights (§3.10): each
+// volume sub-cell of the support weighs its measure times the square of the node's largest
+// shape-function gradient at its barycentre.
+void XfemModel::supportDomains(int n, const std::vector<int>& active, std::vector<std::vector<signed char>>& keys,
+                               std::vector<double>& weight, double& total, std::vector<double>& grad) const {
+    const Mesh& mesh = *mesh_;
+    for (int i = nodeCellOffsets_[n]; i < nodeCellOffsets_[n + 1]; ++i) {
+        const CellCut& cut = cuts_[cellIndex_[nodeCells_[i]]];
+        if (cut.skin) continue;
+        const auto cn = mesh.cellNodes(cut.cell);
+        const int a = static_cast<int>(std::find(cn.begin(), cn.end(), n) - cn.begin());
+        for (int s = 0; s < static_cast<int>(cut.subcells.size()); ++s) {
+            std::array<double, 3> bary{0, 0, 0};
+            for (int v = 0; v < cut.vertexCount(); ++v)
+                for (int j = 0; j < 3; ++j) bary[j] += cut.points[cut.subcells[s].vertices[v]].ref[j];
+            for (int j = 0; j < 3; ++j) bary[j] /= cut.vertexCount();
+            const double det = physicalGradients(mesh, cut.cell, bary, grad);
+            double gmax = 0;
+            for (int j = 0; j < 3; ++j) gmax = std::max(gmax, std::abs(grad[3 * a + j]));
+            const double w = cut.referenceMeasure(s) * det * gmax * gmax;
+            auto key = domainKeyFor(active, cut, s);
+            auto it = std::find(keys.begin(), keys.end(), key);
+            if (it == keys.end()) {
+                keys.push_back(key);
+                weight.push_back(w);
+            } else {
+                weight[it - keys.begin()] += w;
+            }
+            total += w;
+        }
+    }
+}
+
 void XfemModel::buildNodes() {
     const Mesh& mesh = *mesh_;
     const int nn = mesh.nodeCount();
@@ -183,35 +216,10 @@ void XfemModel::buildNodes() {
             if (cracks_[k]->nodeStatus[n]) e.activeCracks.push_back(static_cast<int>(k));
         if (!e.activeCracks.empty()) {
             for (int k : e.activeCracks) e.own.push_back(nodalDigit(k, n));
-            // Domains of the support, in order of first appearance, with their weights (§3.10).
             std::vector<std::vector<signed char>> keys;
             std::vector<double> weight;
             double total = 0;
-            for (int i = nodeCellOffsets_[n]; i < nodeCellOffsets_[n + 1]; ++i) {
-                const CellCut& cut = cuts_[cellIndex_[nodeCells_[i]]];
-                if (cut.skin) continue;
-                const auto cn = mesh.cellNodes(cut.cell);
-                const int a = static_cast<int>(std::find(cn.begin(), cn.end(), n) - cn.begin());
-                for (int s = 0; s < static_cast<int>(cut.subcells.size()); ++s) {
-                    std::array<double, 3> bary{0, 0, 0};
-                    for (int v = 0; v < cut.vertexCount(); ++v)
-                        for (int j = 0; j < 3; ++j) bary[j] += cut.points[cut.subcells[s].vertices[v]].ref[j];
-                    for (int j = 0; j < 3; ++j) bary[j] /= cut.vertexCount();
-                    const double det = physicalGradients(mesh, cut.cell, bary, grad);
-                    double gmax = 0;
-                    for (int j = 0; j < 3; ++j) gmax = std::max(gmax, std::abs(grad[3 * a + j]));
-                    const double w = cut.referenceMeasure(s) * det * gmax * gmax;
-                    auto key = domainKeyFor(e.activeCracks, cut, s);
-                    auto it = std::find(keys.begin(), keys.end(), key);
-                    if (it == keys.end()) {
-                        keys.push_back(key);
-                        weight.push_back(w);
-                    } else {
-                        weight[it - keys.begin()] += w;
-                    }
-                    total += w;
-                }
-            }
+            supportDomains(n, e.activeCracks, keys, weight, total, grad);
             auto ownIt = std::find(keys.begin(), keys.end(), e.own);
             if (ownIt == keys.end() && !keys.empty()) {
                 e.ownMissing = true;

@@ -59,6 +59,10 @@ public:
     // element, §3.9, and slots dropped by the conditioning guard, §3.10): (node, slot k >= 1).
     // The engine must fix these unknowns to 0 (eliminate them like DDL_IMPO = 0).
     std::vector<std::pair<int, int>> inactiveSlots() const override;
+    // DDL_IMPO of a displacement component (DX, DY, DZ, HkX ...) on this model: the relations of
+    // xfemDirichlet (xfem/XfemDirichlet.hpp); other components are left to the load engine.
+    bool imposeDof(const Model& model, const ImposedDof& request, double inst,
+                   std::vector<LinearRelation>& out) const override;
 
     // Data access.
     const std::vector<std::shared_ptr<const Crack>>& cracks() const { return cracks_; }
@@ -103,6 +107,8 @@ public:
 private:
     void buildCells(const Model& model);
     void buildNodes();
+    void supportDomains(int node, const std::vector<int>& active, std::vector<std::vector<signed char>>& keys,
+                        std::vector<double>& weight, double& total, std::vector<double>& grad) const;
     std::vector<signed char> domainKeyFor(const std::vector<int>& active, const CellCut& cut, int s) const;
 
     std::shared_ptr<const Mesh> mesh_;

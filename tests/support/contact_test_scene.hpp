@@ -42,6 +42,7 @@ inline Scene scene(CellType type, int n, ContactAlgorithm algo, bool bilateral =
     s.problem = std::make_unique<MechanicalProblem>(s.model, s.material, std::vector<LoadCase>{}, SolverOptions{});
     s.definition = std::make_shared<ContactDefinition>();
     s.definition->model = s.model;
+    s.definition->maxContactIterations = 30;  // DEFI_CONTACT's ITER_CONT_MAXI default
     int k = 0;
     for (const auto& c : {j.fiss1, j.fiss2, j.fiss3}) {
         ContactZone z;

@@ -84,6 +84,7 @@ TEST(FeEnrichment, GenericKernelMatchesClassicalAndUnusedSlotsAreNeutralised) {
         auto load = std::dynamic_pointer_cast<MechanicalLoad>(run("AFFE_CHAR_MECA_F", kw, "CHAR"));
         MechanicalProblem problem(model, mat, {{load, nullptr}}, SolverOptions{});
         ConvergenceOptions conv;
+        conv.maxIterations = 10;
         conv.resiGlobRela = 1e-12;
         const auto report = problem.solveIncrement(0.0, conv);
         EXPECT_TRUE(report.converged);
@@ -187,6 +188,7 @@ TEST(FeAdditionalTerms, SpringsJoinMatrixAndResidual) {
     pinned.setAdditionalTerms(springs);
     pinned.solveIncrement(0.0, ConvergenceOptions{});
     ConvergenceOptions conv;
+    conv.maxIterations = 10;
     conv.resiGlobRela = 1e-12;
     EXPECT_TRUE(sprung.solveIncrement(0.0, conv).converged);
     double scale = 0;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "fe/DofNumbering.hpp"
+#include "fe/Result.hpp"
 #include "fe_test_support.hpp"
 
 using namespace ma;

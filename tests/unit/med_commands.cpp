@@ -12,7 +12,7 @@
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "core/Units.hpp"
-#include "fields/Fields.hpp"
+#include "fe/Result.hpp"
 #include "med_io/MedReader.hpp"
 #include "med_test_support.hpp"
 #include "parser/Catalog.hpp"

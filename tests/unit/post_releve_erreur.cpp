@@ -10,7 +10,7 @@
 #include "fe/ElementKinematics.hpp"
 #include "fe/Material.hpp"
 #include "fe/Model.hpp"
-#include "fields/Fields.hpp"
+#include "fe/Result.hpp"
 #include "parser/Catalog.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "post/ErrorNorms.hpp"

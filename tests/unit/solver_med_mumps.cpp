@@ -3,6 +3,7 @@
 // side, before and after each other.
 #include <gtest/gtest.h>
 
+#include "fe/Result.hpp"
 #include "fe_test_support.hpp"
 #include "med_io/MedReader.hpp"
 
