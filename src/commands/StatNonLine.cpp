@@ -23,14 +23,13 @@ namespace {
 
 bool near(double a, double b, double precision) { return std::abs(a - b) <= precision * std::max(1.0, std::abs(b)); }
 
-// CONVERGENCE: RESI_GLOB_RELA = 1e-6 when neither criterion is given.
+// CONVERGENCE (the catalogue gives RESI_GLOB_RELA = 1e-6 when neither criterion is given).
 ConvergenceOptions convergenceOptions(const KeywordSet& kw) {
     const KeywordSet& o = kw.factor("CONVERGENCE").front();
     ConvergenceOptions conv;
     conv.maxIterations = static_cast<int>(o.integer("ITER_GLOB_MAXI"));
     conv.resiGlobMaxi = o.has("RESI_GLOB_MAXI") ? o.real("RESI_GLOB_MAXI") : -1.0;
     conv.resiGlobRela = o.has("RESI_GLOB_RELA") ? o.real("RESI_GLOB_RELA") : -1.0;
-    if (conv.resiGlobMaxi < 0.0 && conv.resiGlobRela < 0.0) conv.resiGlobRela = 1e-6;
     conv.stopOnFailure = o.text("ARRET") == "OUI";
     return conv;
 }

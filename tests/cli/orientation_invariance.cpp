@@ -136,9 +136,10 @@ TEST_P(OrientationInvariance, SameFieldsWithHalfTheCellsReversed) {
         EXPECT_NE(mess.find("reference checks OK"), std::string::npos) << mess.substr(mess.size() - 2000);
         const bool alarm = mess.find("<MAILLAGE_ORIENTATION>") != std::string::npos;
         EXPECT_EQ(alarm, k == 1) << meshFile;
-        if (k == 1)
+        if (k == 1) {
             EXPECT_NE(mess.find(std::to_string(reversed) + " cells are " + (c.dim == 3 ? "left-handed" : "clockwise")),
                       std::string::npos);
+        }
         fields[k] = test::probeField((dir / "out" / "fort.80").string(), "UTOT1___DEPL");
         tested[k] = testedValues(r.file("out/t.resu"));
         std::filesystem::rename(dir / "out", dir / ("out_" + meshFile));

@@ -81,7 +81,14 @@ TEST(ParserCatalog, DefaultOccurrenceOfAFactorKeyword) {
     EXPECT_EQ(kw.factor("NEWTON")[0].text("MATRICE"), "TANGENTE");
     EXPECT_EQ(kw.factor("CONVERGENCE")[0].integer("ITER_GLOB_MAXI"), 10);
     EXPECT_EQ(kw.factor("CONVERGENCE")[0].text("ARRET"), "OUI");
-    EXPECT_FALSE(kw.factor("CONVERGENCE")[0].has("RESI_GLOB_RELA"));  // the command applies 1e-6 when no criterion
+    // RESI_GLOB_RELA = 1e-6 when no criterion is given, none when RESI_GLOB_MAXI alone is.
+    EXPECT_EQ(kw.factor("CONVERGENCE")[0].real("RESI_GLOB_RELA"), 1e-6);
+    auto maxi = validate("STAT_NON_LINE", {{"MODELE", V::of(fake("modele_sdaster"))},
+                                           {"CHAM_MATER", V::of(fake("cham_mater"))},
+                                           {"EXCIT", V::factor({{"CHARGE", V::of(fake("char_meca"))}})},
+                                           {"INCREMENT", V::factor({{"LIST_INST", V::of(fake("listr8_sdaster"))}})},
+                                           {"CONVERGENCE", V::factor({{"RESI_GLOB_MAXI", V::of(1e-6)}})}});
+    EXPECT_FALSE(maxi.factor("CONVERGENCE")[0].has("RESI_GLOB_RELA"));
     EXPECT_EQ(kw.factor("SOLVEUR")[0].text("METHODE"), "MUMPS");
     EXPECT_EQ(kw.factor("SOLVEUR")[0].integer("NPREC"), 8);
     EXPECT_EQ(kw.factor("EXCIT")[0].text("TYPE_CHARGE"), "FIXE_CSTE");
