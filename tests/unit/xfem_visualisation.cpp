@@ -67,6 +67,23 @@ std::shared_ptr<NodalField> rigidBlocks(const XfemModel& xm) {
 
 }  // namespace
 
+// ssnv511's three interfaces on `mesh`, its X-FEM model and POST_MAIL_XFEM's mesh.
+struct VisualisedScene {
+    std::shared_ptr<Model> model;
+    std::shared_ptr<XfemModel> xm;
+    Visualisation v;
+};
+
+VisualisedScene visualisedSsnv511(const std::shared_ptr<Mesh>& mesh) {
+    auto j = xfemtest::ssnv511Cracks(mesh);
+    VisualisedScene s;
+    s.model = std::make_shared<Model>(xfemtest::model(mesh));
+    s.xm = std::make_shared<XfemModel>(*s.model, std::vector<std::shared_ptr<const Crack>>{j.fiss1, j.fiss2, j.fiss3});
+    s.model->enrichment = s.xm;
+    s.v = buildVisualisation(*s.model, *s.xm);
+    return s;
+}
+
 TEST(XfemVisualisation, Base36Names) {
     EXPECT_EQ(base36(1), "1");
     EXPECT_EQ(base36(10), "A");
@@ -94,11 +111,10 @@ TEST(XfemVisualisation, Ssnv511aMeshAndLips) {
     for (auto kind : {CellType::QUAD4, CellType::TRIA3}) {
         for (int n : {5, 6}) {
             auto mesh = xfemtest::square(n, kind);
-            auto j = xfemtest::ssnv511Cracks(mesh);
-            auto model = std::make_shared<Model>(xfemtest::model(mesh));
-            auto xm = std::make_shared<XfemModel>(*model, std::vector<std::shared_ptr<const Crack>>{j.fiss1, j.fiss2, j.fiss3});
-            model->enrichment = xm;
-            const Visualisation v = buildVisualisation(*model, *xm);
+            const auto scene = visualisedSsnv511(mesh);
+            const auto& model = scene.model;
+            const auto& xm = scene.xm;
+            const Visualisation& v = scene.v;
             const Mesh& vm = *v.mesh;
             // Cells: the classical ones copied first, then one per sub-cell.
             int subcells = 0, classical = 0;
@@ -210,11 +226,10 @@ TEST(XfemVisualisation, SubcellsArePositiveOnCodeAstersLeftHandedMeshes) {
     msg().setEcho(false);
     for (const char* file : {"ssnv511a.mmed", "ssnv511c.mmed", "ssnv511d.mmed"}) {
         auto mesh = med::readMesh(std::string(MINIASTER_SHARED_DIR) + "/astest/" + file);
-        auto j = xfemtest::ssnv511Cracks(mesh);
-        auto model = std::make_shared<Model>(xfemtest::model(mesh));
-        auto xm = std::make_shared<XfemModel>(*model, std::vector<std::shared_ptr<const Crack>>{j.fiss1, j.fiss2, j.fiss3});
-        model->enrichment = xm;
-        const Visualisation v = buildVisualisation(*model, *xm);
+        const auto scene = visualisedSsnv511(mesh);
+        const auto& model = scene.model;
+        const auto& xm = scene.xm;
+        const Visualisation& v = scene.v;
         const Mesh& vm = *v.mesh;
         double total = 0.0;
         int subcells = 0;
