@@ -96,3 +96,9 @@ set_property(TEST ${_fjunction_runs} APPEND PROPERTY FIXTURES_SETUP fjunction)
 add_test(NAME astest.fjunction_invariants
          COMMAND ${Python_EXECUTABLE} ${CMAKE_SOURCE_DIR}/tests/fjunction_check.py ${CMAKE_BINARY_DIR}/astest-out)
 set_tests_properties(astest.fjunction_invariants PROPERTIES FIXTURES_REQUIRED fjunction)
+
+# ssnv511h.comm on its own nodes re-split conformingly: exact (tests/resplit_check.sh, docs/mesh.md
+# "Conformity"), where code_aster's non-conforming ssnv511h.mmed gives both codes 0.13.
+add_test(NAME original_resplit.ssnv511h
+         COMMAND ${CMAKE_SOURCE_DIR}/tests/resplit_check.sh $<TARGET_FILE:miniaster-bin> $<TARGET_FILE:resplit_layer>
+                 ${CMAKE_SOURCE_DIR}/../shared/astest ${CMAKE_BINARY_DIR}/astest-out/resplit_ssnv511h)

@@ -8,6 +8,7 @@
 #include "fe/CellOrientation.hpp"
 #include "med_io/MedReader.hpp"
 #include "mesh/AsterMeshReader.hpp"
+#include "mesh/MeshConformity.hpp"
 #include "mesh/MeshSummary.hpp"
 #include "parser/CommandRegistry.hpp"
 
@@ -67,6 +68,20 @@ void reportOrientation(const Mesh& mesh, const std::string& name) {
                                                name, census.distorted.size(), cellList(mesh, census.distorted)));
 }
 
+// code_aster runs a non-conforming mesh without a word; its answer is discontinuous across the
+// faults, so no element passes even the patch test there (docs/mesh.md "Conformity").
+void reportConformity(const Mesh& mesh, const std::string& name) {
+    const ConformityReport r = meshConformity(mesh);
+    if (r.overlappingFaces == 0) return;
+    msg().alarm("MAILLAGE_NON_CONFORME",
+                fmt::format("mesh {}: not conforming: {} faces of its {}D cells belong to one cell only yet lie inside "
+                            "the domain, overlapping another such face ({} cells: {}); a face between two cells is "
+                            "cut differently on its two sides (a quadrangle split along different diagonals, or a "
+                            "hanging node). The displacement is discontinuous across them: no element reproduces "
+                            "even a uniform stress on this mesh",
+                            name, r.overlappingFaces, r.dimension, r.faultCells.size(), cellList(mesh, r.faultCells)));
+}
+
 ConceptPtr lireMaillage(const KeywordSet& kw, CommandContext& ctx) {
     const std::string format = kw.text("FORMAT");
     if (format != "MED" && format != "ASTER")
@@ -85,6 +100,7 @@ ConceptPtr lireMaillage(const KeywordSet& kw, CommandContext& ctx) {
     const std::string name = ctx.resultName.empty() ? meshName : ctx.resultName;
     msg().info(meshSummary(*mesh, name));
     reportOrientation(*mesh, name);
+    reportConformity(*mesh, name);
     return mesh;
 }
 

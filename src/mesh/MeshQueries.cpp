@@ -61,4 +61,24 @@ Vec3 cellNormal(const Mesh& mesh, int cell) {
     return {0, 0, 0};
 }
 
+NodeCellIndex::NodeCellIndex(const Mesh& mesh, int dim, const std::vector<int>& cells) {
+    auto each = [&](auto&& visit) {
+        const int n = cells.empty() ? mesh.cellCount() : int(cells.size());
+        for (int i = 0; i < n; ++i) {
+            const int c = cells.empty() ? i : cells[size_t(i)];
+            if (cellDimension(mesh.cellTypes[size_t(c)]) == dim) visit(c);
+        }
+    };
+    start_.assign(size_t(mesh.nodeCount()) + 1, 0);
+    each([&](int c) {
+        for (int v : mesh.cellNodes(c)) ++start_[size_t(v) + 1];
+    });
+    for (size_t i = 1; i < start_.size(); ++i) start_[i] += start_[i - 1];
+    cells_.resize(size_t(start_.back()));
+    std::vector<int> fill(start_.begin(), start_.end() - 1);
+    each([&](int c) {
+        for (int v : mesh.cellNodes(c)) cells_[size_t(fill[size_t(v)]++)] = c;
+    });
+}
+
 }  // namespace ma

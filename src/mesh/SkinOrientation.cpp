@@ -22,22 +22,7 @@ std::vector<int> reversedOrder(CellType t) {
 }
 
 SkinOrientationReport orientSkin(Mesh& mesh, const std::vector<int>& skin, const std::vector<int>& bodies, int bodyDim) {
-    // Node -> neighbouring body cells (compressed rows).
-    std::vector<int> candidates = bodies;
-    if (candidates.empty())
-        for (int c = 0; c < mesh.cellCount(); ++c)
-            if (cellDimension(mesh.cellTypes[size_t(c)]) == bodyDim) candidates.push_back(c);
-    std::vector<int> start(size_t(mesh.nodeCount()) + 1, 0);
-    for (int c : candidates) {
-        if (cellDimension(mesh.cellTypes[size_t(c)]) != bodyDim) continue;
-        for (int v : mesh.cellNodes(c)) ++start[size_t(v) + 1];
-    }
-    for (size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
-    std::vector<int> adj(size_t(start.back())), fill(start.begin(), start.end() - 1);
-    for (int c : candidates) {
-        if (cellDimension(mesh.cellTypes[size_t(c)]) != bodyDim) continue;
-        for (int v : mesh.cellNodes(c)) adj[size_t(fill[size_t(v)]++)] = c;
-    }
+    const NodeCellIndex around(mesh, bodyDim, bodies);
 
     SkinOrientationReport report;
     for (int f : skin) {
@@ -48,9 +33,7 @@ SkinOrientationReport orientSkin(Mesh& mesh, const std::vector<int>& skin, const
         auto nodes = mesh.cellNodes(f);
         const int nv = vertexCount(t);
         std::vector<int> neighbours;
-        const int first = nodes[0];
-        for (int k = start[size_t(first)]; k < start[size_t(first) + 1]; ++k) {
-            const int b = adj[size_t(k)];
+        for (const int b : around.cellsOf(nodes[0])) {
             auto bn = mesh.cellNodes(b);
             bool all = true;
             for (int j = 1; j < nv && all; ++j) all = std::find(bn.begin(), bn.end(), nodes[size_t(j)]) != bn.end();
