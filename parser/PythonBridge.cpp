@@ -397,7 +397,7 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
         run.runningCommand[0] = '\0';
         run.recordTiming(name, seconds);
         msg().info(fmt::format(" # end of {} (line {}): elapsed {:.3f} s, peak memory {:.1f} MB", name, line, seconds,
-                               peakMemoryKb() / 1024.0));
+                               static_cast<double>(peakMemoryKb()) / 1024.0));
         agreeOnCommand(run);
         if (run.failure) throw AbortRun{};
         return wrap(result);

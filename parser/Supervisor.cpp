@@ -80,10 +80,12 @@ std::string timingSummary(const RunState& run) {
     out += fmt::format("  {:<22} {:>6} {:>12} {:>18}\n", "command", "calls", "elapsed (s)", "peak memory (MB)");
     double total = 0;
     for (const auto& t : run.timings) {
-        out += fmt::format("  {:<22} {:>6} {:>12.3f} {:>18.1f}\n", t.command, t.calls, t.seconds, t.peakKb / 1024.0);
+        out += fmt::format("  {:<22} {:>6} {:>12.3f} {:>18.1f}\n", t.command, t.calls, t.seconds,
+                           static_cast<double>(t.peakKb) / 1024.0);
         total += t.seconds;
     }
-    out += fmt::format("  {:<22} {:>6} {:>12.3f} {:>18.1f}\n", "TOTAL (commands)", "", total, peakMemoryKb() / 1024.0);
+    out += fmt::format("  {:<22} {:>6} {:>12.3f} {:>18.1f}\n", "TOTAL (commands)", "", total,
+                       static_cast<double>(peakMemoryKb()) / 1024.0);
     return out;
 }
 

@@ -42,6 +42,10 @@ foreach(_name ${MINIASTER_ORIGINALS} ${MINIASTER_FAMILY})
   add_test(NAME original.${_name}
            COMMAND ${_run} $<TARGET_FILE:miniaster-bin> ${CMAKE_SOURCE_DIR}/../shared/astest/${_name}.export
                    ${CMAKE_BINARY_DIR}/astest-out/${_name} ${_opt})
+  # Label ssnv511: the originals `./miniaster test --sanitize` runs (with the unit tests).
+  if(_name IN_LIST MINIASTER_ORIGINALS)
+    set_tests_properties(original.${_name} PROPERTIES LABELS ssnv511)
+  endif()
   # ssnv511a-h on two MPI processes as well: the same TEST results as on one.
   if(_name IN_LIST MINIASTER_ORIGINALS)
     set_tests_properties(original.${_name} PROPERTIES FIXTURES_SETUP one_process.${_name})

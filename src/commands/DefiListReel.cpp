@@ -24,7 +24,7 @@ ConceptPtr defiListReel(const KeywordSet& kw, CommandContext&) {
             } else {
                 const double pas = interval.real("PAS");
                 steps = std::llround((end - current) / pas);
-                if (steps <= 0 || std::abs(current + steps * pas - end) > 1e-6 * std::abs(pas))
+                if (steps <= 0 || std::abs(current + static_cast<double>(steps) * pas - end) > 1e-6 * std::abs(pas))
                     throw UserError(interval.pathOf("PAS") + ": the interval is not a whole number of steps");
             }
             if (steps <= 0) throw UserError(interval.pathOf("NOMBRE") + " must be positive");

@@ -24,37 +24,37 @@ void GroupSet::remove(const std::string& name) {
     order_.erase(std::remove(order_.begin(), order_.end(), name), order_.end());
 }
 
-int Mesh::addCell(CellType type, std::span<const int> nodes, std::string name) {
+int Mesh::addCell(CellType type, std::span<const int> nodes, std::string cellName) {
     int index = cellCount();
     cellTypes.push_back(type);
     connectivity.insert(connectivity.end(), nodes.begin(), nodes.end());
     cellOffsets.push_back(static_cast<int>(connectivity.size()));
-    cellNames.push_back(name.empty() ? fmt::format("M{}", index + 1) : std::move(name));
+    cellNames.push_back(cellName.empty() ? fmt::format("M{}", index + 1) : std::move(cellName));
     return index;
 }
 
-int Mesh::addNode(const std::array<double, 3>& xyz, std::string name) {
+int Mesh::addNode(const std::array<double, 3>& xyz, std::string nodeName) {
     int index = nodeCount();
     coords.push_back(xyz);
-    nodeNames.push_back(name.empty() ? fmt::format("N{}", index + 1) : std::move(name));
+    nodeNames.push_back(nodeName.empty() ? fmt::format("N{}", index + 1) : std::move(nodeName));
     return index;
 }
 
-int Mesh::findNode(const std::string& name) const {
+int Mesh::findNode(const std::string& nodeName) const {
     if (nodeIndex_.size() != nodeNames.size()) {
         nodeIndex_.clear();
         for (int i = 0; i < static_cast<int>(nodeNames.size()); ++i) nodeIndex_.emplace(nodeNames[i], i);
     }
-    auto it = nodeIndex_.find(name);
+    auto it = nodeIndex_.find(nodeName);
     return it == nodeIndex_.end() ? -1 : it->second;
 }
 
-int Mesh::findCell(const std::string& name) const {
+int Mesh::findCell(const std::string& cellName) const {
     if (cellIndex_.size() != cellNames.size()) {
         cellIndex_.clear();
         for (int i = 0; i < static_cast<int>(cellNames.size()); ++i) cellIndex_.emplace(cellNames[i], i);
     }
-    auto it = cellIndex_.find(name);
+    auto it = cellIndex_.find(cellName);
     return it == cellIndex_.end() ? -1 : it->second;
 }
 

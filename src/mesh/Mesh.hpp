@@ -52,12 +52,12 @@ public:
                 static_cast<size_t>(cellOffsets[cell + 1] - cellOffsets[cell])};
     }
     // Appends a cell and returns its index; name defaults to "M<index+1>".
-    int addCell(CellType type, std::span<const int> nodes, std::string name = {});
-    int addNode(const std::array<double, 3>& xyz, std::string name = {});
+    int addCell(CellType type, std::span<const int> nodes, std::string cellName = {});
+    int addNode(const std::array<double, 3>& xyz, std::string nodeName = {});
 
     // Name lookup (-1 when absent); the index is rebuilt when the mesh grows.
-    int findNode(const std::string& name) const;
-    int findCell(const std::string& name) const;
+    int findNode(const std::string& nodeName) const;
+    int findCell(const std::string& cellName) const;
 
     // Highest topological dimension among the cells (2 for a 2D model's mesh, 3 for volumes).
     int maxCellDimension() const;

@@ -166,7 +166,7 @@ void addBlockRows(const Block& b, Table& table) {
         if (b.step) {
             table.set(r, size_t(colResu), b.action->result->name);
             table.set(r, size_t(colName), b.action->fieldName);
-            table.set(r, size_t(colOrder), (long long)b.step->order);
+            table.set(r, size_t(colOrder), static_cast<long long>(b.step->order));
             table.set(r, size_t(colInst), b.step->inst);
         } else {
             table.set(r, size_t(colField), b.field->name);

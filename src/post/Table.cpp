@@ -24,9 +24,9 @@ std::string describeCell(const Cell& c) {
     return "(empty)";
 }
 
-int Table::columnIndex(const std::string& name) const {
+int Table::columnIndex(const std::string& columnName) const {
     for (size_t i = 0; i < columns_.size(); ++i)
-        if (columns_[i].name == name) return static_cast<int>(i);
+        if (columns_[i].name == columnName) return static_cast<int>(i);
     return -1;
 }
 
@@ -44,17 +44,18 @@ const Column& Table::column(const std::string& colName) const {
     return columns_[size_t(i)];
 }
 
-size_t Table::addColumn(const std::string& name, ColumnType type) {
-    if (hasColumn(name)) throw UserError(fmt::format("table {}: column '{}' already exists", this->name, name));
-    columns_.push_back(Column{name, type, std::vector<Cell>(rows_)});
+size_t Table::addColumn(const std::string& columnName, ColumnType type) {
+    if (hasColumn(columnName))
+        throw UserError(fmt::format("table {}: column '{}' already exists", this->name, columnName));
+    columns_.push_back(Column{columnName, type, std::vector<Cell>(rows_)});
     return columns_.size() - 1;
 }
 
-size_t Table::ensureColumn(const std::string& name, ColumnType type) {
-    const int i = columnIndex(name);
-    if (i < 0) return addColumn(name, type);
+size_t Table::ensureColumn(const std::string& columnName, ColumnType type) {
+    const int i = columnIndex(columnName);
+    if (i < 0) return addColumn(columnName, type);
     if (columns_[size_t(i)].type.kind != type.kind)
-        throw UserError(fmt::format("table {}: column '{}' has type {}, not {}", this->name, name,
+        throw UserError(fmt::format("table {}: column '{}' has type {}, not {}", this->name, columnName,
                                     columns_[size_t(i)].type.name(), type.name()));
     return size_t(i);
 }

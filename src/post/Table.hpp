@@ -46,20 +46,20 @@ public:
     const std::vector<Column>& columns() const { return columns_; }
     const Column& column(size_t i) const { return columns_[i]; }
     // -1 when absent.
-    int columnIndex(const std::string& name) const;
-    bool hasColumn(const std::string& name) const { return columnIndex(name) >= 0; }
+    int columnIndex(const std::string& columnName) const;
+    bool hasColumn(const std::string& columnName) const { return columnIndex(columnName) >= 0; }
     // The column of that name; UserError naming the table and the existing columns otherwise.
-    const Column& column(const std::string& name) const;
+    const Column& column(const std::string& columnName) const;
     std::vector<std::string> columnNames() const;
 
     // Appends a column (empty cells); UserError if it exists. Returns its index.
-    size_t addColumn(const std::string& name, ColumnType type);
+    size_t addColumn(const std::string& columnName, ColumnType type);
     // Index of the column, created at the end when absent (type must then match).
-    size_t ensureColumn(const std::string& name, ColumnType type);
+    size_t ensureColumn(const std::string& columnName, ColumnType type);
     // Lets a text column hold longer texts (never narrows).
     void widenTextColumn(size_t col, int width);
     void renameColumn(const std::string& from, const std::string& to);
-    void removeColumn(const std::string& name);
+    void removeColumn(const std::string& columnName);
     // Keeps only `names`, in that order.
     void selectColumns(const std::vector<std::string>& names);
 

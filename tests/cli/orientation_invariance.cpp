@@ -164,6 +164,6 @@ INSTANTIATE_TEST_SUITE_P(Ssnv511, OrientationInvariance,
                                            Case{Kind::Hexa8, 3, "ssnv511c.comm"}, Case{Kind::Tetra4, 3, "ssnv511d.comm"},
                                            Case{Kind::Quad4, 2, "ssnv511e.comm"}, Case{Kind::Tria3, 2, "ssnv511f.comm"},
                                            Case{Kind::Hexa8, 3, "ssnv511g.comm"}, Case{Kind::Tetra4, 3, "ssnv511h.comm"}),
-                         [](const auto& info) { return std::string(info.param.comm).substr(0, 8); });
+                         [](const auto& testInfo) { return std::string(testInfo.param.comm).substr(0, 8); });
 
 }  // namespace

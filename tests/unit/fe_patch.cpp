@@ -147,7 +147,7 @@ INSTANTIATE_TEST_SUITE_P(Elements, FePatchDdlImpo,
                                            PatchCase{"TRIA3_D_PLAN", false, true, "D_PLAN", Modelisation::D_PLAN},
                                            PatchCase{"HEXA8_3D", true, false, "3D", Modelisation::TRI_D},
                                            PatchCase{"TETRA4_3D", true, true, "3D", Modelisation::TRI_D}),
-                         [](const auto& info) { return std::string(info.param.name); });
+                         [](const auto& testInfo) { return std::string(testInfo.param.name); });
 
 // Biaxial stress state from pressures: sigma_xx = -px, sigma_yy = -py (sigma_zz = -pz in 3D),
 // rollers on the opposite sides.
@@ -203,7 +203,7 @@ INSTANTIATE_TEST_SUITE_P(Elements, FePatchPressure,
                                            PatchCase{"TRIA3_C_PLAN", false, true, "C_PLAN", Modelisation::C_PLAN},
                                            PatchCase{"HEXA8_3D", true, false, "3D", Modelisation::TRI_D},
                                            PatchCase{"TETRA4_3D", true, true, "3D", Modelisation::TRI_D}),
-                         [](const auto& info) { return std::string(info.param.name); });
+                         [](const auto& testInfo) { return std::string(testInfo.param.name); });
 
 // Plane strain vs plane stress under the same imposed strain: SIZZ = nu (SIXX + SIYY) vs 0, and
 // the in-plane stresses differ through the effective moduli exactly.

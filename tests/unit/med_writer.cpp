@@ -27,7 +27,7 @@ int addCell(Mesh& m, CellType t, const std::vector<Vec3>& vertices, const Edges&
     auto mean = [&](const std::vector<int>& ids) {
         Vec3 g{0, 0, 0};
         for (int id : ids)
-            for (int d = 0; d < 3; ++d) g[d] += vertices[id - 1][d] / ids.size();
+            for (int d = 0; d < 3; ++d) g[d] += vertices[id - 1][d] / static_cast<double>(ids.size());
         return g;
     };
     for (auto [a, b] : edges) nodes.push_back(m.addNode(mean({a, b})));
@@ -138,7 +138,7 @@ TEST(MedWriter, VolumeNodeOrdersFollowTheMedNumbering) {
         auto mean = [&](const std::vector<int>& ids) {
             Vec3 g{0, 0, 0};
             for (int id : ids)
-                for (int d = 0; d < 3; ++d) g[d] += X(id)[d] / ids.size();
+                for (int d = 0; d < 3; ++d) g[d] += X(id)[d] / static_cast<double>(ids.size());
             return g;
         };
         const Vec3 p1 = X(1);

@@ -38,7 +38,10 @@ TEST(ParserFormula, EvaluateManyInOneBatch) {
     }
     auto values = f.evaluateMany(args, n);
     ASSERT_EQ(values.size(), n);
-    for (size_t i = 0; i < n; i += 997) EXPECT_DOUBLE_EQ(values[i], 3.0 * i + 0.25 * i * i + 0.5);
+    for (size_t i = 0; i < n; i += 997) {
+        const double x = static_cast<double>(i);
+        EXPECT_DOUBLE_EQ(values[i], 3.0 * x + 0.25 * x * x + 0.5);
+    }
     std::map<std::string, std::vector<double>> columns{{"X", {1.0, 2.0}}, {"Y", {0.0, 1.0}}, {"Z", {9.0, 9.0}}};
     EXPECT_EQ(f.evaluateColumns(columns, 2), (std::vector<double>{3.5, 7.5}));
 

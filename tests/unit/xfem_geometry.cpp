@@ -121,7 +121,7 @@ int checkRigidBlocks(const XfemModel& xm, double x0, double y0) {
             std::array<double, 3> u{0, 0, 0};
             for (int a = 0; a < ei.nodeCount; ++a)
                 for (int k = 0; k < ei.slots[a]; ++k)
-                    for (int j = 0; j < 3; ++j) u[j] += N[a] * ei.multiplier(p, a, k) * U[{cn[a], k}][j];
+                    for (int j = 0; j < 3; ++j) u[j] += N[a] * ei.multiplier(int(p), a, k) * U[{cn[a], k}][j];
             const auto x = mapToPhysical(m.cellTypes[c], xs, ei.refPoints[p]);
             const int b = blockOf(x[0], x[1], x0, y0);
             for (int j = 0; j < 3; ++j)

@@ -167,8 +167,8 @@ TEST(XfemVisualisation, Ssnv511aMeshAndLips) {
             ElementIntegration ei;
             for (const auto& el : model->elements) {
                 sief->cells.push_back(el.cell);
-                const int np = xm->isEnriched(el.cell) ? (xm->integration(el.cell, ei), int(ei.refPoints.size())) : 4;
-                for (int p = 0; p < np; ++p) {
+                const int points = xm->isEnriched(el.cell) ? (xm->integration(el.cell, ei), int(ei.refPoints.size())) : 4;
+                for (int p = 0; p < points; ++p) {
                     const bool x = xm->isEnriched(el.cell);
                     sief->pointCoords.push_back({0, 0, 0});
                     sief->pointWeights.push_back(1.0);
