@@ -6,6 +6,8 @@
 #include <mutex>
 #include <string>
 
+#include "core/Message.hpp"
+
 namespace ma {
 
 class Messages {
@@ -18,7 +20,14 @@ public:
     void infof(fmt::format_string<Args...> f, Args&&... args) {
         info(fmt::format(f, std::forward<Args>(args)...));
     }
-    // An alarm box (<A> ID) in code_aster's style; counted for the final diagnostic.
+    // An alarm box (<A> ID) in code_aster's style; counted for the final diagnostic. Its text
+    // comes from an area's table (core/Message.hpp), never from an inline literal.
+    template <class... A>
+    void alarm(const Message<A...>& m, const std::type_identity_t<A>&... args) {
+        alarm(m.id, format(m, args...));
+    }
+    void alarm(const FormattedMessage& m) { alarm(m.id, m.text); }
+    // Texts not yet in a table.
     void alarm(const std::string& id, const std::string& text);
     // Text for the result file (.resu): TEST lines, IMPR_TABLE output. Also echoed in the log.
     void result(const std::string& text);
