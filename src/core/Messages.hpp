@@ -24,11 +24,9 @@ public:
     // comes from an area's table (core/Message.hpp), never from an inline literal.
     template <class... A>
     void alarm(const Message<A...>& m, const std::type_identity_t<A>&... args) {
-        alarm(m.id, format(m, args...));
+        alarmBox(m.id, format(m, args...));
     }
-    void alarm(const FormattedMessage& m) { alarm(m.id, m.text); }
-    // Texts not yet in a table.
-    void alarm(const std::string& id, const std::string& text);
+    void alarm(const FormattedMessage& m) { alarmBox(m.id, m.text); }
     // Text for the result file (.resu): TEST lines, IMPR_TABLE output. Also echoed in the log.
     void result(const std::string& text);
 
@@ -49,6 +47,7 @@ public:
     void reset();
 
 private:
+    void alarmBox(const std::string& id, const std::string& text);
     void write(const std::string& text);
 
     std::recursive_mutex mutex_;
