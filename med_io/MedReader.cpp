@@ -10,6 +10,7 @@
 #include "core/Messages.hpp"
 #include "med_io/MedCellOrder.hpp"
 #include "med_io/MedFileHandle.hpp"
+#include "med_io/MedMessages.hpp"
 
 namespace ma::med {
 
@@ -266,8 +267,7 @@ private:
         }
         if (!renamedFrom_.count(kept)) {
             renamedFrom_[kept] = name;
-            msg().alarm("MED_7", "the group name '" + name + "' of MED file '" + path_ +
-                                     "' is longer than 24 characters; it is renamed '" + kept + "'");
+            msg().alarm(MED_7, name, path_, kept);
             if (report_) report_->renamedGroups.emplace_back(name, kept);
         }
         return kept;

@@ -14,6 +14,7 @@
 #include "core/Messages.hpp"
 #include "med_io/MedCellOrder.hpp"
 #include "med_io/MedFileHandle.hpp"
+#include "med_io/MedMessages.hpp"
 #include "mesh/ElementGeometry.hpp"
 #include "mesh/ShapeFunctions.hpp"
 
@@ -164,13 +165,7 @@ std::map<CellType, std::map<std::vector<double>, std::vector<int>>> elementsByLo
             key.insert(key.end(), field.pointRefCoords[size_t(p)].begin(), field.pointRefCoords[size_t(p)].end());
         groups[type][key].push_back(e);
     }
-    if (skipped > 0) {
-        std::string list;
-        for (const auto& t : skippedTypes) list += " " + t;
-        msg().alarm("MED_ELGA", fmt::format("field {}: {} elements of types{} have no reference element "
-                                            "in miniaster; their values are not printed",
-                                            fieldName, skipped, list));
-    }
+    if (skipped > 0) msg().alarm(MED_ELGA, fieldName, skipped, fmt::format("{}", fmt::join(skippedTypes, " ")));
     return groups;
 }
 
@@ -382,7 +377,7 @@ void MedWriter::writeNodalField(const std::string& fieldName, const std::string&
     for (int i = 0; i < nn; ++i)
         if (anyNode[size_t(i)]) nodes.push_back(i + 1);
     if (comps.empty()) {
-        msg().alarm("MED_NO_VALUE", "field " + fieldName + " has no value on any node: it is not printed");
+        msg().alarm(MED_NO_VALUE, fieldName);
         return;
     }
     std::vector<std::string> names;

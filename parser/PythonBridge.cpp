@@ -23,6 +23,7 @@
 #include "parser/Catalog.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "parser/Formula.hpp"
+#include "parser/ParserMessages.hpp"
 #include "parser/RunState.hpp"
 
 namespace py = pybind11;
@@ -279,7 +280,7 @@ void echoCommand(const CommandContext& ctx, const KeywordSet& kw, const py::dict
                            echoCall(ctx.resultName, name, kw, extra)));
     if (!run.debutSeen && name != "DEBUT" && !run.missingDebutReported) {
         run.missingDebutReported = true;
-        msg().alarm("SUPERVIS_1", "The command file does not start with DEBUT().");
+        msg().alarm(SUPERVIS_1);
     }
 }
 

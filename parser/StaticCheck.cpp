@@ -6,6 +6,7 @@
 
 #include "core/Messages.hpp"
 #include "parser/Catalog.hpp"
+#include "parser/ParserMessages.hpp"
 #include "parser/RunState.hpp"
 
 namespace py = pybind11;
@@ -139,8 +140,7 @@ bool checkCommandFileStatically(const std::string& source, RunState& run) {
                        .cast<std::vector<std::tuple<int, std::string, std::string>>>();
     } catch (py::error_already_set& e) {
         // A defect of the check itself must not stop a file that may well be valid.
-        msg().alarm("SUPERVIS_4", std::string("the check of the command file before its run failed (a defect of "
-                                              "miniaster; the file runs unchecked): ") + e.what());
+        msg().alarm(SUPERVIS_4, e.what());
         return true;
     }
     if (problems.empty()) return true;

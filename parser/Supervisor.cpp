@@ -15,6 +15,7 @@
 #include "core/Mpi.hpp"
 #include "core/Messages.hpp"
 #include "core/TestReport.hpp"
+#include "parser/ParserMessages.hpp"
 #include "parser/RunOptions.hpp"
 #include "parser/ExportFile.hpp"
 #include "parser/RunGuard.hpp"
@@ -105,7 +106,7 @@ void executeCommandFile(RunState& run) {
                 throw;
             py::object text = py::bytes(source).attr("decode")("latin-1");
             code = builtins.attr("compile")(text, run.commFile, "exec", 0, true);
-            msg().alarm("SUPERVIS_3", "The command file is not UTF-8: it was read as latin-1.");
+            msg().alarm(SUPERVIS_3);
         }
     } catch (py::error_already_set& e) {
         int line = 0;
@@ -299,7 +300,7 @@ void runCommandFile(const Options& opt, RunState& run, RunOutputs& outputs, cons
         py::module_::import("sys").attr("stdout").attr("flush")();
     } catch (...) {
     }
-    if (!run.failure && !run.finSeen) msg().alarm("SUPERVIS_2", "The command file ended without FIN().");
+    if (!run.failure && !run.finSeen) msg().alarm(SUPERVIS_2);
 }
 
 // Summary, diagnostic, the outputs closed (rank 0); the exit status.

@@ -10,6 +10,7 @@
 #include "fe/Model.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "xfem/Crack.hpp"
+#include "xfem/XfemMessages.hpp"
 
 namespace ma {
 namespace {
@@ -31,7 +32,7 @@ ConceptPtr defiFissXfem(const KeywordSet& kw, CommandContext& ctx) {
     const auto& occ = defi[0];
     auto fln = occ.object<Function>("FONC_LN");
     if (occ.has("FONC_LT"))
-        msg().alarm("XFEM_25", occ.pathOf("FONC_LT") + " is ignored with TYPE_DISCONTINUITE='INTERFACE'");
+        msg().alarm(XFEM_25, occ.pathOf("FONC_LT"));
 
     // One batch evaluation at every node: parameters X, Y (2D mesh) or X, Y, Z.
     const size_t nn = mesh->coords.size();
@@ -61,9 +62,7 @@ ConceptPtr defiFissXfem(const KeywordSet& kw, CommandContext& ctx) {
     auto crack = xfem::buildCrack(mesh, std::move(lsn), jonction.empty() ? nullptr : &junction);
 
     if (crack->adjustedLevelSets > 0)
-        msg().alarm("XFEM_63", fmt::format("{} nodal level-set values were moved onto the interface (their zero "
-                                           "lay within 1e-6 of an edge end)",
-                                           crack->adjustedLevelSets));
+        msg().alarm(XFEM_63, crack->adjustedLevelSets);
     msg().infof("    interface ({}): {} cut cells, {} Heaviside-enriched nodes, {} cells with an enriched node, "
                 "{} level-set values adjusted",
                 ctx.resultName.empty() ? "DEFI_FISS_XFEM" : ctx.resultName, crack->cutCells.size(),
@@ -72,8 +71,7 @@ ConceptPtr defiFissXfem(const KeywordSet& kw, CommandContext& ctx) {
         msg().infof("    junction on {}: the interface exists where {} * LSN({}) < 0{}", m.crack->name,
                     m.coef > 0 ? "+1" : "-1", m.crack->name, m.declared ? "" : " (inherited)");
     if (crack->enrichedNodeCount() == 0)
-        msg().alarm("XFEM_ENRI", "the interface enriches no node (it lies on the boundary of the structure or "
-                                 "between the cells without separating any node support)");
+        msg().alarm(XFEM_ENRI);
     if (ctx.info >= 3)
         for (int n = 0; n < mesh->nodeCount(); ++n)
             msg().infof("      {:8s} LSN = {:.12e}  status {}", mesh->nodeNames[n], crack->lsn[n],

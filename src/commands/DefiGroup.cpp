@@ -6,6 +6,7 @@
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "mesh/GroupSelection.hpp"
+#include "mesh/MeshMessages.hpp"
 #include "parser/CommandRegistry.hpp"
 
 namespace ma {
@@ -52,8 +53,7 @@ void store(Mesh& mesh, GroupSet& groups, const std::string& name, std::vector<in
         throw UserError(fmt::format("{}: group name '{}' must have 1 to 24 characters", occ.pathOf("NOM"), name));
     if (members.empty()) {
         if (alarms)
-            msg().alarm("SOUSTRUC_36", fmt::format("{}: the {} group '{}' would be empty; it is not created",
-                                                   occ.path(), kind, name));
+            msg().alarm(SOUSTRUC_36, occ.path(), kind, name);
         return;
     }
     msg().infof("    {} group {:<24} created: {} {}", kind, name, members.size(),
@@ -115,7 +115,7 @@ void createNodeGroups(Mesh& mesh, const KeywordSet& occ, bool alarms) {
     } else if (occ.has("TOUT_GROUP_MA")) {
         for (const auto& g : std::vector<std::string>(mesh.cellGroups.names())) {
             if (mesh.nodeGroups.has(g)) {
-                if (alarms) msg().alarm("SOUSTRUC_37", "node group '" + g + "' already exists: it is kept as it is");
+                if (alarms) msg().alarm(SOUSTRUC_37, g);
                 continue;
             }
             store(mesh, mesh.nodeGroups, g, nodesOfCells(mesh, mesh.cellGroups.get(g), nodeCriterion(occ)), occ,
@@ -165,8 +165,7 @@ ConceptPtr defiGroup(const KeywordSet& kw, CommandContext& ctx) {
                     groups.remove(name);
                     msg().infof("    {} group {} destroyed", kind, name);
                 } else if (alarms) {
-                    msg().alarm("SOUSTRUC_38", fmt::format("{}: there is no {} group '{}' to destroy",
-                                                           occ.pathOf("NOM"), kind, name));
+                    msg().alarm(SOUSTRUC_38, occ.pathOf("NOM"), kind, name);
                 }
             }
     };

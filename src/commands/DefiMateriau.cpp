@@ -26,8 +26,7 @@ ConceptPtr defiMateriau(const KeywordSet& kw, CommandContext&) {
         throw UserError(fmt::format("{} = {}: Poisson's ratio must lie in ]-1, 0.5] (at NU = -1 the shear modulus "
                                     "E/(2(1+NU)) is infinite)",
                                     e.pathOf("NU"), m->nu));
-    if (const std::string near = nearlyDegenerateElasticity(*m); !near.empty())
-        msg().alarm("MATERIAL_1", e.pathOf("NU") + ": " + near);
+    if (const auto near = nearlyDegenerateElasticity(*m, e.pathOf("NU"))) msg().alarm(*near);
     if (e.has("RHO")) m->hasRho = true, m->rho = e.real("RHO");
     msg().infof("    ELAS: E = {}, NU = {}{}", m->E, m->nu, m->hasRho ? fmt::format(", RHO = {}", m->rho) : "");
     return m;

@@ -14,6 +14,7 @@
 #include "commands/ImprResuGmsh.hpp"
 #include "med_io/MedWriter.hpp"
 #include "parser/CommandRegistry.hpp"
+#include "post/PostMessages.hpp"
 
 namespace ma {
 
@@ -92,9 +93,7 @@ void printResult(med::MedWriter& w, const Result& result, const KeywordSet& occ)
             } else if (auto g = step->gauss(nomCham)) {
                 w.writeGaussField(medName, meshName, *g, step->order, step->order, step->inst);
             } else {
-                msg().alarm("RESULT1_6", fmt::format("{}: field {} does not exist at NUME_ORDRE {} of result {}; "
-                                                     "it is not printed",
-                                                     occ.path(), nomCham, step->order, result.name));
+                msg().alarm(RESULT1_6, occ.path(), nomCham, step->order, result.name);
                 continue;
             }
             msg().infof("    field {} (NUME_ORDRE {}, INST {}) printed as {}", nomCham, step->order, step->inst, medName);

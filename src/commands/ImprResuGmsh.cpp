@@ -17,6 +17,7 @@
 #include "core/Units.hpp"
 #include "fe/Result.hpp"
 #include "post/GmshWriter.hpp"
+#include "post/PostMessages.hpp"
 
 namespace ma {
 namespace {
@@ -147,9 +148,7 @@ std::vector<View> nodalViews(const FieldSteps& f, const ViewRequest& r, const st
 std::vector<View> gaussViews(const FieldSteps& f, const ViewRequest& r, const std::vector<int>& cells,
                              const std::string& where) {
     if (expectedCount(r.typeCham) != 0)
-        msg().alarm("PREPOST6_35", fmt::format("{}: a field at Gauss points is written as scalar views (one per "
-                                               "component), not as TYPE_CHAM='{}'",
-                                               where, r.typeCham));
+        msg().alarm(PREPOST6_35, where, r.typeCham);
     std::vector<View> out;
     for (const auto& c : r.nomCmp.empty() ? f.components() : r.nomCmp) {
         View v{f.title + "_" + c, ViewKind::Scalar, f.times, true, {}, {}};
@@ -184,9 +183,7 @@ std::vector<View> resultViews(const Result& result, const KeywordSet& occ, const
             else if (auto g = s->gauss(nomCham)) f.gauss.push_back(g), f.times.push_back(s->inst);
         }
         if (f.times.empty() || (!f.nodal.empty() && !f.gauss.empty())) {
-            msg().alarm("PREPOST2_59", fmt::format("{}: no field {} in result {} at the selected steps; nothing written "
-                                                   "for it",
-                                                   occ.path(), nomCham, result.name));
+            msg().alarm(PREPOST2_59, occ.path(), nomCham, result.name);
             continue;
         }
         auto views = f.nodal.empty() ? gaussViews(f, r, cells, occ.path()) : nodalViews(f, r, cells, occ.path());
@@ -255,9 +252,7 @@ ConceptPtr imprResuGmsh(const KeywordSet& kw, CommandContext& ctx) {
             std::vector<CellType> skipped;
             text += gmsh::view(*mesh, v, version, &skipped);
             if (!skipped.empty())
-                msg().alarm("ALGELINE_64", fmt::format("{}: view {}: {} cells of type {} are not written (code_aster's GMSH "
-                                                       "output does not split this type into linear cells)",
-                                                       occ.path(), v.name, skipped.size(), cellTypeName(skipped.front())));
+                msg().alarm(ALGELINE_64, occ.path(), v.name, skipped.size(), cellTypeName(skipped.front()));
             msg().infof("    view {} ({} steps, {} cells)", v.name, v.times.size(), v.cells.size());
             ++written;
         }

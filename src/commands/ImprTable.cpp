@@ -16,6 +16,7 @@
 #include "core/Mpi.hpp"
 #include "core/Units.hpp"
 #include "parser/CommandRegistry.hpp"
+#include "post/PostMessages.hpp"
 #include "post/TablePrinter.hpp"
 #include "post/TableOperations.hpp"
 
@@ -57,8 +58,7 @@ ConceptPtr imprTable(const KeywordSet& kw, CommandContext& ctx) {
             else missing.push_back(n);
         }
         if (!missing.empty())
-            msg().alarm("TABLE0_7", fmt::format("IMPR_TABLE: columns {} are not in table {}; they are not printed.",
-                                                fmt::join(missing, ", "), table->name));
+            msg().alarm(TABLE0_7, fmt::format("{}", fmt::join(missing, ", ")), table->name);
     }
     options.realFormat = fortranToPrintf(kw.text("FORMAT_R"));
     const std::string text = formatTable(printed, options);

@@ -9,6 +9,7 @@
 #include "med_io/MedReader.hpp"
 #include "mesh/AsterMeshReader.hpp"
 #include "mesh/MeshConformity.hpp"
+#include "mesh/MeshMessages.hpp"
 #include "mesh/MeshSummary.hpp"
 #include "parser/CommandRegistry.hpp"
 
@@ -22,8 +23,7 @@ std::shared_ptr<Mesh> readMedMesh(const KeywordSet& kw, const std::string& path,
     msg().infof("    mesh '{}' read from unit {} ({}), space dimension {}", report.meshName, unit, path,
                 report.spaceDim);
     if (nomMed.empty() && report.meshesInFile.size() > 1)
-        msg().alarm("MED_MULTI", "the MED file holds " + std::to_string(report.meshesInFile.size()) +
-                                     " meshes; the first one, '" + report.meshName + "', is read (use NOM_MED to choose)");
+        msg().alarm(MED_MULTI, report.meshesInFile.size(), report.meshName);
     meshName = report.meshName;
     return mesh;
 }
@@ -33,7 +33,7 @@ std::shared_ptr<Mesh> readMailMesh(const std::string& path, int unit) {
     auto mesh = readAsterMesh(path, &report);
     msg().infof("    mesh read from unit {} ({}, FORMAT='ASTER'), space dimension {}", unit, path, mesh->dim);
     for (const auto& line : report.title) msg().info("    TITRE: " + line);
-    for (const auto& [id, text] : report.alarms) msg().alarm(id, "mesh " + path + ", " + text);
+    for (const auto& alarm : report.alarms) msg().alarm(alarm);
     return mesh;
 }
 
@@ -56,16 +56,11 @@ void reportOrientation(const Mesh& mesh, const std::string& name) {
         std::string counts;
         for (const auto& [type, n] : census.reversed)
             counts += fmt::format("{}{} of {} {}", counts.empty() ? "" : ", ", n, census.total.at(type), cellTypeName(type));
-        msg().alarm("MAILLAGE_ORIENTATION",
-                    fmt::format("mesh {}: {} cells are {} in code_aster's node order (negative Jacobian): {}; they are "
-                                "integrated with |det J|, as code_aster does, and give the same elements as cells "
-                                "numbered the other way",
-                                name, census.reversedCount(), census.dimension == 3 ? "left-handed" : "clockwise", counts));
+        msg().alarm(MAILLAGE_ORIENTATION, name, census.reversedCount(),
+                    census.dimension == 3 ? "left-handed" : "clockwise", counts);
     }
     if (!census.distorted.empty())
-        msg().alarm("MAILLAGE1_1", fmt::format("mesh {}: {} cell(s) are too distorted, their Jacobian changes sign among "
-                                               "the integration points: {}; is the connectivity in code_aster's order?",
-                                               name, census.distorted.size(), cellList(mesh, census.distorted)));
+        msg().alarm(MAILLAGE1_1, name, census.distorted.size(), cellList(mesh, census.distorted));
 }
 
 // code_aster runs a non-conforming mesh without a word; its answer is discontinuous across the
@@ -73,13 +68,8 @@ void reportOrientation(const Mesh& mesh, const std::string& name) {
 void reportConformity(const Mesh& mesh, const std::string& name) {
     const ConformityReport r = meshConformity(mesh);
     if (r.overlappingFaces == 0) return;
-    msg().alarm("MAILLAGE_NON_CONFORME",
-                fmt::format("mesh {}: not conforming: {} faces of its {}D cells belong to one cell only yet lie inside "
-                            "the domain, overlapping another such face ({} cells: {}); a face between two cells is "
-                            "cut differently on its two sides (a quadrangle split along different diagonals, or a "
-                            "hanging node). The displacement is discontinuous across them: no element reproduces "
-                            "even a uniform stress on this mesh",
-                            name, r.overlappingFaces, r.dimension, r.faultCells.size(), cellList(mesh, r.faultCells)));
+    msg().alarm(MAILLAGE_NON_CONFORME, name, r.overlappingFaces, r.dimension, r.faultCells.size(),
+                cellList(mesh, r.faultCells));
 }
 
 ConceptPtr lireMaillage(const KeywordSet& kw, CommandContext& ctx) {
@@ -95,7 +85,7 @@ ConceptPtr lireMaillage(const KeywordSet& kw, CommandContext& ctx) {
     bool check = true;
     for (const auto& occ : kw.factor("VERI_MAIL")) check = occ.text("VERIF") == "OUI";
     if (check)
-        for (const auto& defect : meshDefects(*mesh)) msg().alarm("MODELISA_VERI_MAIL", "mesh " + path + ": " + defect);
+        for (const auto& defect : meshDefects(*mesh, path)) msg().alarm(defect);
 
     const std::string name = ctx.resultName.empty() ? meshName : ctx.resultName;
     msg().info(meshSummary(*mesh, name));

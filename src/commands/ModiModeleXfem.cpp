@@ -13,6 +13,7 @@
 #include "parser/CommandRegistry.hpp"
 #include "parser/RunOptions.hpp"
 #include "xfem/SubcellQuadrature.hpp"
+#include "xfem/XfemMessages.hpp"
 #include "xfem/XfemModel.hpp"
 
 namespace ma {
@@ -100,14 +101,9 @@ void logSubcellQuadrature(const xfem::XfemModel& xm) {
                 volumePoints, volumeCells, points - volumePoints, static_cast<int>(xm.xfemCells().size()) - volumeCells,
                 subcells);
     for (const auto& [parent, cells] : belowStrainDegree)
-        msg().alarm("XFEM_SUBCELL_RULE",
-                    fmt::format("--subcell-quadrature {}: the strains of the {} shape functions are polynomials of "
-                                "degree {} on the sub-cells, which the rule {} does not integrate exactly: uniform "
-                                "stress states are no longer reproduced on the {} X-FEM {} elements (the patch test "
-                                "fails, the answer carries a quadrature error). Use a degree >= {}.",
-                                degree, cellTypeName(parent), xfem::strainDegree(parent),
-                                xfem::lowestRuleOfDegree(xfem::subcellType({xm.dim(), false, false}), degree), cells,
-                                cellTypeName(parent), xfem::strainDegree(parent)));
+        msg().alarm(XFEM_SUBCELL_RULE, degree, cellTypeName(parent), xfem::strainDegree(parent),
+                    xfem::lowestRuleOfDegree(xfem::subcellType({xm.dim(), false, false}), degree), cells,
+                    cellTypeName(parent), xfem::strainDegree(parent));
 }
 
 ConceptPtr modiModeleXfem(const KeywordSet& kw, CommandContext& ctx) {

@@ -12,6 +12,7 @@
 
 #include "contact/ActiveSetHistory.hpp"
 #include "contact/ContactIntegration.hpp"
+#include "contact/ContactMessages.hpp"
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "xfem/Crack.hpp"
@@ -43,15 +44,8 @@ void announceReplacedRules(const ContactTerms& terms, const ContactDefinition& d
     for (const auto& [key, zones] : weak) {
         const auto& [rule, traceDegree] = key;
         const int order = orders[key];
-        msg().alarm("CONTACT_INTEGRATION",
-                    fmt::format("contact zone(s) {}: the traces of the shape functions of the QUAD4/HEXA8 cells on "
-                                "these facets have degree {}, above the degree that {} integrates exactly; with it "
-                                "even a solution the elements represent exactly (a uniform stress per block) would "
-                                "only be approximated (ssnv511g with the vertex rule: relative energy error "
-                                "5.8e-4). miniaster integrates these facets with INTEGRATION='GAUSS', ORDRE_INT={} "
-                                "({} {}) instead, which is exact for them; the other facets keep the zone's rule.",
-                                fmt::join(zones, ", "), traceDegree, rule, order, xm.dim() == 2 ? "SE2" : "TR3",
-                                facetFamily(xm.dim(), ContactIntegration{"GAUSS", order})));
+        msg().alarm(CONTACT_INTEGRATION_DEGREE, fmt::format("{}", fmt::join(zones, ", ")), traceDegree, rule, order,
+                    xm.dim() == 2 ? "SE2" : "TR3", facetFamily(xm.dim(), ContactIntegration{"GAUSS", order}));
     }
     // A rule with a negative weight (3D ORDRE_INT=3, TR3 FPG4, centre weight -27/96) would give its
     // contact point a term concave in the point's pressure and an indefinite stabilisation on traces it
@@ -61,14 +55,8 @@ void announceReplacedRules(const ContactTerms& terms, const ContactDefinition& d
         const RuleShortfall& s = terms.ruleShortfalls()[z];
         if (!s.negativeWeight) continue;
         const ContactIntegration replacement{"GAUSS", s.negativeWeightOrder};
-        msg().alarm("CONTACT_INTEGRATION",
-                    fmt::format("contact zone {}: {} has a negative weight; a contact point of negative weight turns its "
-                                "term concave in the point's contact pressure and the contact stabilisation indefinite "
-                                "(measured on ssnv513g: a negative pivot and contact statuses cycling without end). "
-                                "miniaster integrates the zone's {} facets with {} instead (positive weights, at "
-                                "least the same degree).",
-                                definition.zones[z].crack->name, describe(xm.dim(), definition.zones[z].integration),
-                                s.facets, describe(xm.dim(), replacement)));
+        msg().alarm(CONTACT_INTEGRATION_NEGATIVE_WEIGHT, definition.zones[z].crack->name,
+                    describe(xm.dim(), definition.zones[z].integration), s.facets, describe(xm.dim(), replacement));
     }
 }
 
@@ -118,17 +106,8 @@ std::shared_ptr<ContactTerms> attachContact(MechanicalProblem& problem, const Ma
                     stats.unmatched, xm.dim() == 2 ? "length" : "area", stats.unmatchedMeasure, missing);
     constexpr double kMissingFraction = 1e-11;
     if (missing > kMissingFraction)
-        msg().alarm("CONTACT_SLIVER",
-                    fmt::format("{} sub-cell face(s) on the contact interfaces ({} {:.3e}, {:.1e} of the interfaces) "
-                                "have no sub-cell of the other side: the two sides of the interface are cut differently "
-                                "there (next to a junction, or where the interfaces pass within round-off of the "
-                                "nodes) and no overlap of their faces was found. No contact term is written there, "
-                                "so the answer can lose "
-                                "precision (relative errors of 1 to 100 times that fraction measured, "
-                                "docs/study/stability.md). Moving the interfaces or the mesh by a fraction of a cell "
-                                "avoids it.",
-                                stats.unmatched, xm.dim() == 2 ? "total length" : "total area", stats.unmatchedMeasure,
-                                missing));
+        msg().alarm(CONTACT_SLIVER, stats.unmatched, xm.dim() == 2 ? "total length" : "total area",
+                    stats.unmatchedMeasure, missing);
     auto terms = std::make_shared<ContactTerms>(problem, material, definition, std::move(facets));
     if (terms->mergedPenaltyPoints() > 0)
         msg().infof("    penalised contact: {} contact points ({} merged with a point of the same gap at a shared facet "

@@ -46,7 +46,7 @@ void Messages::info(const std::string& text) {
     }
 }
 
-void Messages::alarm(const std::string& id, const std::string& text) {
+void Messages::alarmBox(const std::string& id, const std::string& text) {
     std::lock_guard lock(mutex_);
     ++alarms_;
     std::string box = "   !" + std::string(70, '-') + "!\n";

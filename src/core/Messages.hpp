@@ -6,6 +6,8 @@
 #include <mutex>
 #include <string>
 
+#include "core/Message.hpp"
+
 namespace ma {
 
 class Messages {
@@ -18,8 +20,13 @@ public:
     void infof(fmt::format_string<Args...> f, Args&&... args) {
         info(fmt::format(f, std::forward<Args>(args)...));
     }
-    // An alarm box (<A> ID) in code_aster's style; counted for the final diagnostic.
-    void alarm(const std::string& id, const std::string& text);
+    // An alarm box (<A> ID) in code_aster's style; counted for the final diagnostic. Its text
+    // comes from an area's table (core/Message.hpp), never from an inline literal.
+    template <class... A>
+    void alarm(const Message<A...>& m, const std::type_identity_t<A>&... args) {
+        alarmBox(m.id, format(m, args...));
+    }
+    void alarm(const FormattedMessage& m) { alarmBox(m.id, m.text); }
     // Text for the result file (.resu): TEST lines, IMPR_TABLE output. Also echoed in the log.
     void result(const std::string& text);
 
@@ -40,6 +47,7 @@ public:
     void reset();
 
 private:
+    void alarmBox(const std::string& id, const std::string& text);
     void write(const std::string& text);
 
     std::recursive_mutex mutex_;

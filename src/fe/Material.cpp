@@ -1,3 +1,4 @@
+#include "fe/FeMessages.hpp"
 #include "fe/Material.hpp"
 
 #include <fmt/format.h>
@@ -14,17 +15,11 @@ namespace {
 constexpr double kDegenerateGap = 1e-6;
 }  // namespace
 
-std::string nearlyDegenerateElasticity(const Material& m) {
+std::optional<FormattedMessage> nearlyDegenerateElasticity(const Material& m, const std::string& where) {
     if (1.0 - 2.0 * m.nu < kDegenerateGap && m.nu < 0.5)
-        return fmt::format("NU = {} is nearly incompressible in 3D and plane strain (1 - 2 NU = {:.1e}, "
-                           "lambda/mu = {:.1e}): the stiffness matrix is singular to working precision "
-                           "(displacement elements lock); use NU <= 0.4999",
-                           m.nu, 1.0 - 2.0 * m.nu, 2.0 * m.nu / (1.0 - 2.0 * m.nu));
-    if (1.0 + m.nu < kDegenerateGap)
-        return fmt::format("NU = {} is close to -1 (1 + NU = {:.1e}): the shear modulus E/(2(1+NU)) is nearly "
-                           "infinite and the stiffness matrix singular to working precision",
-                           m.nu, 1.0 + m.nu);
-    return {};
+        return formatted(MATERIAL_1_INCOMPRESSIBLE, where, m.nu, 1.0 - 2.0 * m.nu, 2.0 * m.nu / (1.0 - 2.0 * m.nu));
+    if (1.0 + m.nu < kDegenerateGap) return formatted(MATERIAL_1_SHEAR_INFINITE, where, m.nu, 1.0 + m.nu);
+    return std::nullopt;
 }
 
 std::string degenerateMaterialCause(const MaterialField& field) {
@@ -32,8 +27,8 @@ std::string degenerateMaterialCause(const MaterialField& field) {
     std::string out;
     for (const auto& m : field.cellMaterial) {
         if (!m || !seen.insert(m.get()).second) continue;
-        const std::string near = nearlyDegenerateElasticity(*m);
-        if (!near.empty()) out += (out.empty() ? "" : "; ") + fmt::format("material {}: {}", m->name, near);
+        if (const auto near = nearlyDegenerateElasticity(*m, "material " + m->name))
+            out += (out.empty() ? "" : "; ") + near->text;
     }
     return out;
 }

@@ -1,9 +1,12 @@
 #pragma once
 // DEFI_MATERIAU (mater_sdaster) and AFFE_MATERIAU (cham_mater): isotropic linear elasticity.
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "core/Concept.hpp"
+#include "core/Message.hpp"
 #include "mesh/Mesh.hpp"
 
 namespace ma {
@@ -20,9 +23,10 @@ public:
     double rho = 0.0;
 };
 
-// "" for an ordinary material; else why Hooke's law is near its limit (NU close to 0.5:
+// Nothing for an ordinary material; else why Hooke's law is near its limit (NU close to 0.5:
 // nearly incompressible, or to -1), which makes the stiffness matrix singular to working precision.
-std::string nearlyDegenerateElasticity(const Material& m);
+// `where` heads the text: the keyword path, or "material M".
+std::optional<FormattedMessage> nearlyDegenerateElasticity(const Material& m, const std::string& where);
 // The materials of `field` that are nearly degenerate, as the likely cause of a singular system ("" when none).
 std::string degenerateMaterialCause(const MaterialField& field);
 

@@ -10,6 +10,7 @@
 #include "core/Messages.hpp"
 #include "core/Mpi.hpp"
 #include "fe/ElementLoop.hpp"
+#include "fe/FeMessages.hpp"
 
 namespace ma {
 
@@ -100,12 +101,11 @@ private:
 };
 
 void reportNonConvergence(double inst, const ConvergenceOptions& options, const IncrementReport& report) {
-    const std::string text = fmt::format(
-        "Newton did not converge at INST {} in {} iterations (ITER_GLOB_MAXI): RESI_GLOB_RELA = {:.3e}, "
-        "RESI_GLOB_MAXI = {:.3e}",
-        inst, options.maxIterations, report.relativeResidual, report.maxResidual);
-    if (options.stopOnFailure) throw NonConvergenceError(text);
-    msg().alarm("MECANONLINE5_37", text + "\nARRET='NON': the computation goes on with this unconverged state.");
+    const FormattedMessage alarm =
+        formatted(MECANONLINE5_37, inst, options.maxIterations, report.relativeResidual, report.maxResidual);
+    // ARRET='OUI' stops on the facts: the alarm's first line.
+    if (options.stopOnFailure) throw NonConvergenceError(alarm.text.substr(0, alarm.text.find('\n')));
+    msg().alarm(alarm);
 }
 
 }  // namespace

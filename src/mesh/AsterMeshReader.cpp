@@ -6,6 +6,7 @@
 
 #include "core/Error.hpp"
 #include "mesh/AsterMeshLexer.hpp"
+#include "mesh/MeshMessages.hpp"
 
 namespace ma {
 
@@ -39,7 +40,7 @@ struct BlockHeader {
 class AsterMeshParser {
 public:
     AsterMeshParser(std::istream& in, const std::string& source, AsterMeshReport& report)
-        : lex_(in, source), report_(report) {}
+        : lex_(in, source), source_(source), report_(report) {}
 
     std::shared_ptr<Mesh> parse();
 
@@ -61,6 +62,7 @@ private:
                    const char* kind, GroupSet& out);
 
     AsterLexer lex_;
+    std::string source_;
     AsterMeshReport& report_;
     int dim_ = 0, dimLine_ = 0;
     std::vector<NodeRecord> nodes_;
@@ -217,8 +219,7 @@ void AsterMeshParser::readCells(const AsterToken& keyword, CellType type) {
 std::string AsterMeshParser::groupName(const AsterToken& tok, const std::string& name) {
     if (name.size() <= kGroupNameLength) return name;
     const std::string cut = name.substr(0, kGroupNameLength);
-    report_.alarms.emplace_back("MODELISA4_97", "line " + std::to_string(tok.line) + ": group name '" + name +
-                                                    "' is cut to 24 characters: '" + cut + "'");
+    report_.alarms.push_back(formatted(MODELISA4_97, source_, tok.line, name, cut));
     return cut;
 }
 
@@ -277,13 +278,11 @@ void AsterMeshParser::addGroups(const std::vector<GroupRecord>& records,
             if (!seen[size_t(it->second)]++)
                 members.push_back(it->second);
             else
-                report_.alarms.emplace_back(ofNodes ? "MODELISA5_6" : "MODELISA5_8",
-                                            "line " + std::to_string(line) + ": '" + name + "' is repeated in " +
-                                                kind + " '" + group.name + "'; the repeat is dropped");
+                report_.alarms.push_back(
+                    formatted(ofNodes ? MODELISA5_6 : MODELISA5_8, source_, line, name, group.name));
         }
         if (members.empty())
-            report_.alarms.emplace_back("MODELISA4_80", "line " + std::to_string(group.line) + ": " + kind + " '" +
-                                                            group.name + "' is empty and is not created");
+            report_.alarms.push_back(formatted(MODELISA4_80, source_, group.line, kind, group.name));
         else
             out.set(group.name, std::move(members));
     }

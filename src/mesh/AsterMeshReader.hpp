@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/Message.hpp"
 #include "mesh/Mesh.hpp"
 
 namespace ma {
@@ -14,9 +15,9 @@ namespace ma {
 // What the reader found besides the mesh, for the command's log.
 struct AsterMeshReport {
     std::vector<std::string> title;  // TITRE lines, verbatim
-    // (code_aster message id, text): empty groups left out, repeated group members dropped,
-    // group names cut to 24 characters.
-    std::vector<std::pair<std::string, std::string>> alarms;
+    // Empty groups left out, repeated group members dropped, group names cut to 24 characters
+    // (src/mesh/MeshMessages.hpp), for the command to raise after its own lines.
+    std::vector<FormattedMessage> alarms;
 };
 
 // Reads a .mail text. `source` names it in errors ("mesh file 'x.mail', line 12: ...").

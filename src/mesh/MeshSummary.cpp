@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <map>
 
+#include "mesh/MeshMessages.hpp"
+
 namespace ma {
 
 std::string meshSummary(const Mesh& mesh, const std::string& meshName) {
@@ -26,14 +28,14 @@ std::string meshSummary(const Mesh& mesh, const std::string& meshName) {
     return s;
 }
 
-std::vector<std::string> meshDefects(const Mesh& mesh) {
-    std::vector<std::string> out;
+std::vector<FormattedMessage> meshDefects(const Mesh& mesh, const std::string& path) {
+    std::vector<FormattedMessage> out;
     std::vector<char> used(size_t(mesh.nodeCount()), 0);
     for (int v : mesh.connectivity) used[size_t(v)] = 1;
     const auto orphans = std::count(used.begin(), used.end(), 0);
     if (orphans > 0) {
         int first = int(std::find(used.begin(), used.end(), 0) - used.begin());
-        out.push_back(fmt::format("{} nodes belong to no cell (first one: {})", orphans, mesh.nodeNames[size_t(first)]));
+        out.push_back(formatted(MODELISA_VERI_MAIL_ORPHAN_NODES, path, orphans, mesh.nodeNames[size_t(first)]));
     }
     int repeated = 0;
     std::string example;
@@ -45,7 +47,7 @@ std::vector<std::string> meshDefects(const Mesh& mesh) {
         if (twice && repeated++ == 0) example = mesh.cellNames[size_t(c)];
     }
     if (repeated > 0)
-        out.push_back(fmt::format("{} cells have the same node twice (degenerate cells; first one: {})", repeated, example));
+        out.push_back(formatted(MODELISA_VERI_MAIL_REPEATED_NODE, path, repeated, example));
     return out;
 }
 

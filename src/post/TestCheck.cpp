@@ -10,6 +10,7 @@
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
+#include "post/PostMessages.hpp"
 #include "post/PythonFormat.hpp"
 
 namespace ma {
@@ -318,9 +319,7 @@ std::vector<TestLine> runTestTable(const Table& table, const TestTableRequest& r
         else skip = true;
     }
     if (skip && !hasReference)
-        msg().alarm("TEST0_11",
-                    "A non-regression test with a null VALE_CALC is meaningless: the check is skipped.\n"
-                    "Give ORDRE_GRANDEUR (with CRITERE='ABSOLU') or a reference value.");
+        msg().alarm(TEST0_11);
 
     std::string h1 = ljust("---- TABLE", 21) + ljust(" NOM_PARA", 17);
     std::string h2 = ljust("     " + ljust(rq.tableName, 8), 21) + ljust(" " + rq.column.substr(0, 16), 17);
@@ -360,9 +359,7 @@ std::vector<TestLine> runTestTable(const Table& table, const TestTableRequest& r
         }
         CheckOutput out = formatCheck(in);
         if (skipLine)
-            msg().alarm("TEST0_12",
-                        "The non-regression value (VALE_CALC) is zero or below the machine precision: the check "
-                        "is skipped (SKIP).\nGive ORDRE_GRANDEUR with CRITERE='ABSOLU' to make it effective.");
+            msg().alarm(TEST0_12);
         msg().result(out.text);
         TestLine line{type, out.status, describe(rq, in, out)};
         testReport().add(line);

@@ -13,6 +13,7 @@
 #include "core/Timing.hpp"
 #include "core/Messages.hpp"
 #include "solver/LinearSolverImpl.hpp"
+#include "solver/SolverMessages.hpp"
 
 namespace ma {
 
@@ -42,9 +43,7 @@ void checkSolution(std::span<const double> x, double residual, const SolverOptio
             throw SingularSystemError("singular system: the solution contains NaN or Inf. Likely cause: " +
                                  options.singularHint + ".");
     if (!std::isfinite(residual) || residual > 1e-6)
-        msg().alarm("FACTOR_57", fmt::format("The relative residual of the linear solve is {:.3e}: the solution "
-                                             "is inaccurate (ill-conditioned or nearly singular system).",
-                                             residual));
+        msg().alarm(FACTOR_57, residual);
 }
 
 

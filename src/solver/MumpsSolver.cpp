@@ -21,6 +21,7 @@
 #include "solver/MetisOrdering.hpp"
 #include "solver/MumpsDistributed.hpp"
 #include "solver/LinearSolverImpl.hpp"
+#include "solver/SolverMessages.hpp"
 
 namespace ma {
 
@@ -298,9 +299,7 @@ private:
                     residentBeforeMb_, analysisPeakMb, factorisation.peakMb());
         if (id_.sym == 2 && id_.infog[11] > 0) {
             if (kind == MatrixKind::SymmetricPositiveDefinite)
-                msg().alarm("FACTOR_10", fmt::format("MUMPS found {} negative pivot(s) in a stiffness matrix that should "
-                                                     "be positive definite (inverted or degenerate elements?)",
-                                                     id_.infog[11]));
+                msg().alarm(FACTOR_10, id_.infog[11]);
             else
                 msg().infof("    MUMPS: {} negative pivots (expected: one per Lagrange multiplier)", id_.infog[11]);
         }

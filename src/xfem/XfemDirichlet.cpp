@@ -10,6 +10,7 @@
 #include "fe/DofNumbering.hpp"
 #include "fe/MechanicalLoad.hpp"
 #include "xfem/CellGeometry.hpp"
+#include "xfem/XfemMessages.hpp"
 #include "xfem/XfemModel.hpp"
 
 namespace ma::xfem {
@@ -40,9 +41,7 @@ public:
         if (request_.function && !points_.empty()) values = evaluateAtPoints(*request_.function, points_, inst);
         for (const auto& e : emit_) e(values);
         if (bothLipsAlarm_)
-            msg().alarm("XFEM_22", fmt::format("{}: {} is prescribed on both lips of nodes lying on an interface; "
-                                               "do not also prescribe their Heaviside components (singular system)",
-                                               request_.path, comp_));
+            msg().alarm(XFEM_22, request_.path, comp_);
         return std::move(out_);
     }
 
@@ -91,9 +90,7 @@ private:
         if (slot_ <= xm_.activeSlots(n)) {
             plain(n, at(mesh_.coords[n]));
         } else if (slot_ <= carried && request_.function == nullptr && request_.value != 0.0) {
-            msg().alarm("XFEM_DDL", fmt::format("{}: {} = {} ignored on node {}: that Heaviside slot is inactive "
-                                                "there and fixed to 0",
-                                                request_.path, comp_, request_.value, mesh_.nodeNames[n]));
+            msg().alarm(XFEM_DDL_INACTIVE_SLOT, request_.path, comp_, request_.value, mesh_.nodeNames[n]);
         }
     }
 
@@ -117,9 +114,7 @@ private:
         } else if (minus) {
             out_.push_back({{{n, comp_, 1.0}, {n, e.h, e.s}}, v});
         } else {
-            msg().alarm("XFEM_DDL", fmt::format("{}: node {} lies on the interface {} and the other prescribed "
-                                                "nodes around it too: {} is not imposed there",
-                                                request_.path, mesh_.nodeNames[n], e.crack.name, comp_));
+            msg().alarm(XFEM_DDL_INTERFACE_NODES, request_.path, mesh_.nodeNames[n], e.crack.name, comp_);
         }
     }
 

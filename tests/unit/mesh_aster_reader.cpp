@@ -237,10 +237,10 @@ TEST(AsterMeshReader, FreeLayoutOfCodeAsterLexer) {
     EXPECT_EQ(m->nodeGroups.get("corners"), (std::vector<int>{0, 1, 2}));
     EXPECT_FALSE(m->nodeGroups.has("NOTHING"));
     ASSERT_EQ(report.alarms.size(), 2u);
-    EXPECT_EQ(report.alarms[0].first, "MODELISA4_80");
-    EXPECT_EQ(report.alarms[0].second, "line 23: GROUP_NO 'NOTHING' is empty and is not created");
-    EXPECT_EQ(report.alarms[1].first, "MODELISA5_8");
-    EXPECT_EQ(report.alarms[1].second, "line 17: 'T_1' is repeated in GROUP_MA 'ALL'; the repeat is dropped");
+    EXPECT_EQ(report.alarms[0].id, "MODELISA4_80");
+    EXPECT_EQ(report.alarms[0].text, "mesh t.mail, line 23: GROUP_NO 'NOTHING' is empty and is not created");
+    EXPECT_EQ(report.alarms[1].id, "MODELISA5_8");
+    EXPECT_EQ(report.alarms[1].text, "mesh t.mail, line 17: 'T_1' is repeated in GROUP_MA 'ALL'; the repeat is dropped");
 }
 
 TEST(AsterMeshReader, NbligeHeaderLinesAndTitleLinesAreNotParsed) {

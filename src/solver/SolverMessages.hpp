@@ -1,0 +1,19 @@
+#pragma once
+// The linear solvers' alarms (docs/messages.md).
+#include "core/Message.hpp"
+
+namespace ma {
+
+inline constexpr Message<double> FACTOR_57{
+    "FACTOR_57",
+    "The relative residual of the linear solve is {:.3e}: the solution is inaccurate (ill-conditioned or nearly "
+    "singular system)."};
+// The count of negative pivots (MUMPS INFOG(12)).
+inline constexpr Message<int> FACTOR_10{
+    "FACTOR_10",
+    "MUMPS found {} negative pivot(s) in a stiffness matrix that should be positive definite (inverted or "
+    "degenerate elements?)"};
+
+inline constexpr MessageText solverMessages[] = {entry(FACTOR_57), entry(FACTOR_10)};
+
+}  // namespace ma
