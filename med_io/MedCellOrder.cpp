@@ -23,8 +23,7 @@ constexpr std::array<int, 15> kPenta15{1, 3, 2, 4, 6, 5, 9, 8, 7, 13, 15, 14, 12
 // order after the vertex swap 2<->3, 5<->6 (see docs/med.md).
 constexpr std::array<int, 18> kPenta18{1, 3, 2, 4, 6, 5, 9, 8, 7, 13, 15, 14, 12, 11, 10, 18, 17, 16};
 constexpr std::array<int, 8> kHexa8{1, 4, 3, 2, 5, 8, 7, 6};
-constexpr std::array<int, 20> kHexa20{1,  4,  3,  2,  5,  8,  7,  6,  12, 11,
-                                      10, 9,  17, 20, 19, 18, 16, 15, 14, 13};
+constexpr std::array<int, 20> kHexa20{1, 4, 3, 2, 5, 8, 7, 6, 12, 11, 10, 9, 17, 20, 19, 18, 16, 15, 14, 13};
 constexpr std::array<int, 27> kHexa27{1,  4,  3,  2,  5,  8,  7,  6,  12, 11, 10, 9,  17, 20,
                                       19, 18, 16, 15, 14, 13, 21, 25, 24, 23, 22, 26, 27};
 
@@ -39,11 +38,10 @@ std::vector<Table> buildTables() {
         for (int v : oneBased) tab.order.push_back(v - 1);
         return tab;
     };
-    return {make(CellType::TETRA4, kTetra4),   make(CellType::TETRA10, kTetra10),
-            make(CellType::PYRA5, kPyra5),     make(CellType::PYRA13, kPyra13),
-            make(CellType::PENTA6, kPenta6),   make(CellType::PENTA15, kPenta15),
-            make(CellType::PENTA18, kPenta18), make(CellType::HEXA8, kHexa8),
-            make(CellType::HEXA20, kHexa20),   make(CellType::HEXA27, kHexa27)};
+    return {make(CellType::TETRA4, kTetra4),   make(CellType::TETRA10, kTetra10), make(CellType::PYRA5, kPyra5),
+            make(CellType::PYRA13, kPyra13),   make(CellType::PENTA6, kPenta6),   make(CellType::PENTA15, kPenta15),
+            make(CellType::PENTA18, kPenta18), make(CellType::HEXA8, kHexa8),     make(CellType::HEXA20, kHexa20),
+            make(CellType::HEXA27, kHexa27)};
 }
 
 const std::vector<Table>& tables() {

@@ -119,8 +119,7 @@ void checkReadableMedFile(const std::string& path) {
     // A truncated file keeps its HDF5 signature but HDF5 refuses to open it (end of file before
     // the end address written in the superblock).
     const hid_t h5 = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-    if (h5 < 0)
-        throw UserError("MED file '" + path + "' is damaged or truncated: HDF5 cannot open it");
+    if (h5 < 0) throw UserError("MED file '" + path + "' is damaged or truncated: HDF5 cannot open it");
     // Every MED file has the group /INFOS_GENERALES (version numbers); checked here so that the
     // MED library does not print its own error messages on other HDF5 files.
     const bool hasMedHeader = H5Lexists(h5, "INFOS_GENERALES", H5P_DEFAULT) > 0;
@@ -161,7 +160,8 @@ herr_t checkObject(hid_t group, const char* name, const H5L_info_t* info, void* 
             if (type >= 0) H5Tclose(type);
         }
         for (hsize_t a = 0; ok && a < oinfo.num_attrs; ++a) {
-            const hid_t attr = H5Aopen_by_idx(object, ".", H5_INDEX_CRT_ORDER, H5_ITER_NATIVE, a, H5P_DEFAULT, H5P_DEFAULT);
+            const hid_t attr =
+                H5Aopen_by_idx(object, ".", H5_INDEX_CRT_ORDER, H5_ITER_NATIVE, a, H5P_DEFAULT, H5P_DEFAULT);
             ok = attr >= 0;
             if (attr >= 0) {
                 const hid_t space = H5Aget_space(attr);
@@ -199,7 +199,8 @@ void checkMedStructure(const std::string& path) {
     silenceHdf5Errors();
     StderrCapture capture;
     int fds[2];
-    if (::pipe(fds) != 0) throw UserError("MED file '" + path + "': cannot check its structure (no pipe: " + std::strerror(errno) + ")");
+    if (::pipe(fds) != 0)
+        throw UserError("MED file '" + path + "': cannot check its structure (no pipe: " + std::strerror(errno) + ")");
     std::fflush(nullptr);
     const pid_t child = ::fork();
     if (child < 0) {
@@ -208,7 +209,8 @@ void checkMedStructure(const std::string& path) {
     }
     if (child == 0) {
         // The run's handlers (its fatal-signal paragraph, its stop signals) are the parent's.
-        for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTERM, SIGINT, SIGHUP, SIGXCPU}) std::signal(sig, SIG_DFL);
+        for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTERM, SIGINT, SIGHUP, SIGXCPU})
+            std::signal(sig, SIG_DFL);
         ::close(fds[0]);
         const std::string failedAt = firstDamagedObject(path);
         const ssize_t written = ::write(fds[1], failedAt.data(), failedAt.size());
@@ -224,15 +226,15 @@ void checkMedStructure(const std::string& path) {
     }
     ::close(fds[0]);
     int status = 0;
-    while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
-    }
+    while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {}
     if (WIFSIGNALED(status))
         throw UserError("MED file '" + path + "' is damaged: the HDF5 library fails on its structure (signal " +
                         std::to_string(WTERMSIG(status)) + " while reading it)");
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
         throw UserError("MED file '" + path + "' is damaged: its structure cannot be read to the end");
     if (failedAt == "/") throw UserError("MED file '" + path + "' is damaged: its structure cannot be read to the end");
-    if (!failedAt.empty()) throw UserError("MED file '" + path + "' is damaged: its object /" + failedAt + " cannot be read");
+    if (!failedAt.empty())
+        throw UserError("MED file '" + path + "' is damaged: its object /" + failedAt + " cannot be read");
 }
 
 MedFile::MedFile(const std::string& path, med_access_mode mode) : path_(path) {

@@ -42,8 +42,8 @@ std::vector<MeshHeader> readHeaders(const MedFile& file) {
         med_sorting_type sort;
         med_int nstep = 0;
         med_axis_type axisType;
-        if (MEDmeshInfo(file.id(), i, name, &h.spaceDim, &h.meshDim, &h.type, desc, dtunit, &sort,
-                        &nstep, &axisType, axisName.data(), axisUnit.data()) < 0)
+        if (MEDmeshInfo(file.id(), i, name, &h.spaceDim, &h.meshDim, &h.type, desc, dtunit, &sort, &nstep, &axisType,
+                        axisName.data(), axisUnit.data()) < 0)
             damaged(file.path(), fmt::format("the header of mesh number {}", i));
         h.name = trimName(name, MED_NAME_SIZE);
         out.push_back(h);
@@ -76,8 +76,13 @@ struct Family {
 class MeshReader {
 public:
     MeshReader(const std::string& path, const MedFile& file, const MeshHeader& header, MeshReadReport* report)
-        : path_(path), fid_(file.id()), header_(header), mname_(header.name.c_str()),
-          where_("mesh '" + header.name + "'"), report_(report), mesh_(std::make_shared<Mesh>()) {
+        : path_(path),
+          fid_(file.id()),
+          header_(header),
+          mname_(header.name.c_str()),
+          where_("mesh '" + header.name + "'"),
+          report_(report),
+          mesh_(std::make_shared<Mesh>()) {
         med_float dt = 0;
         if (MEDmeshComputationStepInfo(fid_, mname_, 1, &numdt_, &numit_, &dt) < 0)
             damaged(path_, "the computation step of " + where_);
@@ -146,11 +151,11 @@ private:
         const med_int ntype = count(MED_CELL, MED_GEO_ALL, MED_CONNECTIVITY, MED_NODAL);
         if (ntype < 0) damaged(path_, "the cell types of " + where_);
         std::vector<med_geometry_type> types;
-        for (CellType t : {CellType::POI1, CellType::SEG2, CellType::SEG3, CellType::SEG4, CellType::TRIA3,
-                           CellType::QUAD4, CellType::TRIA6, CellType::TRIA7, CellType::QUAD8,
-                           CellType::QUAD9, CellType::TETRA4, CellType::PYRA5, CellType::PENTA6,
-                           CellType::HEXA8, CellType::TETRA10, CellType::PYRA13, CellType::PENTA15,
-                           CellType::PENTA18, CellType::HEXA20, CellType::HEXA27}) {
+        for (CellType t :
+             {CellType::POI1,   CellType::SEG2,    CellType::SEG3,    CellType::SEG4,   CellType::TRIA3,
+              CellType::QUAD4,  CellType::TRIA6,   CellType::TRIA7,   CellType::QUAD8,  CellType::QUAD9,
+              CellType::TETRA4, CellType::PYRA5,   CellType::PENTA6,  CellType::HEXA8,  CellType::TETRA10,
+              CellType::PYRA13, CellType::PENTA15, CellType::PENTA18, CellType::HEXA20, CellType::HEXA27}) {
             const med_int n = count(MED_CELL, med_geometry_type(t), MED_CONNECTIVITY, MED_NODAL);
             if (n < 0) damaged(path_, "the " + cellTypeName(t) + " cells of " + where_);
             if (n > 0) types.push_back(med_geometry_type(t));
@@ -169,11 +174,13 @@ private:
                 damaged(path_, "the cell types of " + where_);
             if (std::find(types.begin(), types.end(), geo) != types.end()) continue;
             const std::string name = cellTypeName(CellType(geo));
-            if (name.rfind("UNKNOWN", 0) != 0) damaged(path_, "the connectivity of the " + name + " cells of " + where_);
-            throw NotImplemented(fmt::format("MED file '{}', {}: cells of MED type {} ({}) are not supported; "
-                                             "miniaster reads POI1, SEG2/3/4, TRIA3/6/7, QUAD4/8/9, TETRA4/10, "
-                                             "PYRA5/13, PENTA6/15/18, HEXA8/20/27",
-                                             path_, where_, trimName(tname, MED_NAME_SIZE), int(geo)));
+            if (name.rfind("UNKNOWN", 0) != 0)
+                damaged(path_, "the connectivity of the " + name + " cells of " + where_);
+            throw NotImplemented(
+                fmt::format("MED file '{}', {}: cells of MED type {} ({}) are not supported; "
+                            "miniaster reads POI1, SEG2/3/4, TRIA3/6/7, QUAD4/8/9, TETRA4/10, "
+                            "PYRA5/13, PENTA6/15/18, HEXA8/20/27",
+                            path_, where_, trimName(tname, MED_NAME_SIZE), int(geo)));
         }
     }
 
@@ -198,8 +205,8 @@ private:
         if (n == 0) return;
         const int nn = nodeCount(type);
         std::vector<med_int> conn(size_t(n) * nn);
-        if (MEDmeshElementConnectivityRd(fid_, mname_, numdt_, numit_, MED_CELL, geo, MED_NODAL,
-                                         MED_FULL_INTERLACE, conn.data()) < 0)
+        if (MEDmeshElementConnectivityRd(fid_, mname_, numdt_, numit_, MED_CELL, geo, MED_NODAL, MED_FULL_INTERLACE,
+                                         conn.data()) < 0)
             damaged(path_, "the connectivity of the " + cellTypeName(type) + " cells of " + where_);
         std::vector<med_int> fam(size_t(n), 0);
         if (present(MED_CELL, geo, MED_FAMILY_NUMBER, n,
@@ -218,9 +225,10 @@ private:
             for (int j = 0; j < nn; ++j) {
                 med_int node = conn[size_t(c) * nn + j];
                 if (node < 1 || node > nnode_)
-                    throw UserError(fmt::format("MED file '{}', {}: {} cell {} refers to node {} "
-                                                "(the mesh has {} nodes)",
-                                                path_, where_, cellTypeName(type), c + 1, node, nnode_));
+                    throw UserError(
+                        fmt::format("MED file '{}', {}: {} cell {} refers to node {} "
+                                    "(the mesh has {} nodes)",
+                                    path_, where_, cellTypeName(type), c + 1, node, nnode_));
                 med[j] = int(node - 1);
             }
             medToInternal(type, med, internal);
@@ -288,9 +296,10 @@ private:
             for (int g : it->second.groups) members[size_t(g)].push_back(int(e));
         }
         if (!unknown.empty())
-            throw UserError(fmt::format("MED file '{}' is damaged or inconsistent, {}: family number {} is used "
-                                        "but not defined",
-                                        path_, where_, *unknown.begin()));
+            throw UserError(
+                fmt::format("MED file '{}' is damaged or inconsistent, {}: family number {} is used "
+                            "but not defined",
+                            path_, where_, *unknown.begin()));
         for (size_t g = 0; g < groupNames_.size(); ++g)
             if (!members[g].empty()) target.set(groupNames_[g], std::move(members[g]));
     }
@@ -332,9 +341,10 @@ const MeshHeader& chooseMesh(const std::vector<MeshHeader>& headers, const std::
         throw NotImplemented("mesh '" + chosen->name + "' of MED file '" + path +
                              "' is a structured (grid) mesh; only unstructured meshes are read");
     if (chosen->spaceDim < 2 || chosen->spaceDim > 3)
-        throw NotImplemented(fmt::format("mesh '{}' of MED file '{}' has space dimension {}; "
-                                         "only 2 and 3 are supported",
-                                         chosen->name, path, chosen->spaceDim));
+        throw NotImplemented(
+            fmt::format("mesh '{}' of MED file '{}' has space dimension {}; "
+                        "only 2 and 3 are supported",
+                        chosen->name, path, chosen->spaceDim));
     return *chosen;
 }
 
@@ -348,8 +358,7 @@ std::vector<std::string> meshNames(const std::string& path) {
     return names;
 }
 
-std::shared_ptr<Mesh> readMesh(const std::string& path, const std::string& meshName,
-                               MeshReadReport* report) {
+std::shared_ptr<Mesh> readMesh(const std::string& path, const std::string& meshName, MeshReadReport* report) {
     checkReadableMedFile(path);
     checkMedStructure(path);
     MedFile file(path, MED_ACC_RDONLY);

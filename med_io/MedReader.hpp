@@ -10,7 +10,7 @@ namespace ma::med {
 
 // What was read besides the mesh itself, for the command's log.
 struct MeshReadReport {
-    std::string meshName;    // name of the mesh inside the file
+    std::string meshName;  // name of the mesh inside the file
     int spaceDim = 0;
     int meshDim = 0;
     std::vector<std::string> meshesInFile;

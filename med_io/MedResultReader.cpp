@@ -39,7 +39,8 @@ std::vector<FieldHeader> readFieldHeaders(const MedFile& file) {
             unreadable(file.path(), fmt::format("the header of field number {}", i));
         h.name = trimName(name, MED_NAME_SIZE);
         h.mesh = trimName(mesh, MED_NAME_SIZE);
-        for (med_int c = 0; c < nc; ++c) h.components.push_back(trimName(cname.data() + c * MED_SNAME_SIZE, MED_SNAME_SIZE));
+        for (med_int c = 0; c < nc; ++c)
+            h.components.push_back(trimName(cname.data() + c * MED_SNAME_SIZE, MED_SNAME_SIZE));
         out.push_back(std::move(h));
     }
     return out;
@@ -74,8 +75,8 @@ void readBlocks(const StepPlace& at, med_entity_type entity, med_geometry_type g
     for (int p = 1; p <= int(nprof); ++p) {
         char profile[MED_NAME_SIZE + 1] = {}, loc[MED_NAME_SIZE + 1] = {};
         med_int profileSize = 0, npoints = 1;
-        const med_int n = MEDfieldnValueWithProfile(at.file.id(), at.field.name.c_str(), at.numdt, at.numit, entity, geo,
-                                                    p, MED_COMPACT_STMODE, profile, &profileSize, loc, &npoints);
+        const med_int n = MEDfieldnValueWithProfile(at.file.id(), at.field.name.c_str(), at.numdt, at.numit, entity,
+                                                    geo, p, MED_COMPACT_STMODE, profile, &profileSize, loc, &npoints);
         if (n < 0) unreadable(at.file.path(), at.where());
         if (n == 0) continue;
         std::vector<double> values(size_t(n) * size_t(std::max<med_int>(npoints, 1)) * nc);
@@ -92,16 +93,18 @@ void readBlocks(const StepPlace& at, med_entity_type entity, med_geometry_type g
 std::shared_ptr<NodalField> readNodal(const StepPlace& at, const std::shared_ptr<Mesh>& mesh) {
     auto f = std::make_shared<NodalField>();
     bool any = false;
-    readBlocks(at, MED_NODE, MED_NONE, [&](const std::vector<med_int>& members, int n, int, const std::vector<double>& v) {
-        if (!any) f->resize(mesh, at.field.components);
-        any = true;
-        const size_t nc = at.field.components.size();
-        for (int i = 0; i < n; ++i) {
-            const int node = members.empty() ? i : int(members[size_t(i)]) - 1;
-            if (node < 0 || node >= mesh->nodeCount()) unreadable(at.file.path(), at.where() + " (node number)");
-            for (size_t c = 0; c < nc; ++c) f->set(node, int(c), v[size_t(i) * nc + c]);
-        }
-    });
+    readBlocks(at, MED_NODE, MED_NONE,
+               [&](const std::vector<med_int>& members, int n, int, const std::vector<double>& v) {
+                   if (!any) f->resize(mesh, at.field.components);
+                   any = true;
+                   const size_t nc = at.field.components.size();
+                   for (int i = 0; i < n; ++i) {
+                       const int node = members.empty() ? i : int(members[size_t(i)]) - 1;
+                       if (node < 0 || node >= mesh->nodeCount())
+                           unreadable(at.file.path(), at.where() + " (node number)");
+                       for (size_t c = 0; c < nc; ++c) f->set(node, int(c), v[size_t(i) * nc + c]);
+                   }
+               });
     return any ? f : nullptr;
 }
 
@@ -145,9 +148,10 @@ std::vector<MedResultMesh> readResults(const std::string& path) {
             throw UserError(fmt::format("MED file '{}': field {} is defined on mesh '{}', which is not in the file",
                                         path, h.name, h.mesh));
         if (h.type != MED_FLOAT64)
-            throw NotImplemented(fmt::format("MED file '{}': field {} does not hold 64-bit reals (MED type {}); "
-                                             "only real fields are read",
-                                             path, h.name, int(h.type)));
+            throw NotImplemented(
+                fmt::format("MED file '{}': field {} does not hold 64-bit reals (MED type {}); "
+                            "only real fields are read",
+                            path, h.name, int(h.type)));
         std::map<CellType, int> firstCell;  // cells are numbered type by type (readMesh)
         const auto& mesh = target->mesh;
         for (int c = mesh->cellCount() - 1; c >= 0; --c) firstCell[mesh->cellTypes[size_t(c)]] = c;

@@ -40,7 +40,7 @@ std::vector<CellType> typesInOrder(const Mesh& mesh) {
 // One family per distinct set of groups, numbered sign*1, sign*2 ... in order of first
 // appearance of the entities; 0 for entities in no group.
 struct Families {
-    std::vector<med_int> number;                        // per entity
+    std::vector<med_int> number;                                     // per entity
     std::vector<std::pair<med_int, std::vector<std::string>>> list;  // (number, group names)
 };
 
@@ -148,8 +148,9 @@ std::vector<int> ranksInType(const Mesh& mesh) {
 // Elements of a Gauss field grouped by cell type, then by their exact set of reference points
 // (one MED localisation each). Elements of a type without a reference element are counted in
 // `skipped` and left out, with an alarm.
-std::map<CellType, std::map<std::vector<double>, std::vector<int>>> elementsByLocalisation(
-    const std::string& fieldName, const GaussField& field, int& skipped) {
+std::map<CellType, std::map<std::vector<double>, std::vector<int>>> elementsByLocalisation(const std::string& fieldName,
+                                                                                           const GaussField& field,
+                                                                                           int& skipped) {
     const Mesh& mesh = *field.mesh;
     std::map<CellType, std::map<std::vector<double>, std::vector<int>>> groups;
     std::set<std::string> skippedTypes;
@@ -226,20 +227,19 @@ struct MedWriter::Impl {
             med_mesh_type mtype;
             med_sorting_type sort;
             med_axis_type atype;
-            if (MEDmeshInfo(fid(), i, name, &sdim, &mdim, &mtype, desc, dtunit, &sort, &nstep, &atype,
-                            axes.data(), units.data()) < 0)
+            if (MEDmeshInfo(fid(), i, name, &sdim, &mdim, &mtype, desc, dtunit, &sort, &nstep, &atype, axes.data(),
+                            units.data()) < 0)
                 continue;
             if (trimName(name, MED_NAME_SIZE) != meshName) continue;
             med_bool chg, trsf;
-            return MEDmeshnEntity(fid(), name, MED_NO_DT, MED_NO_IT, MED_NODE, MED_NONE, MED_COORDINATE,
-                                  MED_NO_CMODE, &chg, &trsf);
+            return MEDmeshnEntity(fid(), name, MED_NO_DT, MED_NO_IT, MED_NODE, MED_NONE, MED_COORDINATE, MED_NO_CMODE,
+                                  &chg, &trsf);
         }
         return -1;
     }
 
     // Creates the field unless it exists; an existing field must have the same components.
-    void ensureField(const std::string& fieldName, const std::string& meshName,
-                     const std::vector<std::string>& comps) {
+    void ensureField(const std::string& fieldName, const std::string& meshName, const std::vector<std::string>& comps) {
         med_int nf = MEDnField(fid());
         for (med_int i = 1; i <= nf; ++i) {
             med_int nc = MEDfieldnComponent(fid(), int(i));
@@ -253,9 +253,10 @@ struct MedWriter::Impl {
                 continue;
             if (trimName(name, MED_NAME_SIZE) != fieldName) continue;
             if (cname.substr(0, size_t(nc) * MED_SNAME_SIZE) != padded16(comps))
-                throwMedError(fmt::format("MED file '{}' already holds a field '{}' with other "
-                                            "components; choose another result name or unit",
-                                            target.finalPath(), fieldName));
+                throwMedError(
+                    fmt::format("MED file '{}' already holds a field '{}' with other "
+                                "components; choose another result name or unit",
+                                target.finalPath(), fieldName));
             return;
         }
         const std::string units(comps.size() * MED_SNAME_SIZE, ' ');
@@ -315,9 +316,10 @@ bool MedWriter::writeMesh(const Mesh& mesh, const std::string& meshName) {
     const med_int existing = impl_->existingMeshNodes(meshName);
     if (existing >= 0) {
         if (existing != mesh.nodeCount())
-            throw UserError(fmt::format("the MED file already holds a mesh named '{}' with {} nodes, "
-                                        "not the {} nodes of the mesh to print",
-                                        meshName, existing, mesh.nodeCount()));
+            throw UserError(
+                fmt::format("the MED file already holds a mesh named '{}' with {} nodes, "
+                            "not the {} nodes of the mesh to print",
+                            meshName, existing, mesh.nodeCount()));
         return false;
     }
     const int dim = mesh.dim;
@@ -334,7 +336,8 @@ bool MedWriter::writeMesh(const Mesh& mesh, const std::string& meshName) {
     std::vector<med_float> xyz(size_t(nn) * size_t(dim));
     for (int i = 0; i < nn; ++i)
         for (int d = 0; d < dim; ++d) xyz[size_t(i) * dim + d] = mesh.coords[size_t(i)][size_t(d)];
-    if (MEDmeshNodeCoordinateWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, 0.0, MED_FULL_INTERLACE, nn, xyz.data()) < 0)
+    if (MEDmeshNodeCoordinateWr(fid, meshName.c_str(), MED_NO_DT, MED_NO_IT, 0.0, MED_FULL_INTERLACE, nn, xyz.data()) <
+        0)
         fail("the node coordinates");
     xyz = {};
     {
@@ -359,12 +362,13 @@ bool MedWriter::writeMesh(const Mesh& mesh, const std::string& meshName) {
     return true;
 }
 
-void MedWriter::writeNodalField(const std::string& fieldName, const std::string& meshName,
-                                const NodalField& field, int numdt, int numit, double dt) {
+void MedWriter::writeNodalField(const std::string& fieldName, const std::string& meshName, const NodalField& field,
+                                int numdt, int numit, double dt) {
     const int nc = field.componentCount();
     const int nn = field.mesh ? field.mesh->nodeCount() : 0;
     if (!field.mesh || field.values.size() != size_t(nn) * size_t(nc) || field.present.size() != field.values.size())
-        throw UserError("field " + fieldName + " is inconsistent with its mesh (value array size); it cannot be printed");
+        throw UserError("field " + fieldName +
+                        " is inconsistent with its mesh (value array size); it cannot be printed");
     std::vector<int> comps;
     std::vector<med_int> nodes;
     std::vector<char> anyNode(size_t(nn), 0);
@@ -393,19 +397,20 @@ void MedWriter::writeNodalField(const std::string& fieldName, const std::string&
                                    MED_COMPACT_STMODE, profile.c_str(), MED_NO_LOCALIZATION, MED_FULL_INTERLACE,
                                    MED_ALL_CONSTITUENT, med_int(nodes.size()),
                                    reinterpret_cast<const unsigned char*>(values.data())) < 0)
-        throwMedError(fmt::format("MED file '{}': cannot write field {} at step ({}, {})",
-                                    impl_->target.finalPath(), fieldName, numdt, numit));
+        throwMedError(fmt::format("MED file '{}': cannot write field {} at step ({}, {})", impl_->target.finalPath(),
+                                  fieldName, numdt, numit));
 }
 
-int MedWriter::writeGaussField(const std::string& fieldName, const std::string& meshName,
-                               const GaussField& field, int numdt, int numit, double dt) {
+int MedWriter::writeGaussField(const std::string& fieldName, const std::string& meshName, const GaussField& field,
+                               int numdt, int numit, double dt) {
     if (!field.mesh) throw UserError("field " + fieldName + " has no mesh");
     const Mesh& mesh = *field.mesh;
     const int nc = int(field.components.size());
     const size_t npoints = field.pointWeights.size();
     if (field.pointOffsets.size() != field.cells.size() + 1 || size_t(field.pointOffsets.back()) != npoints ||
         field.pointRefCoords.size() != npoints || field.values.size() != npoints * size_t(nc))
-        throw UserError("field " + fieldName + " is incomplete (integration points without reference coordinates or "
+        throw UserError("field " + fieldName +
+                        " is incomplete (integration points without reference coordinates or "
                         "values); it cannot be printed with its MED localisations");
     const std::vector<int> rankInType = ranksInType(mesh);
     int skipped = 0;
@@ -466,7 +471,7 @@ int MedWriter::writeGaussField(const std::string& fieldName, const std::string& 
                                            MED_ALL_CONSTITUENT, med_int(members.size()),
                                            reinterpret_cast<const unsigned char*>(values.data())) < 0)
                 throwMedError(fmt::format("MED file '{}': cannot write field {} on {} cells at step ({}, {})",
-                                            impl_->target.finalPath(), fieldName, cellTypeName(type), numdt, numit));
+                                          impl_->target.finalPath(), fieldName, cellTypeName(type), numdt, numit));
         }
     }
     return skipped;

@@ -32,15 +32,15 @@ public:
     // A nodal field at step (numdt, numit, dt) on the mesh written as `meshName`: components that
     // at least one node carries; nodes carrying none are left out through a MED profile; a
     // component a written node does not carry is written as 0 (docs/med.md).
-    void writeNodalField(const std::string& fieldName, const std::string& meshName,
-                         const NodalField& field, int numdt, int numit, double dt);
+    void writeNodalField(const std::string& fieldName, const std::string& meshName, const NodalField& field, int numdt,
+                         int numit, double dt);
 
     // A field at integration points (ELGA) with its MED localisations: the elements of one cell
     // type that share the same reference points share one localisation (and a profile when
     // they are not all the cells of that type). Returns the number of elements that could not be
     // written (cell types without a reference element); an alarm names them.
-    int writeGaussField(const std::string& fieldName, const std::string& meshName,
-                        const GaussField& field, int numdt, int numit, double dt);
+    int writeGaussField(const std::string& fieldName, const std::string& meshName, const GaussField& field, int numdt,
+                        int numit, double dt);
 
     // Closes the file and moves it to its final name.
     void commit();

@@ -38,15 +38,15 @@ void Catalog::add(cata::Command c) {
 const std::vector<std::string>& unsupportedCommands() {
     // code_aster commands that a user of this class of studies may try; miniaster has none of them.
     static const std::vector<std::string> names{
-        "POURSUITE",      "INCLUDE",        "CALC_CHAMP",    "CALC_CHAM_ELEM", "TEST_RESU",
-        "TEST_FONCTION",  "DYNA_NON_LINE",  "DYNA_LINE",     "MECA_NON_LINE",  "THER_LINEAIRE",
-        "THER_NON_LINE",  "CALC_G",         "CALC_G_XFEM",   "PROPA_FISS",     "DEFI_FISS_XFEM_PROPA",
-        "CREA_MAILLAGE",  "CREA_RESU",      "CREA_TABLE",    "PROJ_CHAMP",     "AFFE_CARA_ELEM",
-        "AFFE_CHAR_CINE", "DEFI_COMPOR",    "DEFI_NAPPE",    "CALC_FONCTION",  "IMPR_FONCTION",
-        "LIRE_RESU",      "EXTR_RESU",      "DETRUIRE",      "MACR_ADAP_MAIL", "RAFF_XFEM",
-        "POST_K1_K2_K3",  "CALC_MATR_ELEM", "NUME_DDL",      "ASSE_MATRICE",   "RESOUDRE",
-        "FACTORISER",     "MODE_ITER_SIMULT", "CALC_MODES",  "DEFI_LIST_INST", "LIRE_TABLE",
-        "IMPR_CO",        "MACRO_ELAS_MULT", "POST_ELEM",    "STAT_NON_LINE_XFEM",
+        "POURSUITE",      "INCLUDE",          "CALC_CHAMP",  "CALC_CHAM_ELEM",     "TEST_RESU",
+        "TEST_FONCTION",  "DYNA_NON_LINE",    "DYNA_LINE",   "MECA_NON_LINE",      "THER_LINEAIRE",
+        "THER_NON_LINE",  "CALC_G",           "CALC_G_XFEM", "PROPA_FISS",         "DEFI_FISS_XFEM_PROPA",
+        "CREA_MAILLAGE",  "CREA_RESU",        "CREA_TABLE",  "PROJ_CHAMP",         "AFFE_CARA_ELEM",
+        "AFFE_CHAR_CINE", "DEFI_COMPOR",      "DEFI_NAPPE",  "CALC_FONCTION",      "IMPR_FONCTION",
+        "LIRE_RESU",      "EXTR_RESU",        "DETRUIRE",    "MACR_ADAP_MAIL",     "RAFF_XFEM",
+        "POST_K1_K2_K3",  "CALC_MATR_ELEM",   "NUME_DDL",    "ASSE_MATRICE",       "RESOUDRE",
+        "FACTORISER",     "MODE_ITER_SIMULT", "CALC_MODES",  "DEFI_LIST_INST",     "LIRE_TABLE",
+        "IMPR_CO",        "MACRO_ELAS_MULT",  "POST_ELEM",   "STAT_NON_LINE_XFEM",
     };
     return names;
 }
@@ -216,9 +216,9 @@ std::string CallValue::describe() const {
         case Kind::Real: return fmt::format("{}", real);
         case Kind::Text: return "'" + text + "'";
         case Kind::Concept:
-            return object ? fmt::format("{} ({})", object->name.empty() ? "<unnamed>" : object->name,
-                                         object->typeName())
-                           : "None";
+            return object
+                       ? fmt::format("{} ({})", object->name.empty() ? "<unnamed>" : object->name, object->typeName())
+                       : "None";
         case Kind::List: {
             std::string out = "(";
             for (size_t i = 0; i < items.size() && i < 6; ++i) out += (i ? ", " : "") + items[i].describe();
@@ -282,7 +282,8 @@ KeywordValue convertItem(const Keyword& def, const CallValue& item, const std::s
             throw wrongType();
         case K::Concept: {
             const std::string type = item.object ? item.object->typeName() : "";
-            if (item.object && std::find(def.conceptTypes.begin(), def.conceptTypes.end(), type) != def.conceptTypes.end())
+            if (item.object &&
+                std::find(def.conceptTypes.begin(), def.conceptTypes.end(), type) != def.conceptTypes.end())
                 return item.object;
             throw wrongType();
         }
@@ -358,7 +359,8 @@ void convertFactor(const Keyword& def, const CallValue& given, KeywordSet& out, 
     } else if (given.kind == CallValue::Kind::List) {
         for (const auto& o : given.items) {
             if (o.kind != CallValue::Kind::Dict)
-                throw UserError(fmt::format("factor keyword {} expects _F(...) occurrences, got {}", path, o.describe()));
+                throw UserError(
+                    fmt::format("factor keyword {} expects _F(...) occurrences, got {}", path, o.describe()));
             occurrences.push_back(&o);
         }
     } else {
@@ -443,8 +445,7 @@ void validateLevel(const std::vector<Keyword>& content, const std::vector<Rule>&
     // 1. Unknown and unsupported keywords, in call order.
     std::set<std::string> seen;
     for (const auto& [name, value] : args) {
-        if (!seen.insert(name).second)
-            throw UserError(fmt::format("keyword {} is given twice", out.pathOf(name)));
+        if (!seen.insert(name).second) throw UserError(fmt::format("keyword {} is given twice", out.pathOf(name)));
         auto it = names.find(name);
         if (it == names.end()) {
             if (context) {
@@ -458,8 +459,8 @@ void validateLevel(const std::vector<Keyword>& content, const std::vector<Rule>&
                                         where, fmt::join(allowed, ", ")));
         }
         if (it->second->kind == Keyword::Kind::Unsupported)
-            throw NotImplemented(fmt::format("keyword {} is not supported by miniaster ({})", out.pathOf(name),
-                                             it->second->why));
+            throw NotImplemented(
+                fmt::format("keyword {} is not supported by miniaster ({})", out.pathOf(name), it->second->why));
     }
 
     // 2. Conversion of the active keywords, defaults.

@@ -35,17 +35,45 @@ struct CallValue {
     double real = 0.0;
     std::string text;  // Text; the Python type name for Other
     ConceptPtr object;
-    std::vector<CallValue> items;                          // List (list or tuple)
-    std::vector<std::pair<std::string, CallValue>> dict;   // Dict (_F), in call order
+    std::vector<CallValue> items;                         // List (list or tuple)
+    std::vector<std::pair<std::string, CallValue>> dict;  // Dict (_F), in call order
 
-    static CallValue of(long long v) { CallValue c; c.kind = Kind::Int; c.integer = v; return c; }
-    static CallValue of(double v) { CallValue c; c.kind = Kind::Real; c.real = v; return c; }
-    static CallValue of(std::string v) { CallValue c; c.kind = Kind::Text; c.text = std::move(v); return c; }
+    static CallValue of(long long v) {
+        CallValue c;
+        c.kind = Kind::Int;
+        c.integer = v;
+        return c;
+    }
+    static CallValue of(double v) {
+        CallValue c;
+        c.kind = Kind::Real;
+        c.real = v;
+        return c;
+    }
+    static CallValue of(std::string v) {
+        CallValue c;
+        c.kind = Kind::Text;
+        c.text = std::move(v);
+        return c;
+    }
     static CallValue of(const char* v) { return of(std::string(v)); }
-    static CallValue of(ConceptPtr v) { CallValue c; c.kind = Kind::Concept; c.object = std::move(v); return c; }
-    static CallValue list(std::vector<CallValue> v) { CallValue c; c.kind = Kind::List; c.items = std::move(v); return c; }
+    static CallValue of(ConceptPtr v) {
+        CallValue c;
+        c.kind = Kind::Concept;
+        c.object = std::move(v);
+        return c;
+    }
+    static CallValue list(std::vector<CallValue> v) {
+        CallValue c;
+        c.kind = Kind::List;
+        c.items = std::move(v);
+        return c;
+    }
     static CallValue factor(std::vector<std::pair<std::string, CallValue>> d) {
-        CallValue c; c.kind = Kind::Dict; c.dict = std::move(d); return c;
+        CallValue c;
+        c.kind = Kind::Dict;
+        c.dict = std::move(d);
+        return c;
     }
     // Short text for error messages: 'abc', 1.5, MAILLAG (maillage_sdaster), [1, 2]...
     std::string describe() const;
@@ -63,7 +91,7 @@ struct Condition {
     std::string keyword;
     std::vector<std::string> values;  // Equals: one of these texts
     bool holds(const KeywordSet& level) const;
-    std::string describe() const;     // "OPERATION='FILTRE'", "REFERENCE is given"
+    std::string describe() const;  // "OPERATION='FILTRE'", "REFERENCE is given"
 };
 inline Condition when(std::string keyword, std::vector<std::string> values) {
     return {Condition::Kind::Equals, std::move(keyword), std::move(values)};
@@ -105,13 +133,13 @@ struct Keyword {
     // Simple: number of values; Factor: number of occurrences.
     int minCount = 1, maxCount = 1;
     bool isMandatory = false;
-    std::vector<std::string> intoTexts;    // allowed text values (empty: any)
-    std::vector<long long> intoInts;       // allowed integer values (empty: any)
+    std::vector<std::string> intoTexts;            // allowed text values (empty: any)
+    std::vector<long long> intoInts;               // allowed integer values (empty: any)
     std::optional<double> lowerBound, upperBound;  // numeric range (inclusive)
     std::vector<KeywordValue> defaultValues;       // filled when absent (simple only)
     std::vector<std::string> unsupportedValues;    // allowed by code_aster, not by miniaster
-    std::string why;  // Unsupported: short reason (e.g. "friction is not modelled")
-    bool defaultOccurrence = false;  // Factor: one occurrence with its defaults when absent
+    std::string why;                               // Unsupported: short reason (e.g. "friction is not modelled")
+    bool defaultOccurrence = false;                // Factor: one occurrence with its defaults when absent
     // Older syntaxes: a value replaced by its current equivalent ('OUI' -> 'STANDARD'), and a
     // keyword stored under its current name (COMP_ELAS -> COMPORTEMENT), so that commands only
     // read the current syntax. Error messages keep the name the user wrote.
@@ -124,25 +152,80 @@ struct Keyword {
     Condition condition;  // Block
 
     // Builders.
-    Keyword& mandatory() { isMandatory = true; return *this; }
-    Keyword& many() { maxCount = kMany; return *this; }
-    Keyword& max(int n) { maxCount = n; return *this; }
-    Keyword& min(int n) { minCount = n; return *this; }
-    Keyword& into(std::vector<std::string> v) { intoTexts = std::move(v); return *this; }
-    Keyword& intoInt(std::vector<long long> v) { intoInts = std::move(v); return *this; }
-    Keyword& range(std::optional<double> lo, std::optional<double> hi) { lowerBound = lo; upperBound = hi; return *this; }
-    Keyword& def(double v) { defaultValues = {v}; return *this; }
-    Keyword& def(int v) { defaultValues = {static_cast<long long>(v)}; return *this; }
-    Keyword& def(const char* v) { defaultValues = {std::string(v)}; return *this; }
-    Keyword& defs(std::vector<KeywordValue> v) { defaultValues = std::move(v); return *this; }
-    Keyword& notSupported(std::vector<std::string> values) { unsupportedValues = std::move(values); return *this; }
-    Keyword& byDefault() { defaultOccurrence = true; return *this; }
-    Keyword& legacy(std::map<std::string, std::string> values) { legacyValues = std::move(values); return *this; }
-    Keyword& storeAs(std::string current) { storedAs = std::move(current); return *this; }
-    Keyword& keywords(std::vector<Keyword> k) { content = std::move(k); return *this; }
-    Keyword& rules(std::vector<Rule> r) { rulesList = std::move(r); return *this; }
+    Keyword& mandatory() {
+        isMandatory = true;
+        return *this;
+    }
+    Keyword& many() {
+        maxCount = kMany;
+        return *this;
+    }
+    Keyword& max(int n) {
+        maxCount = n;
+        return *this;
+    }
+    Keyword& min(int n) {
+        minCount = n;
+        return *this;
+    }
+    Keyword& into(std::vector<std::string> v) {
+        intoTexts = std::move(v);
+        return *this;
+    }
+    Keyword& intoInt(std::vector<long long> v) {
+        intoInts = std::move(v);
+        return *this;
+    }
+    Keyword& range(std::optional<double> lo, std::optional<double> hi) {
+        lowerBound = lo;
+        upperBound = hi;
+        return *this;
+    }
+    Keyword& def(double v) {
+        defaultValues = {v};
+        return *this;
+    }
+    Keyword& def(int v) {
+        defaultValues = {static_cast<long long>(v)};
+        return *this;
+    }
+    Keyword& def(const char* v) {
+        defaultValues = {std::string(v)};
+        return *this;
+    }
+    Keyword& defs(std::vector<KeywordValue> v) {
+        defaultValues = std::move(v);
+        return *this;
+    }
+    Keyword& notSupported(std::vector<std::string> values) {
+        unsupportedValues = std::move(values);
+        return *this;
+    }
+    Keyword& byDefault() {
+        defaultOccurrence = true;
+        return *this;
+    }
+    Keyword& legacy(std::map<std::string, std::string> values) {
+        legacyValues = std::move(values);
+        return *this;
+    }
+    Keyword& storeAs(std::string current) {
+        storedAs = std::move(current);
+        return *this;
+    }
+    Keyword& keywords(std::vector<Keyword> k) {
+        content = std::move(k);
+        return *this;
+    }
+    Keyword& rules(std::vector<Rule> r) {
+        rulesList = std::move(r);
+        return *this;
+    }
     // Also accept a concept of these types (e.g. R keyword that may be a function).
-    Keyword& orConcept(std::vector<std::string> types) { conceptTypes = std::move(types); return *this; }
+    Keyword& orConcept(std::vector<std::string> types) {
+        conceptTypes = std::move(types);
+        return *this;
+    }
 
     bool hasDefault() const { return !defaultValues.empty(); }
     std::string typeText() const;  // "real", "integer", "text or fonction_sdaster"...
@@ -178,11 +261,26 @@ struct Command {
     // A short comment shown in docs / error hints.
     std::string help;
 
-    Command& keywords(std::vector<Keyword> k) { content = std::move(k); return *this; }
-    Command& rules(std::vector<Rule> r) { rulesList = std::move(r); return *this; }
-    Command& reuse(Reuse r) { reentrant = r; return *this; }
-    Command& resultFrom(std::function<std::string(const KeywordSet&)> f) { resultOf = std::move(f); return *this; }
-    Command& contextKeywords() { acceptsContextKeywords = true; return *this; }
+    Command& keywords(std::vector<Keyword> k) {
+        content = std::move(k);
+        return *this;
+    }
+    Command& rules(std::vector<Rule> r) {
+        rulesList = std::move(r);
+        return *this;
+    }
+    Command& reuse(Reuse r) {
+        reentrant = r;
+        return *this;
+    }
+    Command& resultFrom(std::function<std::string(const KeywordSet&)> f) {
+        resultOf = std::move(f);
+        return *this;
+    }
+    Command& contextKeywords() {
+        acceptsContextKeywords = true;
+        return *this;
+    }
 
     std::string resultType(const KeywordSet& kw) const { return resultOf ? resultOf(kw) : result; }
 };
@@ -213,8 +311,7 @@ const std::vector<std::string>& unsupportedCommands();
 // Check a call against its catalog entry and build the typed keyword tree, defaults filled.
 // Throws UserError with the keyword path and the offending value. `context` receives the
 // arguments that are not catalog keywords when the command accepts context keywords (FORMULE).
-KeywordSet validateCall(const cata::Command& command, const CallArguments& args,
-                        CallArguments* context = nullptr);
+KeywordSet validateCall(const cata::Command& command, const CallArguments& args, CallArguments* context = nullptr);
 
 // The same check for a keyword tree built in C++ (tests): `kw` as a call of `command`, returned
 // with the catalog's defaults filled in. UserError as validateCall.

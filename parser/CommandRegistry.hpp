@@ -41,9 +41,7 @@ private:
 };
 
 struct CommandRegistration {
-    CommandRegistration(const char* name, CommandFunction fn) {
-        CommandRegistry::instance().add(name, std::move(fn));
-    }
+    CommandRegistration(const char* name, CommandFunction fn) { CommandRegistry::instance().add(name, std::move(fn)); }
 };
 
 #define MA_CONCAT_INNER(a, b) a##b

@@ -92,8 +92,7 @@ private:
     }
 
     void entry(const std::vector<std::string>& t) {
-        if (t.size() < 5)
-            fail(fmt::format("expected `{} <type> <path> <flags> <unit>`", t[0]));
+        if (t.size() < 5) fail(fmt::format("expected `{} <type> <path> <flags> <unit>`", t[0]));
         ExportEntry e;
         e.line = line_;
         e.directory = t[0] == "R";
@@ -107,16 +106,18 @@ private:
         e.unit = *unit;
         for (char c : flags) {
             bool& flag = c == 'D' ? e.data : c == 'R' ? e.result : c == 'C' ? e.compressed : bad_;
-            if (&flag == &bad_) fail(fmt::format("unknown flag '{}' in '{}' (D data, R result, C compressed)", c, flags));
+            if (&flag == &bad_)
+                fail(fmt::format("unknown flag '{}' in '{}' (D data, R result, C compressed)", c, flags));
             if (flag) fail(fmt::format("flag '{}' repeated in '{}'", c, flags));
             flag = true;
         }
         if (!e.data && !e.result) fail(fmt::format("the flags '{}' say neither D (data) nor R (result)", flags));
         if (e.directory && e.compressed) fail("a directory (R line) cannot be compressed");
         if (e.type == "base" || e.type == "bhdf")
-            fail(fmt::format("'{}' is a code_aster database: miniaster neither reads nor writes one (there is "
-                             "no POURSUITE); remove the line",
-                             e.type));
+            fail(
+                fmt::format("'{}' is a code_aster database: miniaster neither reads nor writes one (there is "
+                            "no POURSUITE); remove the line",
+                            e.type));
         if (e.unit == kCodeUnit && e.type != "code")
             fail(fmt::format("unit {} is reserved for the 'code' file", kCodeUnit));
         if (e.data && e.result && e.compressed) fail("a compressed file is either data (DC) or result (RC), not both");
@@ -126,7 +127,8 @@ private:
             if (!added) fail(fmt::format("unit {} is already given on line {}", e.unit, it->second));
         }
         const fs::path given = path;
-        e.path = fs::absolute(given.is_relative() ? (e.data ? folder_ : resultBase_) / given : given).lexically_normal();
+        e.path =
+            fs::absolute(given.is_relative() ? (e.data ? folder_ : resultBase_) / given : given).lexically_normal();
         if (e.data) checkData(e);
         out_.entries.push_back(std::move(e));
     }
@@ -168,7 +170,7 @@ private:
     ExportFile out_;
     int line_ = 0;
     std::vector<std::string> texts_;  // every line read, for the messages
-    bool bad_ = false;  // target of an unknown flag (never set)
+    bool bad_ = false;                // target of an unknown flag (never set)
     std::map<std::string, int> parameterLines_;
     std::map<int, int> unitLines_;
 };

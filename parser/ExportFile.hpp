@@ -23,8 +23,8 @@ inline constexpr int kMaxProcesses = 4096;
 
 struct ExportEntry {
     int line = 0;
-    bool directory = false;  // an `R` line
-    std::string type;        // comm, mmed, rmed, mess, resu, repe, ...
+    bool directory = false;      // an `R` line
+    std::string type;            // comm, mmed, rmed, mess, resu, repe, ...
     std::filesystem::path path;  // absolute (data: relative to the .export's folder; results: see below)
     bool data = false, result = false, compressed = false;
     int unit = 0;  // 0: no logical unit
@@ -33,9 +33,9 @@ struct ExportEntry {
 struct ExportFile {
     std::string name;  // file name of the .export, for messages
     std::vector<ExportEntry> entries;
-    std::optional<double> timeLimitSeconds;  // P time_limit
-    std::optional<double> memoryLimitMb;     // P memory_limit
-    std::optional<int> mpiProcesses;         // P mpi_nbcpu (processes; --np on the command line wins)
+    std::optional<double> timeLimitSeconds;         // P time_limit
+    std::optional<double> memoryLimitMb;            // P memory_limit
+    std::optional<int> mpiProcesses;                // P mpi_nbcpu (processes; --np on the command line wins)
     std::string where(const ExportEntry& e) const;  // "case.export, line N"
 };
 

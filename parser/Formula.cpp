@@ -201,13 +201,14 @@ bool numpyAvailable() { return !supportModule().attr("_np").is_none(); }
 bool isIdentifier(const std::string& s) { return py::str(s).attr("isidentifier")().cast<bool>(); }
 }  // namespace
 
-Formula::Formula(std::string expression, std::vector<std::string> parameters, py::dict context,
-                 py::dict commGlobals, std::string commFile, int line)
+Formula::Formula(std::string expression, std::vector<std::string> parameters, py::dict context, py::dict commGlobals,
+                 std::string commFile, int line)
     : parameters_(std::move(parameters)), commFile_(std::move(commFile)), line_(line) {
     // code_aster joins multi-line texts and strips them.
     for (char c : expression) expression_ += (c == '\n' || c == '\r') ? ' ' : c;
     const auto first = expression_.find_first_not_of(" \t");
-    expression_ = first == std::string::npos ? "" : expression_.substr(first, expression_.find_last_not_of(" \t") - first + 1);
+    expression_ =
+        first == std::string::npos ? "" : expression_.substr(first, expression_.find_last_not_of(" \t") - first + 1);
     if (expression_.empty()) throw UserError("FORMULE: VALE is empty");
     for (const auto& p : parameters_)
         if (!isIdentifier(p)) throw UserError(fmt::format("FORMULE: NOM_PARA '{}' is not a valid parameter name", p));
@@ -259,14 +260,16 @@ void Formula::logPath(const std::string& path, size_t npoints) const {
     loggedPath_ = kind;
     const long count = std::stol(path.substr(colon + 1));
     if (kind == "vector")
-        msg().infof("    FORMULE {}: evaluated on numpy arrays, {} points per batch{}", name.empty() ? expression_ : name,
-                    npoints,
-                    count > 1 ? fmt::format(" (its conditions split the points into {} branches, each on arrays)", count)
-                              : std::string());
+        msg().infof("    FORMULE {}: evaluated on numpy arrays, {} points per batch{}",
+                    name.empty() ? expression_ : name, npoints,
+                    count > 1
+                        ? fmt::format(" (its conditions split the points into {} branches, each on arrays)", count)
+                        : std::string());
     else
-        msg().infof("    FORMULE {}: numpy arrays do not go through its expression: Python is called once per distinct "
-                    "point ({} of {} points in the first batch)",
-                    name.empty() ? expression_ : name, count, npoints);
+        msg().infof(
+            "    FORMULE {}: numpy arrays do not go through its expression: Python is called once per distinct "
+            "point ({} of {} points in the first batch)",
+            name.empty() ? expression_ : name, count, npoints);
 }
 
 double Formula::evaluate(std::span<const double> args) const { return evaluateMany(args, 1).at(0); }
@@ -301,7 +304,8 @@ std::vector<double> Formula::evaluateMany(std::span<const double> args, size_t n
     }
     for (size_t i = 0; i < out.size(); ++i)
         if (!std::isfinite(out[i]))
-            fail(args.subspan(i * np, np), std::isnan(out[i]) ? "the result is nan" : fmt::format("the result is {}", out[i]));
+            fail(args.subspan(i * np, np),
+                 std::isnan(out[i]) ? "the result is nan" : fmt::format("the result is {}", out[i]));
     return out;
 }
 

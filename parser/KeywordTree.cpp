@@ -29,8 +29,7 @@ template <class T>
 const T& single(const KeywordSet& set, const std::string& keyword, const char* what) {
     const auto& v = set.values(keyword);
     if (v.size() != 1)
-        throw UserError(fmt::format("keyword {} expects one {} value, got {}", set.pathOf(keyword),
-                                    what, v.size()));
+        throw UserError(fmt::format("keyword {} expects one {} value, got {}", set.pathOf(keyword), what, v.size()));
     if (!std::holds_alternative<T>(v[0]))
         throw UserError(fmt::format("keyword {} is not of type {}", set.pathOf(keyword), what));
     return std::get<T>(v[0]);
@@ -39,14 +38,11 @@ const T& single(const KeywordSet& set, const std::string& keyword, const char* w
 
 double KeywordSet::real(const std::string& keyword) const {
     const auto& v = values(keyword);
-    if (v.size() == 1 && std::holds_alternative<long long>(v[0]))
-        return static_cast<double>(std::get<long long>(v[0]));
+    if (v.size() == 1 && std::holds_alternative<long long>(v[0])) return static_cast<double>(std::get<long long>(v[0]));
     return single<double>(*this, keyword, "real");
 }
 
-long long KeywordSet::integer(const std::string& keyword) const {
-    return single<long long>(*this, keyword, "integer");
-}
+long long KeywordSet::integer(const std::string& keyword) const { return single<long long>(*this, keyword, "integer"); }
 
 const std::string& KeywordSet::text(const std::string& keyword) const {
     return single<std::string>(*this, keyword, "text");
@@ -65,8 +61,7 @@ std::vector<double> KeywordSet::reals(const std::string& keyword) const {
 std::vector<long long> KeywordSet::integers(const std::string& keyword) const {
     std::vector<long long> out;
     for (const auto& v : values(keyword)) {
-        if (!std::holds_alternative<long long>(v))
-            throw UserError("keyword " + pathOf(keyword) + " expects integers");
+        if (!std::holds_alternative<long long>(v)) throw UserError("keyword " + pathOf(keyword) + " expects integers");
         out.push_back(std::get<long long>(v));
     }
     return out;
@@ -75,8 +70,7 @@ std::vector<long long> KeywordSet::integers(const std::string& keyword) const {
 std::vector<std::string> KeywordSet::texts(const std::string& keyword) const {
     std::vector<std::string> out;
     for (const auto& v : values(keyword)) {
-        if (!std::holds_alternative<std::string>(v))
-            throw UserError("keyword " + pathOf(keyword) + " expects texts");
+        if (!std::holds_alternative<std::string>(v)) throw UserError("keyword " + pathOf(keyword) + " expects texts");
         out.push_back(std::get<std::string>(v));
     }
     return out;
@@ -136,9 +130,7 @@ std::string KeywordSet::echo(int indent) const {
         out += ",\n";
     }
     for (const auto& [k, occs] : factor_) {
-        for (const auto& o : occs) {
-            out += pad + k + "=_F(\n" + o.echo(indent + 4) + pad + "    ),\n";
-        }
+        for (const auto& o : occs) { out += pad + k + "=_F(\n" + o.echo(indent + 4) + pad + "    ),\n"; }
     }
     return out;
 }

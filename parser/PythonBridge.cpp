@@ -10,16 +10,16 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <unistd.h>
-#include <cstdlib>
 
 #include "core/Error.hpp"
-#include "core/Mpi.hpp"
 #include "core/MemoryLimit.hpp"
 #include "core/MemoryUsage.hpp"
 #include "core/Messages.hpp"
+#include "core/Mpi.hpp"
 #include "parser/Catalog.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "parser/Formula.hpp"
@@ -89,8 +89,10 @@ CallValue toCallValue(py::handle h) {
         return CallValue::factor(std::move(d));
     }
     // numpy scalars and the like.
-    if (py::hasattr(h, "__index__")) return CallValue::of(static_cast<long long>(h.attr("__index__")().cast<long long>()));
-    if (py::hasattr(h, "__float__") && !py::hasattr(h, "__len__")) return CallValue::of(h.attr("__float__")().cast<double>());
+    if (py::hasattr(h, "__index__"))
+        return CallValue::of(static_cast<long long>(h.attr("__index__")().cast<long long>()));
+    if (py::hasattr(h, "__float__") && !py::hasattr(h, "__len__"))
+        return CallValue::of(h.attr("__float__")().cast<double>());
     v.kind = CallValue::Kind::Other;
     v.text = py::str(py::type::handle_of(h).attr("__name__")).cast<std::string>();
     return v;
@@ -226,9 +228,7 @@ std::string echoCall(const std::string& resultName, const std::string& command, 
 int currentLine() {
     try {
         return py::module_::import("sys").attr("_getframe")(0).attr("f_lineno").cast<int>();
-    } catch (...) {
-        return 0;
-    }
+    } catch (...) { return 0; }
 }
 
 // FORMULE: validated VALE / NOM_PARA, other keywords are the evaluation context.
@@ -250,19 +250,22 @@ ConceptPtr takeReused(const cata::Command& command, py::dict keywords, const std
             throw UserError(fmt::format("reuse= expects a concept, got {}", toCallValue(r).describe()));
         reused = r.cast<ConceptHandle&>().object;
         if (!resultName.empty() && !reused->name.empty() && reused->name != resultName)
-            throw UserError(fmt::format("reuse={} but the result is assigned to {}: a reentrant command "
-                                        "modifies the object given by reuse=, assign the result to it",
-                                        reused->name, resultName));
+            throw UserError(
+                fmt::format("reuse={} but the result is assigned to {}: a reentrant command "
+                            "modifies the object given by reuse=, assign the result to it",
+                            reused->name, resultName));
     }
     if (!reused && command.reentrant == cata::Reuse::Mandatory)
-        throw UserError(fmt::format("{0} modifies its input in place: reuse= is mandatory (write X = {0}(reuse=X, "
-                                    "...) with the object it modifies)",
-                                    name));
+        throw UserError(
+            fmt::format("{0} modifies its input in place: reuse= is mandatory (write X = {0}(reuse=X, "
+                        "...) with the object it modifies)",
+                        name));
     return reused;
 }
 
 // The echo of the call in code_aster's style (and the alarm of a file that does not start with DEBUT).
-void echoCommand(const CommandContext& ctx, const KeywordSet& kw, const py::dict& context, const std::string& resultType) {
+void echoCommand(const CommandContext& ctx, const KeywordSet& kw, const py::dict& context,
+                 const std::string& resultType) {
     auto& run = RunState::current();
     const std::string& name = ctx.command;
     ++run.commandCount;
@@ -315,8 +318,7 @@ ConceptPtr execute(CommandContext& ctx, const KeywordSet& kw, const py::dict& co
             py::gil_scoped_release noGil;
             result = (*fn)(kw, ctx);
         }
-        if (!result && !resultType.empty())
-            throw InternalError(fmt::format("{} returned no {}", name, resultType));
+        if (!result && !resultType.empty()) throw InternalError(fmt::format("{} returned no {}", name, resultType));
         if (result && !resultType.empty() && result->typeName() != resultType)
             throw InternalError(fmt::format("{} returned a concept of type {}, the catalog says {}", name,
                                             result->typeName(), resultType));
@@ -392,7 +394,8 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
         const ConceptPtr result = execute(ctx, kw, context, frame, resultType);
         // The result takes the variable's name, unless it is one of the call's input objects returned
         // as is (it keeps its name; with reuse= the names are the same).
-        if (result && !resultName.empty() && (result == reused || !isInput(callArgs, result))) result->name = resultName;
+        if (result && !resultName.empty() && (result == reused || !isInput(callArgs, result)))
+            result->name = resultName;
 
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         run.runningCommand[0] = '\0';
@@ -402,16 +405,12 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
         agreeOnCommand(run);
         if (run.failure) throw AbortRun{};
         return wrap(result);
-    } catch (const AbortRun&) {
-        throw;
-    } catch (const EndOfRun&) {
+    } catch (const AbortRun&) { throw; } catch (const EndOfRun&) {
         throw;
     } catch (py::error_already_set& e) {
         if (run.failure) throw AbortRun{};
         run.fail("ERROR", name, line, fmt::format("Python error: {}", e.what()));
-    } catch (const UserError& e) {
-        run.fail("ERROR", name, line, e.what());
-    } catch (const NotImplemented& e) {
+    } catch (const UserError& e) { run.fail("ERROR", name, line, e.what()); } catch (const NotImplemented& e) {
         run.fail("ERROR", name, line, e.what());
     } catch (const NumericalError& e) {
         run.fail("ERROR", name, line, std::string("numerical failure: ") + e.what());
@@ -419,9 +418,7 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
         run.fail("ERROR", name, line, std::string("internal error of miniaster (please report it): ") + e.what());
     } catch (const std::bad_alloc&) {
         run.fail("ERROR", name, line, outOfMemoryCause());
-    } catch (const std::exception& e) {
-        run.fail("ERROR", name, line, unexpectedErrorCause(e));
-    } catch (...) {
+    } catch (const std::exception& e) { run.fail("ERROR", name, line, unexpectedErrorCause(e)); } catch (...) {
         run.fail("ERROR", name, line, "unexpected error of unknown type");
     }
     agreeOnCommand(run);
@@ -441,8 +438,8 @@ py::object callConcept(ConceptHandle& self, py::args args) {
         try {
             values.push_back(a.cast<double>());
         } catch (const py::cast_error&) {
-            throw py::type_error(fmt::format("{}(): arguments must be numbers, got {}", self.object->name,
-                                             toCallValue(a).describe()));
+            throw py::type_error(
+                fmt::format("{}(): arguments must be numbers, got {}", self.object->name, toCallValue(a).describe()));
         }
     }
     try {
@@ -452,9 +449,7 @@ py::object callConcept(ConceptHandle& self, py::args args) {
         throw;
     } catch (const UserError& e) {
         run.fail("ERROR", self.object->name, currentLine(), e.what());
-    } catch (const NumericalError& e) {
-        run.fail("ERROR", self.object->name, currentLine(), e.what());
-    }
+    } catch (const NumericalError& e) { run.fail("ERROR", self.object->name, currentLine(), e.what()); }
     throw AbortRun{};
 }
 
@@ -473,9 +468,10 @@ PYBIND11_EMBEDDED_MODULE(_miniaster, m) {
         .def_property_readonly("nom", [](const ConceptHandle& h) { return h.object->name; })
         .def("getName", [](const ConceptHandle& h) { return h.object->name; })
         .def("getType", [](const ConceptHandle& h) { return h.object->typeName(); })
-        .def("__eq__", [](const ConceptHandle& a, py::object b) {
-            return py::isinstance<ConceptHandle>(b) && b.cast<ConceptHandle&>().object == a.object;
-        })
+        .def("__eq__",
+             [](const ConceptHandle& a, py::object b) {
+                 return py::isinstance<ConceptHandle>(b) && b.cast<ConceptHandle&>().object == a.object;
+             })
         .def("__hash__", [](const ConceptHandle& h) { return std::hash<const void*>()(h.object.get()); });
 
     m.def("command", &runCommand);

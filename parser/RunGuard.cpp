@@ -81,8 +81,7 @@ extern "C" void onFatalSignal(int sig) {
     if (run.runningCommand[0])
         std::snprintf(where, sizeof(where), "%s (%s, line %d)", run.runningCommand, run.commBaseName.c_str(),
                       run.runningLine);
-    else
-        std::snprintf(where, sizeof(where), "(%s)", run.commBaseName.c_str());
+    else std::snprintf(where, sizeof(where), "(%s)", run.commBaseName.c_str());
     char paragraph[640];
     const int len = std::snprintf(paragraph, sizeof(paragraph),
                                   "\n<F> <ABNORMAL_ABORT> %s: the process received signal %d (%s); this is a defect "

@@ -6,17 +6,17 @@
 #include <zlib.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <set>
 #include <thread>
-#include <chrono>
 
 #include "core/AtomicFile.hpp"
-#include "core/Mpi.hpp"
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
+#include "core/Mpi.hpp"
 #include "core/TestReport.hpp"
 #include "parser/RunState.hpp"
 
@@ -121,8 +121,9 @@ void applyExport(const ExportFile& exportFile, RunState& run, RunOutputs& out) {
         const std::string path = e.path.string();
         if (e.directory) {
             if (e.result && !out.resultFolders.empty())
-                throw UserError(exportFile.where(e) + ": a second result directory; miniaster writes the units "
-                                                      "without an F line into one (the first R line)");
+                throw UserError(exportFile.where(e) +
+                                ": a second result directory; miniaster writes the units "
+                                "without an F line into one (the first R line)");
             if (e.result) out.resultFolders.push_back(path);
             continue;
         }
@@ -139,8 +140,9 @@ void applyExport(const ExportFile& exportFile, RunState& run, RunOutputs& out) {
         out.resultFiles.push_back(path);
         if (e.type == "mess") {
             if (e.compressed)
-                throw UserError(exportFile.where(e) + ": the message log is written as the run goes: it cannot be "
-                                                      "compressed (flag C)");
+                throw UserError(exportFile.where(e) +
+                                ": the message log is written as the run goes: it cannot be "
+                                "compressed (flag C)");
             out.mess = path;
         } else if (e.type == "resu") {
             out.resu = path;
@@ -257,9 +259,7 @@ void stopRunNow(RunOutputs& out, const std::string& paragraph, const std::string
     if (!msg().resuText().empty() && !msg().streamError() && mpi::isRoot()) {
         try {
             writeResultFile(out, msg().resuText());
-        } catch (const UserError& e) {
-            reportOnStderr(e.what());
-        }
+        } catch (const UserError& e) { reportOnStderr(e.what()); }
     }
     removeLiveTemporaries();
     if (out.messFd >= 0) ::fsync(out.messFd);

@@ -27,9 +27,9 @@ public:
     static RunState& current();
 
     Units units;
-    std::string commFile;      // path of the command file
-    std::string commBaseName;  // for messages: "ssnv511a.comm"
-    bool checkOnly = false;    // --check-syntax: validate every call, execute none
+    std::string commFile;                           // path of the command file
+    std::string commBaseName;                       // for messages: "ssnv511a.comm"
+    bool checkOnly = false;                         // --check-syntax: validate every call, execute none
     std::map<std::string, std::string> runOptions;  // expert options given (parser/RunOptions.hpp)
     bool debutSeen = false;
     bool finSeen = false;

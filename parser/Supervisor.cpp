@@ -12,13 +12,13 @@
 
 #include "core/Error.hpp"
 #include "core/MallocHugePages.hpp"
-#include "core/Mpi.hpp"
 #include "core/Messages.hpp"
+#include "core/Mpi.hpp"
 #include "core/TestReport.hpp"
-#include "parser/ParserMessages.hpp"
-#include "parser/RunOptions.hpp"
 #include "parser/ExportFile.hpp"
+#include "parser/ParserMessages.hpp"
 #include "parser/RunGuard.hpp"
+#include "parser/RunOptions.hpp"
 #include "parser/RunOutputs.hpp"
 #include "parser/RunState.hpp"
 #include "parser/StaticCheck.hpp"
@@ -33,7 +33,8 @@ namespace {
 // The usage text, with the expert run options the engine registered (parser/RunOptions.hpp).
 std::string usage() {
     std::string options;
-    for (const auto& [name, o] : RunOptionRegistry::instance().options()) options += fmt::format(" [--{} {}]", name, o.valueName);
+    for (const auto& [name, o] : RunOptionRegistry::instance().options())
+        options += fmt::format(" [--{} {}]", name, o.valueName);
     std::string text = fmt::format(
         "usage: miniaster run CASE.export [--np K] [--out-dir DIR] [--check-syntax]{0}\n"
         "       miniaster run CASE.comm [--mesh MESH.med] [--np K] [--out-dir DIR] [--check-syntax]{0}\n"
@@ -52,7 +53,7 @@ struct Options {
     bool outDirGiven = false;
     std::string mesh;
     bool checkOnly = false;
-    int processes = 0;  // --np (0: not given)
+    int processes = 0;                              // --np (0: not given)
     std::map<std::string, std::string> runOptions;  // registered expert options given
 };
 
@@ -77,7 +78,8 @@ std::string banner() {
 }
 
 std::string timingSummary(const RunState& run) {
-    std::string out = fmt::format("\n {}\n  TIMING SUMMARY (wall time, peak resident memory of the process)\n", std::string(78, '-'));
+    std::string out =
+        fmt::format("\n {}\n  TIMING SUMMARY (wall time, peak resident memory of the process)\n", std::string(78, '-'));
     out += fmt::format("  {:<22} {:>6} {:>12} {:>18}\n", "command", "calls", "elapsed (s)", "peak memory (MB)");
     double total = 0;
     for (const auto& t : run.timings) {
@@ -148,20 +150,22 @@ void executeCommandFile(RunState& run) {
         if (e.matches(PyExc_NameError) && py::hasattr(value, "name") && !value.attr("name").is_none()) {
             const std::string name = value.attr("name").cast<std::string>();
             bool upper = !name.empty();
-            for (char c : name) upper = upper && (std::isupper(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '_');
+            for (char c : name)
+                upper = upper && (std::isupper(static_cast<unsigned char>(c)) ||
+                                  std::isdigit(static_cast<unsigned char>(c)) || c == '_');
             // A call of an unknown name in capitals: an unknown command (not an undefined variable).
             std::string lineText;
             if (line > 0) {
                 std::istringstream lines(source);
-                for (int k = 0; k < line && std::getline(lines, lineText); ++k) {
-                }
+                for (int k = 0; k < line && std::getline(lines, lineText); ++k) {}
             }
             const auto call = lineText.find(name);
             upper = upper && call != std::string::npos &&
                     lineText.find_first_not_of(" \t", call + name.size()) != std::string::npos &&
                     lineText[lineText.find_first_not_of(" \t", call + name.size())] == '(';
             if (upper) {
-                run.fail("ERROR", name, line, "unknown command " + name + " (not a code_aster command known to miniaster)");
+                run.fail("ERROR", name, line,
+                         "unknown command " + name + " (not a code_aster command known to miniaster)");
                 return;
             }
         }
@@ -188,13 +192,15 @@ Options parseArguments(int argc, char** argv) {
             const bool number = !v.empty() && v.find_first_not_of("0123456789") == std::string::npos && v.size() < 6;
             opt.processes = number ? std::stoi(v) : 0;
             if (opt.processes < 1 || opt.processes > kMaxProcesses)
-                throw SetupError(fmt::format("--np needs a number of processes from 1 to {}, got '{}'", kMaxProcesses, v));
+                throw SetupError(
+                    fmt::format("--np needs a number of processes from 1 to {}, got '{}'", kMaxProcesses, v));
             if (opt.processes != mpi::size())
                 throw SetupError(fmt::format("--np {}: this run has {} MPI process(es) (mpirun -np {})", opt.processes,
                                              mpi::size(), mpi::size()));
         } else if (a == "--check-syntax") {
             opt.checkOnly = true;
-        } else if (const RunOption* o = a.starts_with("--") ? RunOptionRegistry::instance().find(a.substr(2)) : nullptr) {
+        } else if (const RunOption* o =
+                       a.starts_with("--") ? RunOptionRegistry::instance().find(a.substr(2)) : nullptr) {
             const std::string v = value();
             if (const std::string why = o->check(v); !why.empty()) throw SetupError(a + ": " + why);
             opt.runOptions[o->name] = v;
@@ -217,9 +223,9 @@ void stopFromWatchdog(const std::string& kind, const std::string& cause) {
     const auto& run = RunState::current();
     const std::string where =
         run.runningCommand[0] ? fmt::format("{} ({}, line {})", run.runningCommand, run.commBaseName, run.runningLine)
-        : run.runningLine     ? fmt::format("({}, in the Python code after the command of line {})", run.commBaseName,
-                                            run.runningLine)
-                              : fmt::format("({})", run.commBaseName);
+        : run.runningLine
+            ? fmt::format("({}, in the Python code after the command of line {})", run.commBaseName, run.runningLine)
+            : fmt::format("({})", run.commBaseName);
     stopRunNow(*gOutputs, fmt::format("<F> <{}> {}: {}", kind, where, cause), "<F>_" + kind);
 }
 
@@ -256,9 +262,7 @@ std::optional<int> openOutputs(RunOutputs& outputs, const std::optional<std::str
         try {
             prepareOutputs(outputs);
             openMessageLog(outputs);
-        } catch (const UserError& e) {
-            failure = mpi::Failure{0, e.what()};
-        }
+        } catch (const UserError& e) { failure = mpi::Failure{0, e.what()}; }
     }
     failure = mpi::agree(failure);
     if (!failure) return std::nullopt;
@@ -277,12 +281,14 @@ void runCommandFile(const Options& opt, RunState& run, RunOutputs& outputs, cons
         if (const std::string line = RunOptionRegistry::instance().find(name)->announce(value); !line.empty())
             announced += "\n  " + line;
     if (limits.timeLimitSeconds || limits.memoryLimitMb)
-        announced += fmt::format("\n  limits      : {}{}",
-                                 limits.timeLimitSeconds ? fmt::format("time {:g} s (CPU) ", *limits.timeLimitSeconds) : "",
-                                 limits.memoryLimitMb ? fmt::format("memory {:g} MB (resident)", *limits.memoryLimitMb) : "");
-    msg().infof("  command file: {}\n  message log : {}\n  result file : {}\n  memory      : {}\n  MPI processes: {}{}{}",
-                run.commFile, outputs.mess, outputs.resu, mallocPagesState(), mpi::size(),
-                opt.checkOnly ? "\n  mode        : syntax check only (--check-syntax)" : "", announced);
+        announced +=
+            fmt::format("\n  limits      : {}{}",
+                        limits.timeLimitSeconds ? fmt::format("time {:g} s (CPU) ", *limits.timeLimitSeconds) : "",
+                        limits.memoryLimitMb ? fmt::format("memory {:g} MB (resident)", *limits.memoryLimitMb) : "");
+    msg().infof(
+        "  command file: {}\n  message log : {}\n  result file : {}\n  memory      : {}\n  MPI processes: {}{}{}",
+        run.commFile, outputs.mess, outputs.resu, mallocPagesState(), mpi::size(),
+        opt.checkOnly ? "\n  mode        : syntax check only (--check-syntax)" : "", announced);
     // The interpreter lives until the process ends: concepts may hold Python objects (FORMULE).
     py::initialize_interpreter();
     installCrashHandler(outputs.messFd);  // after Python, which installs its own handlers
@@ -292,14 +298,11 @@ void runCommandFile(const Options& opt, RunState& run, RunOutputs& outputs, cons
         executeCommandFile(run);
     } catch (py::error_already_set& e) {
         run.fail("ERROR", "", 0, std::string("internal error of the supervisor: ") + e.what());
-    } catch (const std::exception& e) {
-        run.fail("ERROR", "", 0, unexpectedErrorCause(e));
-    }
+    } catch (const std::exception& e) { run.fail("ERROR", "", 0, unexpectedErrorCause(e)); }
     // print() output still buffered.
     try {
         py::module_::import("sys").attr("stdout").attr("flush")();
-    } catch (...) {
-    }
+    } catch (...) {}
     if (!run.failure && !run.finSeen) msg().alarm(SUPERVIS_2);
 }
 

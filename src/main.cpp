@@ -18,10 +18,11 @@ int main(int argc, char** argv) {
     if (command == "convert") return ma::cli::convertMain(argc, argv);
     if (command == "plot") return ma::cli::plotMain(argc, argv);
     if (command == "--help" || command == "-h")
-        std::fputs("usage: miniaster convert RESULT.rmed OUT.vtu    (every field and step, for ParaView)\n"
-                   "       miniaster plot RESULT.rmed [--field NAME] [--component C] [--deformed SCALE] -o OUT.png\n"
-                   "       miniaster --version\n",
-                   stdout);
+        std::fputs(
+            "usage: miniaster convert RESULT.rmed OUT.vtu    (every field and step, for ParaView)\n"
+            "       miniaster plot RESULT.rmed [--field NAME] [--component C] [--deformed SCALE] -o OUT.png\n"
+            "       miniaster --version\n",
+            stdout);
     if (command == "run")
         if (const int status = ma::cli::launchProcessesIfAsked(argc, argv); status >= 0) return status;
     ma::med::initialiseBeforeMpi();

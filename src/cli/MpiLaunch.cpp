@@ -24,8 +24,7 @@ std::optional<int> processCount(const std::string& text) {
         size_t end = 0;
         const int k = std::stoi(text, &end);
         if (end == text.size() && k >= 1 && k <= kMaxProcesses) return k;
-    } catch (const std::exception&) {
-    }
+    } catch (const std::exception&) {}
     return std::nullopt;
 }
 
@@ -41,9 +40,7 @@ int requestedProcesses(int argc, char** argv) {
     if (exportPath.empty()) return 1;
     try {
         return readExportFile(exportPath, std::nullopt).mpiProcesses.value_or(1);
-    } catch (const std::exception&) {
-        return 1;
-    }
+    } catch (const std::exception&) { return 1; }
 }
 
 }  // namespace
@@ -64,8 +61,9 @@ int launchProcessesIfAsked(int argc, char** argv) {
     }
     std::error_code ec;
     const std::string self = std::filesystem::read_symlink("/proc/self/exe", ec).string();
-    std::vector<std::string> args = {"mpirun", "--quiet", "-np", std::to_string(k), "--bind-to", "none",
-                                     "-x", "OPENBLAS_NUM_THREADS", "-x", "OMP_NUM_THREADS"};
+    std::vector<std::string> args = {"mpirun",    "--quiet",        "-np", std::to_string(k),
+                                     "--bind-to", "none",           "-x",  "OPENBLAS_NUM_THREADS",
+                                     "-x",        "OMP_NUM_THREADS"};
     if (k > cores) args.push_back("--oversubscribe");
     args.push_back(ec ? std::string(argv[0]) : self);
     for (int i = 1; i < argc; ++i) args.emplace_back(argv[i]);

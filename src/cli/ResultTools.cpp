@@ -136,9 +136,7 @@ int convertMain(int argc, char** argv) {
         if (argc != 4) throw UsageError(argc < 4 ? "missing arguments" : "too many arguments");
         for (const auto& line : convert(argv[2], argv[3])) std::printf("miniaster convert: %s\n", line.c_str());
         return 0;
-    } catch (const UsageError& e) {
-        return failWith("convert", e.what(), true);
-    } catch (const std::exception& e) {
+    } catch (const UsageError& e) { return failWith("convert", e.what(), true); } catch (const std::exception& e) {
         return failWith("convert", e.what(), false);
     }
 }
@@ -157,7 +155,7 @@ int plotMain(int argc, char** argv) {
             throw;
         }
         std::vector<std::string> args = {"/usr/bin/python3", plotScript(), vtuPath, "--source", input,
-                                         "--remove-folder", work.string()};
+                                         "--remove-folder",  work.string()};
         for (int i = 3; i < argc; ++i) args.push_back(argv[i]);
         std::vector<char*> raw;
         for (auto& a : args) raw.push_back(a.data());
@@ -165,9 +163,7 @@ int plotMain(int argc, char** argv) {
         ::execv(raw[0], raw.data());
         fs::remove_all(work);
         throw UserError(fmt::format("cannot start {}: {}", raw[0], std::strerror(errno)));
-    } catch (const UsageError& e) {
-        return failWith("plot", e.what(), true);
-    } catch (const std::exception& e) {
+    } catch (const UsageError& e) { return failWith("plot", e.what(), true); } catch (const std::exception& e) {
         return failWith("plot", e.what(), false);
     }
 }

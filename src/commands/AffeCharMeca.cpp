@@ -51,9 +51,10 @@ ConceptPtr buildMechanicalLoad(const KeywordSet& kw, bool functions) {
             if (slot == 0)  // a translation must exist on every node named (enriched ones are skipped silently)
                 for (int n : nodes)
                     if (!modelNodes[n])
-                        throw UserError(fmt::format("{}: node {} carries no unknown of the model {} (it belongs to "
-                                                    "no cell of the model)",
-                                                    occ.pathOf(key), mesh.nodeNames[n], model->name));
+                        throw UserError(
+                            fmt::format("{}: node {} carries no unknown of the model {} (it belongs to "
+                                        "no cell of the model)",
+                                        occ.pathOf(key), mesh.nodeNames[n], model->name));
             ImposedDof d;
             d.path = occ.pathOf(key);
             d.nodes = nodes;
@@ -76,9 +77,10 @@ ConceptPtr buildMechanicalLoad(const KeywordSet& kw, bool functions) {
         for (int c : selectedCells(mesh, occ, &what))
             if (isSkin[c]) p.cells.push_back(c);
         if (p.cells.empty())
-            throw UserError(fmt::format("{} ({}): no boundary element of the model {} there; the boundary cells must "
-                                        "be listed in AFFE_MODELE",
-                                        occ.path(), what, model->name));
+            throw UserError(
+                fmt::format("{} ({}): no boundary element of the model {} there; the boundary cells must "
+                            "be listed in AFFE_MODELE",
+                            occ.path(), what, model->name));
         readValue(occ, "PRES", functions, p.value, p.function);
         msg().infof("    {}: pressure on {} boundary element(s) ({})", occ.path(), p.cells.size(), what);
         load->pressures.push_back(std::move(p));

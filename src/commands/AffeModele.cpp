@@ -65,10 +65,11 @@ ConceptPtr affeModele(const KeywordSet& kw, CommandContext&) {
                 assigned[c] = static_cast<int>(m);
                 ++used;
             } else if (cd >= dim - 1) {
-                throw NotImplemented(fmt::format(
-                    "{} ({}): cell {} is a {}, for which miniaster has no {} element (supported: {})",
-                    occ.path(), what, mesh->cellNames[c], cellTypeName(t), modelisationName(m),
-                    dim == 2 ? "TRIA3, QUAD4 and SEG2 boundaries" : "TETRA4, HEXA8 and TRIA3/QUAD4 boundaries"));
+                throw NotImplemented(
+                    fmt::format("{} ({}): cell {} is a {}, for which miniaster has no {} element (supported: {})",
+                                occ.path(), what, mesh->cellNames[c], cellTypeName(t), modelisationName(m),
+                                dim == 2 ? "TRIA3, QUAD4 and SEG2 boundaries"
+                                         : "TETRA4, HEXA8 and TRIA3/QUAD4 boundaries"));
             } else {
                 ++ignored[cellTypeName(t)];
             }
@@ -96,10 +97,11 @@ ConceptPtr affeModele(const KeywordSet& kw, CommandContext&) {
         for (const auto& e : model->elements)
             for (int n : mesh->cellNodes(e.cell))
                 if (mesh->coords[n][2] != 0.0)
-                    throw UserError(fmt::format("AFFE_MODELE: node {} of cell {} has z = {}: a {} model must lie in "
-                                                "the plane z = 0",
-                                                mesh->nodeNames[n], mesh->cellNames[e.cell], mesh->coords[n][2],
-                                                modelisationName(model->modelisation)));
+                    throw UserError(
+                        fmt::format("AFFE_MODELE: node {} of cell {} has z = {}: a {} model must lie in "
+                                    "the plane z = 0",
+                                    mesh->nodeNames[n], mesh->cellNames[e.cell], mesh->coords[n][2],
+                                    modelisationName(model->modelisation)));
     for (const auto& [type, count] : counts)
         msg().infof("    {} elements on {} cells ({})", modelisationName(model->modelisation), count, type);
     return model;

@@ -2,10 +2,10 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "commands/TableKeywords.hpp"
 #include "core/Error.hpp"
 #include "core/Function.hpp"
 #include "core/Messages.hpp"
-#include "commands/TableKeywords.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "post/TableOperations.hpp"
 
@@ -24,8 +24,7 @@ ConceptPtr calcTable(const KeywordSet& kw, CommandContext& ctx) {
     auto table = std::make_shared<Table>(*input);
     // Title: kept with reuse, otherwise code_aster's automatic one naming the input table. Actions
     // append trace lines; only the first line survives (§3.1).
-    std::vector<std::string> title =
-        ctx.reused ? input->title : automaticTitle(input->name, input->typeName());
+    std::vector<std::string> title = ctx.reused ? input->title : automaticTitle(input->name, input->typeName());
 
     for (const auto& action : kw.factor("ACTION")) {
         const std::string op = action.text("OPERATION");
@@ -35,14 +34,14 @@ ConceptPtr calcTable(const KeywordSet& kw, CommandContext& ctx) {
             const RowFilter f = tables::rowFilter(action);
             try {
                 filterRows(*table, f);
-            } catch (const UserError& e) {
-                throw UserError(action.path() + ": " + e.what());
-            }
+            } catch (const UserError& e) { throw UserError(action.path() + ": " + e.what()); }
             title.push_back(f.describe());
         } else if (op == "COMB") {
             auto other = action.object<Table>("TABLE");
-            const std::vector<std::string> keys = action.has("NOM_PARA") ? action.texts("NOM_PARA") : std::vector<std::string>{};
-            const std::string format = action.has("FORMAT_R") ? fortranToPrintf(action.text("FORMAT_R")) : std::string();
+            const std::vector<std::string> keys =
+                action.has("NOM_PARA") ? action.texts("NOM_PARA") : std::vector<std::string>{};
+            const std::string format =
+                action.has("FORMAT_R") ? fortranToPrintf(action.text("FORMAT_R")) : std::string();
             combineTables(*table, *other, keys, action.text("RESTREINT") == "OUI", format);
             title.insert(title.end(), other->title.begin(), other->title.end());
             title.push_back(fmt::format("MERGE avec labels=[{}]", fmt::join(keys, ", ")));
@@ -65,9 +64,10 @@ ConceptPtr calcTable(const KeywordSet& kw, CommandContext& ctx) {
             for (const auto& v : action.values("VALE")) values.push_back(toCell(v));
             addConstantColumns(*table, action.texts("NOM_PARA"), values);
         } else {
-            throw NotImplemented(fmt::format("{}: OPERATION='{}' is not supported by miniaster (EXTR, FILTRE, COMB, "
-                                             "OPER, RENOMME, SUPPRIME, TRI, AJOUT_COLONNE are)",
-                                             action.pathOf("OPERATION"), op));
+            throw NotImplemented(
+                fmt::format("{}: OPERATION='{}' is not supported by miniaster (EXTR, FILTRE, COMB, "
+                            "OPER, RENOMME, SUPPRIME, TRI, AJOUT_COLONNE are)",
+                            action.pathOf("OPERATION"), op));
         }
     }
     table->removeEmptyRows();  // code_aster rebuilds the table: rows without any value vanish

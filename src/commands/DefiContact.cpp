@@ -36,13 +36,15 @@ void refuseUnsupportedFormulation(const KeywordSet& kw) {
 std::shared_ptr<const xfem::XfemModel> contactModel(const KeywordSet& kw, const Model& model) {
     auto xm = std::dynamic_pointer_cast<const xfem::XfemModel>(model.enrichment);
     if (!xm)
-        throw UserError(fmt::format("{}: {} is not an X-FEM model; FORMULATION='XFEM' needs the model made by "
-                                    "MODI_MODELE_XFEM(..., CONTACT='STANDARD')",
-                                    kw.pathOf("MODELE"), model.name));
+        throw UserError(
+            fmt::format("{}: {} is not an X-FEM model; FORMULATION='XFEM' needs the model made by "
+                        "MODI_MODELE_XFEM(..., CONTACT='STANDARD')",
+                        kw.pathOf("MODELE"), model.name));
     if (xm->contact() != xfem::XfemContact::Standard)
-        throw UserError(fmt::format("{}: the X-FEM model {} was made without contact; use "
-                                    "MODI_MODELE_XFEM(..., CONTACT='STANDARD') (code_aster XFEM2_9)",
-                                    kw.pathOf("MODELE"), model.name));
+        throw UserError(
+            fmt::format("{}: the X-FEM model {} was made without contact; use "
+                        "MODI_MODELE_XFEM(..., CONTACT='STANDARD') (code_aster XFEM2_9)",
+                        kw.pathOf("MODELE"), model.name));
     return xm;
 }
 
@@ -92,8 +94,8 @@ contact::ContactZone readZone(const KeywordSet& z, const Model& model, const xfe
         throw UserError(fmt::format("{}: interface {} is not one of the interfaces of model {}", z.pathOf("FISS_MAIT"),
                                     zone.crack->name, model.name));
     if (!seen.insert(zone.crackIndex).second)
-        throw UserError(fmt::format("{}: interface {} already has a contact zone", z.pathOf("FISS_MAIT"),
-                                    zone.crack->name));
+        throw UserError(
+            fmt::format("{}: interface {} already has a contact zone", z.pathOf("FISS_MAIT"), zone.crack->name));
     readAlgorithm(z, zone);
     zone.initiallyActive = z.text("CONTACT_INIT") == "OUI";
     zone.bilateral = z.text("GLISSIERE") == "OUI";
@@ -117,7 +119,8 @@ void logDefinition(const contact::ContactDefinition& def, const xfem::XfemModel&
     const auto& cracks = xm.cracks();
     for (size_t i = 0; i < cracks.size(); ++i)
         if (!seen.count(static_cast<int>(i)))
-            msg().infof("    interface {} has no contact zone: its lips are free (no contact condition)", cracks[i]->name);
+            msg().infof("    interface {} has no contact zone: its lips are free (no contact condition)",
+                        cracks[i]->name);
     for (const auto& z : def.zones)
         msg().infof("    contact zone on {}: {}, {}, CONTACT_INIT={}, GLISSIERE={}", z.crack->name,
                     z.algorithm == ContactAlgorithm::Nitsche
@@ -128,8 +131,9 @@ void logDefinition(const contact::ContactDefinition& def, const xfem::XfemModel&
                     z.bilateral ? "OUI" : "NON");
     msg().infof("    ITER_CONT_MAXI = {}", def.maxContactIterations);
     if (!ignored.list.empty())
-        msg().infof("    DEFI_CONTACT keywords accepted but ignored by miniaster (code_aster algorithm settings):\n      {}",
-                    fmt::join(ignored.list, "\n      "));
+        msg().infof(
+            "    DEFI_CONTACT keywords accepted but ignored by miniaster (code_aster algorithm settings):\n      {}",
+            fmt::join(ignored.list, "\n      "));
 }
 
 ConceptPtr defiContact(const KeywordSet& kw, CommandContext& ctx) {

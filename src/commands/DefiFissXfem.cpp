@@ -31,8 +31,7 @@ ConceptPtr defiFissXfem(const KeywordSet& kw, CommandContext& ctx) {
     if (defi.empty()) throw UserError("DEFI_FISS is mandatory");
     const auto& occ = defi[0];
     auto fln = occ.object<Function>("FONC_LN");
-    if (occ.has("FONC_LT"))
-        msg().alarm(XFEM_25, occ.pathOf("FONC_LT"));
+    if (occ.has("FONC_LT")) msg().alarm(XFEM_25, occ.pathOf("FONC_LT"));
 
     // One batch evaluation at every node: parameters X, Y (2D mesh) or X, Y, Z.
     const size_t nn = mesh->coords.size();
@@ -61,17 +60,16 @@ ConceptPtr defiFissXfem(const KeywordSet& kw, CommandContext& ctx) {
     }
     auto crack = xfem::buildCrack(mesh, std::move(lsn), jonction.empty() ? nullptr : &junction);
 
-    if (crack->adjustedLevelSets > 0)
-        msg().alarm(XFEM_63, crack->adjustedLevelSets);
-    msg().infof("    interface ({}): {} cut cells, {} Heaviside-enriched nodes, {} cells with an enriched node, "
-                "{} level-set values adjusted",
-                ctx.resultName.empty() ? "DEFI_FISS_XFEM" : ctx.resultName, crack->cutCells.size(),
-                crack->enrichedNodeCount(), crack->heavisideCells.size(), crack->adjustedLevelSets);
+    if (crack->adjustedLevelSets > 0) msg().alarm(XFEM_63, crack->adjustedLevelSets);
+    msg().infof(
+        "    interface ({}): {} cut cells, {} Heaviside-enriched nodes, {} cells with an enriched node, "
+        "{} level-set values adjusted",
+        ctx.resultName.empty() ? "DEFI_FISS_XFEM" : ctx.resultName, crack->cutCells.size(), crack->enrichedNodeCount(),
+        crack->heavisideCells.size(), crack->adjustedLevelSets);
     for (const auto& m : crack->masters)
         msg().infof("    junction on {}: the interface exists where {} * LSN({}) < 0{}", m.crack->name,
                     m.coef > 0 ? "+1" : "-1", m.crack->name, m.declared ? "" : " (inherited)");
-    if (crack->enrichedNodeCount() == 0)
-        msg().alarm(XFEM_ENRI);
+    if (crack->enrichedNodeCount() == 0) msg().alarm(XFEM_ENRI);
     if (ctx.info >= 3)
         for (int n = 0; n < mesh->nodeCount(); ++n)
             msg().infof("      {:8s} LSN = {:.12e}  status {}", mesh->nodeNames[n], crack->lsn[n],

@@ -13,8 +13,8 @@ ConceptPtr defiFonction(const KeywordSet& kw, CommandContext&) {
     f->parameter_ = {kw.text("NOM_PARA")};
     const auto vale = kw.reals("VALE");
     if (vale.size() < 2 || vale.size() % 2 != 0)
-        throw UserError("DEFI_FONCTION: VALE must hold pairs x1, y1, x2, y2, ... (got " +
-                        std::to_string(vale.size()) + " numbers)");
+        throw UserError("DEFI_FONCTION: VALE must hold pairs x1, y1, x2, y2, ... (got " + std::to_string(vale.size()) +
+                        " numbers)");
     for (size_t i = 0; i < vale.size(); i += 2) {
         f->x.push_back(vale[i]);
         f->y.push_back(vale[i + 1]);

@@ -52,8 +52,7 @@ void store(Mesh& mesh, GroupSet& groups, const std::string& name, std::vector<in
     if (name.empty() || name.size() > 24)
         throw UserError(fmt::format("{}: group name '{}' must have 1 to 24 characters", occ.pathOf("NOM"), name));
     if (members.empty()) {
-        if (alarms)
-            msg().alarm(SOUSTRUC_36, occ.path(), kind, name);
+        if (alarms) msg().alarm(SOUSTRUC_36, occ.path(), kind, name);
         return;
     }
     msg().infof("    {} group {:<24} created: {} {}", kind, name, members.size(),
@@ -118,8 +117,8 @@ void createNodeGroups(Mesh& mesh, const KeywordSet& occ, bool alarms) {
                 if (alarms) msg().alarm(SOUSTRUC_37, g);
                 continue;
             }
-            store(mesh, mesh.nodeGroups, g, nodesOfCells(mesh, mesh.cellGroups.get(g), nodeCriterion(occ)), occ,
-                  alarms, "node");
+            store(mesh, mesh.nodeGroups, g, nodesOfCells(mesh, mesh.cellGroups.get(g), nodeCriterion(occ)), occ, alarms,
+                  "node");
         }
     } else if (occ.has("GROUP_MA")) {
         const auto groups = occ.texts("GROUP_MA");
@@ -128,8 +127,8 @@ void createNodeGroups(Mesh& mesh, const KeywordSet& occ, bool alarms) {
                                         groups.size(), occ.pathOf("GROUP_MA")));
         for (size_t i = 0; i < groups.size(); ++i) {
             const auto& cells = groupOf(mesh.cellGroups, groups[i], occ, "GROUP_MA", mesh, "cell");
-            store(mesh, mesh.nodeGroups, names.empty() ? groups[i] : names[i], nodesOfCells(mesh, cells, nodeCriterion(occ)),
-                  occ, alarms, "node");
+            store(mesh, mesh.nodeGroups, names.empty() ? groups[i] : names[i],
+                  nodesOfCells(mesh, cells, nodeCriterion(occ)), occ, alarms, "node");
         }
     } else if (occ.has("GROUP_NO")) {
         store(mesh, mesh.nodeGroups, single(), unionOf(groupLists(mesh.nodeGroups, occ, "GROUP_NO", mesh, "node")), occ,
@@ -149,14 +148,14 @@ void createNodeGroups(Mesh& mesh, const KeywordSet& occ, bool alarms) {
         store(mesh, mesh.nodeGroups, single(),
               nodesOnPlane(mesh, vector3(occ, "POINT"), vector3(occ, "VECT_NORMALE"), precision), occ, alarms, "node");
     } else {
-        throw UserError(occ.path() + ": give TOUT_GROUP_MA, GROUP_MA, GROUP_NO, NOEUD, INTERSEC, UNION, DIFFE or OPTION");
+        throw UserError(occ.path() +
+                        ": give TOUT_GROUP_MA, GROUP_MA, GROUP_NO, NOEUD, INTERSEC, UNION, DIFFE or OPTION");
     }
 }
 
 ConceptPtr defiGroup(const KeywordSet& kw, CommandContext& ctx) {
     auto mesh = kw.object<Mesh>("MAILLAGE");
-    if (ctx.reused && ctx.reused != mesh)
-        throw UserError("DEFI_GROUP: reuse= must name the mesh given by MAILLAGE");
+    if (ctx.reused && ctx.reused != mesh) throw UserError("DEFI_GROUP: reuse= must name the mesh given by MAILLAGE");
     const bool alarms = kw.text("ALARME") == "OUI";
     auto destroy = [&](const char* keyword, GroupSet& groups, const char* kind) {
         for (const auto& occ : kw.factor(keyword))

@@ -19,13 +19,15 @@ ConceptPtr defiMateriau(const KeywordSet& kw, CommandContext&) {
     // or an infinite shear modulus: refused here with that cause, rather than as a singular system.
     // NU = 0.5 is valid in plane stress (C_PLAN); the 3D and D_PLAN laws refuse it (IsotropicLaw).
     if (!(m->E > 0.0))
-        throw UserError(fmt::format("{} = {}: Young's modulus must be > 0 (a material without stiffness makes the "
-                                    "stiffness matrix singular)",
-                                    e.pathOf("E"), m->E));
+        throw UserError(
+            fmt::format("{} = {}: Young's modulus must be > 0 (a material without stiffness makes the "
+                        "stiffness matrix singular)",
+                        e.pathOf("E"), m->E));
     if (!(m->nu > -1.0 && m->nu <= 0.5))
-        throw UserError(fmt::format("{} = {}: Poisson's ratio must lie in ]-1, 0.5] (at NU = -1 the shear modulus "
-                                    "E/(2(1+NU)) is infinite)",
-                                    e.pathOf("NU"), m->nu));
+        throw UserError(
+            fmt::format("{} = {}: Poisson's ratio must lie in ]-1, 0.5] (at NU = -1 the shear modulus "
+                        "E/(2(1+NU)) is infinite)",
+                        e.pathOf("NU"), m->nu));
     if (const auto near = nearlyDegenerateElasticity(*m, e.pathOf("NU"))) msg().alarm(*near);
     if (e.has("RHO")) m->hasRho = true, m->rho = e.real("RHO");
     msg().infof("    ELAS: E = {}, NU = {}{}", m->E, m->nu, m->hasRho ? fmt::format(", RHO = {}", m->rho) : "");

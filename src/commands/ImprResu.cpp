@@ -6,12 +6,12 @@
 
 #include <set>
 
+#include "commands/ImprResuGmsh.hpp"
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "core/Mpi.hpp"
 #include "core/Units.hpp"
 #include "fe/Result.hpp"
-#include "commands/ImprResuGmsh.hpp"
 #include "med_io/MedWriter.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "post/PostMessages.hpp"
@@ -96,7 +96,8 @@ void printResult(med::MedWriter& w, const Result& result, const KeywordSet& occ)
                 msg().alarm(RESULT1_6, occ.path(), nomCham, step->order, result.name);
                 continue;
             }
-            msg().infof("    field {} (NUME_ORDRE {}, INST {}) printed as {}", nomCham, step->order, step->inst, medName);
+            msg().infof("    field {} (NUME_ORDRE {}, INST {}) printed as {}", nomCham, step->order, step->inst,
+                        medName);
         }
     }
 }

@@ -32,7 +32,7 @@ std::set<std::string>& gmshFilesOfThisRun() {
 }
 
 struct ViewRequest {
-    std::string typeCham;            // SCALAIRE, VECT_2D, VECT_3D, TENS_2D, TENS_3D
+    std::string typeCham;             // SCALAIRE, VECT_2D, VECT_3D, TENS_2D, TENS_3D
     std::vector<std::string> nomCmp;  // as given (may be empty)
     int version = 2;
 };
@@ -47,13 +47,15 @@ std::vector<int> selectedCells(const Mesh& mesh, const KeywordSet& occ) {
     std::vector<char> keep(size_t(mesh.cellCount()), 0);
     for (const auto& g : occ.has("GROUP_MA") ? occ.texts("GROUP_MA") : std::vector<std::string>{}) {
         if (!mesh.cellGroups.has(g))
-            throw UserError(fmt::format("{}: the cell group '{}' does not exist in mesh {}", occ.pathOf("GROUP_MA"), g,
-                                        mesh.name));
+            throw UserError(
+                fmt::format("{}: the cell group '{}' does not exist in mesh {}", occ.pathOf("GROUP_MA"), g, mesh.name));
         for (int c : mesh.cellGroups.get(g)) keep[size_t(c)] = 1;
     }
     for (const auto& m : occ.has("MAILLE") ? occ.texts("MAILLE") : std::vector<std::string>{}) {
         const int c = mesh.findCell(m);
-        if (c < 0) throw UserError(fmt::format("{}: the cell '{}' does not exist in mesh {}", occ.pathOf("MAILLE"), m, mesh.name));
+        if (c < 0)
+            throw UserError(
+                fmt::format("{}: the cell '{}' does not exist in mesh {}", occ.pathOf("MAILLE"), m, mesh.name));
         keep[size_t(c)] = 1;
     }
     std::vector<int> out;
@@ -121,34 +123,35 @@ std::vector<View> nodalViews(const FieldSteps& f, const ViewRequest& r, const st
     const size_t need = expectedCount(r.typeCham);
     if (r.version == 1) {  // 1.0: TYPE_CHAM is not read
         std::vector<View> out;
-        const bool displacement = std::any_of(all.begin(), all.end(), [](const std::string& c) {
-            return c == "DX" || c == "DY" || c == "DZ";
-        });
-        if (r.nomCmp.empty() && displacement) out.push_back(nodalView(f, "VECTEUR", ViewKind::Vector, {"DX", "DY", "DZ"}, cells));
-        const bool others = std::any_of(all.begin(), all.end(), [](const std::string& c) {
-            return c != "DX" && c != "DY" && c != "DZ";
-        });
+        const bool displacement = std::any_of(all.begin(), all.end(),
+                                              [](const std::string& c) { return c == "DX" || c == "DY" || c == "DZ"; });
+        if (r.nomCmp.empty() && displacement)
+            out.push_back(nodalView(f, "VECTEUR", ViewKind::Vector, {"DX", "DY", "DZ"}, cells));
+        const bool others = std::any_of(all.begin(), all.end(),
+                                        [](const std::string& c) { return c != "DX" && c != "DY" && c != "DZ"; });
         if (!r.nomCmp.empty() || others || !displacement)
-            for (const auto& c : r.nomCmp.empty() ? all : r.nomCmp) out.push_back(nodalView(f, c, ViewKind::Scalar, {c}, cells));
+            for (const auto& c : r.nomCmp.empty() ? all : r.nomCmp)
+                out.push_back(nodalView(f, c, ViewKind::Scalar, {c}, cells));
         return out;
     }
     if (need == 0) {
         std::vector<View> out;
-        for (const auto& c : r.nomCmp.empty() ? all : r.nomCmp) out.push_back(nodalView(f, c, ViewKind::Scalar, {c}, cells));
+        for (const auto& c : r.nomCmp.empty() ? all : r.nomCmp)
+            out.push_back(nodalView(f, c, ViewKind::Scalar, {c}, cells));
         return out;
     }
     if (r.nomCmp.size() != need)
         throw UserError(fmt::format("{}: TYPE_CHAM='{}' needs NOM_CMP with exactly {} components, got {}", where,
                                     r.typeCham, need, r.nomCmp.size()));
     const bool vector = r.typeCham.rfind("VECT", 0) == 0;
-    return {nodalView(f, vector ? "VECTEUR" : "TENSEUR", vector ? ViewKind::Vector : ViewKind::Tensor, r.nomCmp, cells)};
+    return {
+        nodalView(f, vector ? "VECTEUR" : "TENSEUR", vector ? ViewKind::Vector : ViewKind::Tensor, r.nomCmp, cells)};
 }
 
 // ELGA fields: scalar views of the cell means, on the selected cells that carry values.
 std::vector<View> gaussViews(const FieldSteps& f, const ViewRequest& r, const std::vector<int>& cells,
                              const std::string& where) {
-    if (expectedCount(r.typeCham) != 0)
-        msg().alarm(PREPOST6_35, where, r.typeCham);
+    if (expectedCount(r.typeCham) != 0) msg().alarm(PREPOST6_35, where, r.typeCham);
     std::vector<View> out;
     for (const auto& c : r.nomCmp.empty() ? f.components() : r.nomCmp) {
         View v{f.title + "_" + c, ViewKind::Scalar, f.times, true, {}, {}};
@@ -227,9 +230,10 @@ ConceptPtr imprResuGmsh(const KeywordSet& kw, CommandContext& ctx) {
     int written = 0;
     for (const auto& occ : kw.factor("RESU")) {
         if (occ.has("MAILLAGE"))
-            throw NotImplemented(occ.pathOf("MAILLAGE") + ": FORMAT='GMSH' writes result fields (RESULTAT, CHAM_GD); "
-                                                          "the mesh alone (gmsh's mesh format 1.0) is not written by "
-                                                          "miniaster");
+            throw NotImplemented(occ.pathOf("MAILLAGE") +
+                                 ": FORMAT='GMSH' writes result fields (RESULTAT, CHAM_GD); "
+                                 "the mesh alone (gmsh's mesh format 1.0) is not written by "
+                                 "miniaster");
         // TYPE_CHAM has no catalog default: the RESU keywords are shared with FORMAT='MED', which has
         // none; code_aster's default for GMSH is 'SCALAIRE'.
         const std::string type = occ.has("TYPE_CHAM") ? occ.text("TYPE_CHAM") : std::string("SCALAIRE");

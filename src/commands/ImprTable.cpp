@@ -17,8 +17,8 @@
 #include "core/Units.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "post/PostMessages.hpp"
-#include "post/TablePrinter.hpp"
 #include "post/TableOperations.hpp"
+#include "post/TablePrinter.hpp"
 
 namespace ma {
 namespace {
@@ -43,8 +43,8 @@ ConceptPtr imprTable(const KeywordSet& kw, CommandContext& ctx) {
     auto table = kw.object<Table>("TABLE");
     const std::string format = kw.text("FORMAT");
     if (format != "TABLEAU")
-        throw NotImplemented(fmt::format("{}: FORMAT='{}' is not supported by miniaster (TABLEAU is)",
-                                         kw.pathOf("FORMAT"), format));
+        throw NotImplemented(
+            fmt::format("{}: FORMAT='{}' is not supported by miniaster (TABLEAU is)", kw.pathOf("FORMAT"), format));
 
     // FILTRE and TRI are refused by the catalog (filter or sort with CALC_TABLE first).
     Table printed = *table;
@@ -57,8 +57,7 @@ ConceptPtr imprTable(const KeywordSet& kw, CommandContext& ctx) {
             if (printed.hasColumn(n)) options.columns.push_back(n);
             else missing.push_back(n);
         }
-        if (!missing.empty())
-            msg().alarm(TABLE0_7, fmt::format("{}", fmt::join(missing, ", ")), table->name);
+        if (!missing.empty()) msg().alarm(TABLE0_7, fmt::format("{}", fmt::join(missing, ", ")), table->name);
     }
     options.realFormat = fortranToPrintf(kw.text("FORMAT_R"));
     const std::string text = formatTable(printed, options);

@@ -40,7 +40,8 @@ std::shared_ptr<Mesh> readMailMesh(const std::string& path, int unit) {
 std::string cellList(const Mesh& mesh, const std::vector<int>& cells) {
     std::string s;
     for (size_t i = 0; i < cells.size() && i < 5; ++i)
-        s += (i ? ", " : "") + mesh.cellNames[size_t(cells[i])] + " (" + cellTypeName(mesh.cellTypes[size_t(cells[i])]) + ")";
+        s += (i ? ", " : "") + mesh.cellNames[size_t(cells[i])] + " (" +
+             cellTypeName(mesh.cellTypes[size_t(cells[i])]) + ")";
     return cells.size() > 5 ? s + ", ..." : s;
 }
 
@@ -49,13 +50,15 @@ std::string cellList(const Mesh& mesh, const std::vector<int>& cells) {
 void reportOrientation(const Mesh& mesh, const std::string& name) {
     const OrientationCensus census = orientationCensus(mesh);
     if (!census.degenerate.empty())
-        throw UserError(fmt::format("LIRE_MAILLAGE: mesh {}: {} cell(s) are degenerate, their Jacobian round-off for their "
-                                    "size (coincident or aligned nodes, or non-finite coordinates): {}",
-                                    name, census.degenerate.size(), cellList(mesh, census.degenerate)));
+        throw UserError(
+            fmt::format("LIRE_MAILLAGE: mesh {}: {} cell(s) are degenerate, their Jacobian round-off for their "
+                        "size (coincident or aligned nodes, or non-finite coordinates): {}",
+                        name, census.degenerate.size(), cellList(mesh, census.degenerate)));
     if (census.reversedCount() > 0) {
         std::string counts;
         for (const auto& [type, n] : census.reversed)
-            counts += fmt::format("{}{} of {} {}", counts.empty() ? "" : ", ", n, census.total.at(type), cellTypeName(type));
+            counts +=
+                fmt::format("{}{} of {} {}", counts.empty() ? "" : ", ", n, census.total.at(type), cellTypeName(type));
         msg().alarm(MAILLAGE_ORIENTATION, name, census.reversedCount(),
                     census.dimension == 3 ? "left-handed" : "clockwise", counts);
     }

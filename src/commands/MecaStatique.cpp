@@ -19,11 +19,11 @@ ConceptPtr mecaStatique(const KeywordSet& kw, CommandContext& ctx) {
     const auto t0 = std::chrono::steady_clock::now();
     if (ctx.reused) throw NotImplemented("MECA_STATIQUE with reuse= is not supported by miniaster");
     auto model = kw.object<Model>("MODELE");
-    if (!kw.has("CHAM_MATER"))
-        throw UserError("MECA_STATIQUE: CHAM_MATER is required (the elements need a material)");
+    if (!kw.has("CHAM_MATER")) throw UserError("MECA_STATIQUE: CHAM_MATER is required (the elements need a material)");
     auto material = kw.object<MaterialField>("CHAM_MATER");
     if (material->mesh != model->mesh)
-        throw UserError("MECA_STATIQUE: CHAM_MATER " + material->name + " is not defined on the mesh of MODELE " + model->name);
+        throw UserError("MECA_STATIQUE: CHAM_MATER " + material->name + " is not defined on the mesh of MODELE " +
+                        model->name);
     std::vector<double> instants{0.0};
     if (kw.has("INST")) instants = {kw.real("INST")};
     if (kw.has("LIST_INST")) {
@@ -48,8 +48,7 @@ ConceptPtr mecaStatique(const KeywordSet& kw, CommandContext& ctx) {
         msg().infof("    NUME_ORDRE {} INST {}: max |R| after the solve = {:.3e} (relative {:.3e})", order, inst,
                     report.maxResidual, report.relativeResidual);
     }
-    msg().infof("    MECA_STATIQUE: {} step(s), {:.3f} s", instants.size(),
-                secondsSince(t0));
+    msg().infof("    MECA_STATIQUE: {} step(s), {:.3f} s", instants.size(), secondsSince(t0));
     return result;
 }
 

@@ -29,7 +29,8 @@ inline std::vector<int> selectedCells(const Mesh& mesh, const KeywordSet& occ, s
     if (occ.has("GROUP_MA")) {
         for (const auto& g : occ.texts("GROUP_MA")) {
             if (!mesh.cellGroups.has(g))
-                throw UserError(fmt::format("{}: the mesh {} has no cell group '{}'", occ.pathOf("GROUP_MA"), mesh.name, g));
+                throw UserError(
+                    fmt::format("{}: the mesh {} has no cell group '{}'", occ.pathOf("GROUP_MA"), mesh.name, g));
             const auto& members = mesh.cellGroups.get(g);
             cells.insert(cells.end(), members.begin(), members.end());
         }
@@ -38,10 +39,12 @@ inline std::vector<int> selectedCells(const Mesh& mesh, const KeywordSet& occ, s
     if (occ.has("MAILLE")) {
         for (const auto& n : occ.texts("MAILLE")) {
             const int c = mesh.findCell(n);
-            if (c < 0) throw UserError(fmt::format("{}: the mesh {} has no cell '{}'", occ.pathOf("MAILLE"), mesh.name, n));
+            if (c < 0)
+                throw UserError(fmt::format("{}: the mesh {} has no cell '{}'", occ.pathOf("MAILLE"), mesh.name, n));
             cells.push_back(c);
         }
-        if (what) *what = fmt::format("{}{}MAILLE={}", *what, what->empty() ? "" : " ", fmt::join(occ.texts("MAILLE"), ","));
+        if (what)
+            *what = fmt::format("{}{}MAILLE={}", *what, what->empty() ? "" : " ", fmt::join(occ.texts("MAILLE"), ","));
     }
     std::sort(cells.begin(), cells.end());
     cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
@@ -67,14 +70,16 @@ inline std::vector<int> selectedNodes(const Mesh& mesh, const KeywordSet& occ, c
     if (occ.has("GROUP_NO"))
         for (const auto& g : occ.texts("GROUP_NO")) {
             if (!mesh.nodeGroups.has(g))
-                throw UserError(fmt::format("{}: the mesh {} has no node group '{}'", occ.pathOf("GROUP_NO"), mesh.name, g));
+                throw UserError(
+                    fmt::format("{}: the mesh {} has no node group '{}'", occ.pathOf("GROUP_NO"), mesh.name, g));
             const auto& members = mesh.nodeGroups.get(g);
             nodes.insert(nodes.end(), members.begin(), members.end());
         }
     if (occ.has("NOEUD"))
         for (const auto& n : occ.texts("NOEUD")) {
             const int i = mesh.findNode(n);
-            if (i < 0) throw UserError(fmt::format("{}: the mesh {} has no node '{}'", occ.pathOf("NOEUD"), mesh.name, n));
+            if (i < 0)
+                throw UserError(fmt::format("{}: the mesh {} has no node '{}'", occ.pathOf("NOEUD"), mesh.name, n));
             nodes.push_back(i);
         }
     std::sort(nodes.begin(), nodes.end());
@@ -100,8 +105,7 @@ inline SolverOptions solverOptions(const KeywordSet& kw, int info) {
     if (o.method == "MUMPS") o.acceleration = s.text("ACCELERATION");
     if (s.has("PCENT_PIVOT")) {
         const auto& v = s.values("PCENT_PIVOT")[0];
-        o.pcentPivot = std::holds_alternative<long long>(v) ? int(std::get<long long>(v))
-                                                            : int(std::get<double>(v));
+        o.pcentPivot = std::holds_alternative<long long>(v) ? int(std::get<long long>(v)) : int(std::get<double>(v));
     }
     if (s.has("STOP_SINGULIER") && s.text("STOP_SINGULIER") == "NON") o.nprec = -1;
     // MUMPS pre/post-processing with code_aster's meaning (docs/fe.md, "Linear solvers"):

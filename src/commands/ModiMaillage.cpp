@@ -24,8 +24,7 @@ std::vector<int> cellsOfGroups(const Mesh& mesh, const KeywordSet& occ, const st
 
 ConceptPtr modiMaillage(const KeywordSet& kw, CommandContext& ctx) {
     auto mesh = kw.object<Mesh>("MAILLAGE");
-    if (ctx.reused && ctx.reused != mesh)
-        throw UserError("MODI_MAILLAGE: reuse= must name the mesh given by MAILLAGE");
+    if (ctx.reused && ctx.reused != mesh) throw UserError("MODI_MAILLAGE: reuse= must name the mesh given by MAILLAGE");
     auto orient = [&](const char* keyword, const char* bodyKeyword, int bodyDim) {
         for (const auto& occ : kw.factor(keyword)) {
             const auto skin = cellsOfGroups(*mesh, occ, "GROUP_MA");

@@ -8,8 +8,8 @@
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
-#include "fe/Quadrature.hpp"
 #include "fe/Model.hpp"
+#include "fe/Quadrature.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "parser/RunOptions.hpp"
 #include "xfem/SubcellQuadrature.hpp"
@@ -40,9 +40,10 @@ const RunOptionRegistration subcellQuadratureOption(RunOption{
     },
     [](const std::string& rule) {
         const int degree = *subcellDegreeOf(rule);
-        return degree ? fmt::format("X-FEM       : --subcell-quadrature {} (volume sub-cells integrated to degree {}, "
-                                    "not code_aster's catalogue rules)",
-                                    degree, degree)
+        return degree ? fmt::format(
+                            "X-FEM       : --subcell-quadrature {} (volume sub-cells integrated to degree {}, "
+                            "not code_aster's catalogue rules)",
+                            degree, degree)
                       : std::string();
     }});
 
@@ -79,10 +80,11 @@ void logSubcellQuadrature(const xfem::XfemModel& xm) {
     if (degree == 0)
         msg().info("    sub-cell quadrature: catalogue (the rules of code_aster's X-FEM element catalogues)");
     else
-        msg().infof("    sub-cell quadrature: degree {} (--subcell-quadrature {}, a miniaster run option, not a "
-                    "code_aster keyword): volume sub-cells use the lowest rule exact to degree {}; skin sub-cells "
-                    "keep the catalogue's rules",
-                    degree, degree, degree);
+        msg().infof(
+            "    sub-cell quadrature: degree {} (--subcell-quadrature {}, a miniaster run option, not a "
+            "code_aster keyword): volume sub-cells use the lowest rule exact to degree {}; skin sub-cells "
+            "keep the catalogue's rules",
+            degree, degree, degree);
     for (const auto& [key, u] : usage) {
         const auto& kind = u.kind;
         const std::string used = xfem::subcellRule(kind, degree);
@@ -145,15 +147,17 @@ ConceptPtr modiModeleXfem(const KeywordSet& kw, CommandContext& ctx) {
         enriched += a > 0;
         multi += a > 1;
     }
-    msg().infof("    X-FEM model with {} interface(s), contact {}: {} X-FEM elements ({} sub-cells), {} enriched "
-                "nodes ({} with several Heaviside enrichments), {} inactive Heaviside slots",
-                cracks.size(), contact, xm->xfemCells().size(), subcells, enriched, multi, xm->inactiveSlots().size());
+    msg().infof(
+        "    X-FEM model with {} interface(s), contact {}: {} X-FEM elements ({} sub-cells), {} enriched "
+        "nodes ({} with several Heaviside enrichments), {} inactive Heaviside slots",
+        cracks.size(), contact, xm->xfemCells().size(), subcells, enriched, multi, xm->inactiveSlots().size());
     for (const auto& [key, count] : types)
         msg().infof("      {} element(s) seeing {} interface(s), {} Heaviside slot(s) per node", count, key.first,
                     key.second);
-    msg().infof("    conditioning: smallest retained enrichment support fraction {:.6e} (criterion {:.1e}), {} "
-                "enrichment(s) dropped",
-                xm->smallestRetainedFraction(), std::pow(criterion, xm->dim()), xm->droppedSlots());
+    msg().infof(
+        "    conditioning: smallest retained enrichment support fraction {:.6e} (criterion {:.1e}), {} "
+        "enrichment(s) dropped",
+        xm->smallestRetainedFraction(), std::pow(criterion, xm->dim()), xm->droppedSlots());
     logSubcellQuadrature(*xm);
     return out;
 }

@@ -42,7 +42,8 @@ ConceptPtr postErreur(const KeywordSet& kw, CommandContext&) {
         table = displacementErrorTable(*model, *field, groups, formulas(kw, comps));
     } else if (option == "ENER_RELA") {
         auto field = std::dynamic_pointer_cast<GaussField>(kw.rawObject("CHAM_GD"));
-        if (!field) throw UserError(kw.pathOf("CHAM_GD") + ": a stress field at Gauss points (ELGA_SIEF_R) is expected");
+        if (!field)
+            throw UserError(kw.pathOf("CHAM_GD") + ": a stress field at Gauss points (ELGA_SIEF_R) is expected");
         const std::string deformation = kw.text("DEFORMATION");
         if (deformation != "PETIT")
             throw NotImplemented(kw.pathOf("DEFORMATION") + ": only DEFORMATION='PETIT' is supported");
@@ -55,10 +56,10 @@ ConceptPtr postErreur(const KeywordSet& kw, CommandContext&) {
     }
     const size_t total = table->rowCount() - 1;
     msg().infof("    {}: TOTAL REFERENCE = {}, DIFFERENCE = {}{}", table->title.front(),
-                pythonRepr(std::get<double>(table->cell(total, 2))), pythonRepr(std::get<double>(table->cell(total, 1))),
-                table->columnCount() > 3
-                    ? ", ERREUR RELATIVE = " + pythonRepr(std::get<double>(table->cell(total, 3)))
-                    : std::string(" (reference zero: no relative error)"));
+                pythonRepr(std::get<double>(table->cell(total, 2))),
+                pythonRepr(std::get<double>(table->cell(total, 1))),
+                table->columnCount() > 3 ? ", ERREUR RELATIVE = " + pythonRepr(std::get<double>(table->cell(total, 3)))
+                                         : std::string(" (reference zero: no relative error)"));
     return table;
 }
 

@@ -28,10 +28,11 @@ ConceptPtr postMailXfem(const KeywordSet& kw, CommandContext&) {
     for (const auto& c : visu.cells) copiedCells += c.original >= 0;
     for (const auto& n : visu.nodes) copiedNodes += n.original >= 0;
     const size_t crack = m.nodeGroups.has(names.crackGroup) ? m.nodeGroups.get(names.crackGroup).size() : 0;
-    msg().infof("    visualisation mesh: {} nodes ({} copied, {} new of which {} on the interfaces in group {}), "
-                "{} cells ({} copied, {} sub-cells {}...)",
-                m.nodeCount(), copiedNodes, m.nodeCount() - copiedNodes, crack, names.crackGroup, m.cellCount(),
-                copiedCells, m.cellCount() - copiedCells, names.cellX);
+    msg().infof(
+        "    visualisation mesh: {} nodes ({} copied, {} new of which {} on the interfaces in group {}), "
+        "{} cells ({} copied, {} sub-cells {}...)",
+        m.nodeCount(), copiedNodes, m.nodeCount() - copiedNodes, crack, names.crackGroup, m.cellCount(), copiedCells,
+        m.cellCount() - copiedCells, names.cellX);
     return visu.mesh;
 }
 

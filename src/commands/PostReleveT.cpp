@@ -24,7 +24,9 @@ std::vector<const ResultStep*> selectSteps(const KeywordSet& a, const Result& re
         for (double t : insts) out.push_back(&result.stepAtInst(t, precision, relative));
     };
     for (const char* k : {"LIST_ORDRE", "FREQ", "LIST_FREQ", "NUME_MODE", "NOEUD_CMP", "NOM_CAS", "ANGLE"})
-        if (a.has(k)) throw NotImplemented(a.pathOf(k) + " is not supported by miniaster (NUME_ORDRE, INST, LIST_INST, TOUT_ORDRE are)");
+        if (a.has(k))
+            throw NotImplemented(a.pathOf(k) +
+                                 " is not supported by miniaster (NUME_ORDRE, INST, LIST_INST, TOUT_ORDRE are)");
     if (a.has("NUME_ORDRE")) {
         for (long long o : a.integers("NUME_ORDRE")) out.push_back(&result.step(int(o)));
     } else if (a.has("INST")) {
@@ -44,8 +46,8 @@ ConceptPtr postReleveT(const KeywordSet& kw, CommandContext& ctx) {
     for (const auto& a : kw.factor("ACTION")) {
         const auto operations = a.texts("OPERATION");
         if (operations.size() != 1 || operations[0] != "EXTRACTION")
-            throw NotImplemented(fmt::format("{}: only OPERATION='EXTRACTION' is supported by miniaster",
-                                             a.pathOf("OPERATION")));
+            throw NotImplemented(
+                fmt::format("{}: only OPERATION='EXTRACTION' is supported by miniaster", a.pathOf("OPERATION")));
         for (const char* k : {"INVARIANT", "ELEM_PRINCIPAUX", "RESULTANTE", "MOMENT", "GROUP_MA", "MAILLE", "CHEMIN"})
             if (a.has(k)) throw NotImplemented(a.pathOf(k) + " is not supported by miniaster");
         if (a.text("REPERE") != "GLOBAL")
@@ -54,8 +56,7 @@ ConceptPtr postReleveT(const KeywordSet& kw, CommandContext& ctx) {
         x.title = a.text("INTITULE");
         if (a.has("NOEUD")) x.nodes = a.texts("NOEUD");
         if (a.has("GROUP_NO")) x.nodeGroups = a.texts("GROUP_NO");
-        if (x.nodes.empty() && x.nodeGroups.empty())
-            throw UserError(a.path() + ": give the nodes (NOEUD or GROUP_NO)");
+        if (x.nodes.empty() && x.nodeGroups.empty()) throw UserError(a.path() + ": give the nodes (NOEUD or GROUP_NO)");
         if (a.has("RESULTAT")) {
             auto result = a.object<Result>("RESULTAT");
             x.fieldName = a.text("NOM_CHAM");

@@ -70,9 +70,10 @@ Increments incrementsOf(const KeywordSet& kw) {
     if (inc.has("INST_FIN")) out.last = indexOf(inc.real("INST_FIN"), "INST_FIN");
     if (inc.has("NUME_INST_FIN")) out.last = static_cast<size_t>(inc.integer("NUME_INST_FIN"));
     if (out.first >= list.size() || out.last >= list.size() || out.last <= out.first)
-        throw UserError(fmt::format("STAT_NON_LINE/INCREMENT: no step between instants #{} and #{} of LIST_INST "
-                                    "({} instants)",
-                                    out.first, out.last, list.size()));
+        throw UserError(
+            fmt::format("STAT_NON_LINE/INCREMENT: no step between instants #{} and #{} of LIST_INST "
+                        "({} instants)",
+                        out.first, out.last, list.size()));
     return out;
 }
 
@@ -141,7 +142,8 @@ ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
     auto model = kw.object<Model>("MODELE");
     auto material = kw.object<MaterialField>("CHAM_MATER");
     if (material->mesh != model->mesh)
-        throw UserError("STAT_NON_LINE: CHAM_MATER " + material->name + " is not defined on the mesh of MODELE " + model->name);
+        throw UserError("STAT_NON_LINE: CHAM_MATER " + material->name + " is not defined on the mesh of MODELE " +
+                        model->name);
     const Increments steps = incrementsOf(kw);
     const auto& list = steps.list;
     const size_t first = steps.first, last = steps.last;
@@ -154,8 +156,8 @@ ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
     std::shared_ptr<contact::ContactTerms> contactTerms;
     if (definition) {
         if (definition->model->enrichment != model->enrichment)
-            throw UserError(fmt::format("the contact {} was defined on model {}, not on MODELE {}",
-                                        definition->name, definition->model->name, model->name));
+            throw UserError(fmt::format("the contact {} was defined on model {}, not on MODELE {}", definition->name,
+                                        definition->model->name, model->name));
         contactTerms = contact::attachContact(problem, *material, definition);
     }
     auto result = mechanics::mechanicalResult("evol_noli", model, material);

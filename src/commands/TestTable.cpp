@@ -5,8 +5,8 @@
 
 #include <filesystem>
 
-#include "core/Error.hpp"
 #include "commands/TableKeywords.hpp"
+#include "core/Error.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "post/TestCheck.hpp"
 

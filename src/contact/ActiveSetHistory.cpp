@@ -43,7 +43,8 @@ std::string ActiveSetHistory::flippingPoints(const ContactTerms& terms, const st
         for (size_t p = 0; p < changes_.size(); ++p)
             if (changedLast_[p]) points.push_back(static_cast<int>(p));
     }
-    std::stable_sort(points.begin(), points.end(), [&](int a, int b) { return changes_[size_t(a)] > changes_[size_t(b)]; });
+    std::stable_sort(points.begin(), points.end(),
+                     [&](int a, int b) { return changes_[size_t(a)] > changes_[size_t(b)]; });
 
     const auto& xm = terms.definition().xfemModel();
     const Mesh& mesh = xm.mesh();
@@ -55,12 +56,12 @@ std::string ActiveSetHistory::flippingPoints(const ContactTerms& terms, const st
         std::string cells = mesh.cellNames[size_t(facet.minus.cell)];
         if (facet.plus.cell != facet.minus.cell) cells += " / " + mesh.cellNames[size_t(facet.plus.cell)];
         const StatusFunction f = terms.statusFunction(p, u);
-        out += fmt::format("\n  {} point at ({:.6g}, {:.6g}, {:.6g}), facet in cell {}: {} status change(s), now {}, gap "
-                           "{:.3e}, contact function {:.3e} (sum of its terms' magnitudes {:.3e}), block fractions {:.3g} / {:.3g}",
-                           xm.cracks()[size_t(facet.crack)]->name, cp.xyz[0], cp.xyz[1], cp.xyz[2], cells,
-                           changes_[size_t(p)], terms.active()[size_t(p)] ? "active" : "inactive", terms.gap(p, u),
-                           f.value, f.magnitude, facet.minus.blockMeasure / facet.minus.cellMeasure,
-                           facet.plus.blockMeasure / facet.plus.cellMeasure);
+        out += fmt::format(
+            "\n  {} point at ({:.6g}, {:.6g}, {:.6g}), facet in cell {}: {} status change(s), now {}, gap "
+            "{:.3e}, contact function {:.3e} (sum of its terms' magnitudes {:.3e}), block fractions {:.3g} / {:.3g}",
+            xm.cracks()[size_t(facet.crack)]->name, cp.xyz[0], cp.xyz[1], cp.xyz[2], cells, changes_[size_t(p)],
+            terms.active()[size_t(p)] ? "active" : "inactive", terms.gap(p, u), f.value, f.magnitude,
+            facet.minus.blockMeasure / facet.minus.cellMeasure, facet.plus.blockMeasure / facet.plus.cellMeasure);
     }
     if (static_cast<int>(points.size()) > shown)
         out += fmt::format("\n  ... and {} other point(s)", static_cast<int>(points.size()) - shown);

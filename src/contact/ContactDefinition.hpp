@@ -24,11 +24,11 @@ enum class ContactAlgorithm {
 
 struct ContactZone {
     std::shared_ptr<const xfem::Crack> crack;  // FISS_MAIT
-    int crackIndex = -1;                        // index in the X-FEM model's crack list
+    int crackIndex = -1;                       // index in the X-FEM model's crack list
     ContactAlgorithm algorithm = ContactAlgorithm::Nitsche;
-    double penalty = 0.0;        // COEF_PENA_CONT
-    bool initiallyActive = false;  // CONTACT_INIT='OUI'
-    bool bilateral = false;        // GLISSIERE='OUI': a point that has been in contact stays active
+    double penalty = 0.0;            // COEF_PENA_CONT
+    bool initiallyActive = false;    // CONTACT_INIT='OUI'
+    bool bilateral = false;          // GLISSIERE='OUI': a point that has been in contact stays active
     ContactIntegration integration;  // INTEGRATION, ORDRE_INT: the rule of the zone's facets
 };
 

@@ -46,7 +46,8 @@ double subcellMeasure(int dim, const std::vector<Vec3>& xyz, const xfem::SubCell
 }
 
 // Physical measure of every block (Heaviside tuple) of a cut cell.
-std::map<std::vector<signed char>, double> blockMeasures(int dim, const std::vector<Vec3>& xyz, const xfem::CellCut& cut) {
+std::map<std::vector<signed char>, double> blockMeasures(int dim, const std::vector<Vec3>& xyz,
+                                                         const xfem::CellCut& cut) {
     std::map<std::vector<signed char>, double> out;
     for (const auto& s : cut.subcells) out[s.heaviside] += subcellMeasure(dim, xyz, s);
     return out;
@@ -82,8 +83,7 @@ bool onParentFace(CellType type, const std::vector<Vec3>& ref) {
                          all([&](const Vec3& r) { return std::abs(r[i] + 1.0) <= tol; })))
             return true;
     }
-    if (simplex)
-        return all([&](const Vec3& r) { return std::abs(r[0] + r[1] + (d == 3 ? r[2] : 0.0) - 1.0) <= tol; });
+    if (simplex) return all([&](const Vec3& r) { return std::abs(r[0] + r[1] + (d == 3 ? r[2] : 0.0) - 1.0) <= tol; });
     return false;
 }
 
@@ -311,10 +311,11 @@ private:
         for (int p : fm.points)
             for (size_t k = 0; k < cm->cracks.size(); ++k)
                 if (cm->cracks[k] != crack && onCrack(cm->points[p], k)) f.atJunction = true;
-        if (!finishFacet(f, verts, difference(centroid(xp, cp->subcells[fp.subcell]), centroid(xm, cm->subcells[fm.subcell]))))
+        if (!finishFacet(f, verts,
+                         difference(centroid(xp, cp->subcells[fp.subcell]), centroid(xm, cm->subcells[fm.subcell]))))
             return;
-        addFacet(std::move(f), {fm.cell, fp.cell, cm->subcells[fm.subcell].heaviside, crack,
-                                cp->subcells[fp.subcell].heaviside, 1});
+        addFacet(std::move(f),
+                 {fm.cell, fp.cell, cm->subcells[fm.subcell].heaviside, crack, cp->subcells[fp.subcell].heaviside, 1});
         ++st_.acrossParentFaces;
     }
 
@@ -335,7 +336,8 @@ private:
                     clipFaces(*cut, crack, xyz, blocks, sides[0][a], sides[1][b], covered[0][a], covered[1][b]);
         }
         for (int side = 0; side < 2; ++side)
-            for (size_t a = 0; a < sides[side].size(); ++a) countUncovered(*cut, crack, xyz, sides[side][a], side, covered[side][a]);
+            for (size_t a = 0; a < sides[side].size(); ++a)
+                countUncovered(*cut, crack, xyz, sides[side][a], side, covered[side][a]);
     }
 
     // Whether reference point r of a face lies on another interface of the cell: at its vertices
@@ -367,12 +369,14 @@ private:
             pieces = segmentIntersection({vertex(fm, 0), vertex(fm, 1)}, {vertex(fp, 0), vertex(fp, 1)},
                                          kNegligibleReferenceArea);
         } else {
-            for (const auto& t : triangleIntersection({vertex(fm, 0), vertex(fm, 1), vertex(fm, 2)},
-                                                      {vertex(fp, 0), vertex(fp, 1), vertex(fp, 2)}, kNegligibleReferenceArea))
+            for (const auto& t :
+                 triangleIntersection({vertex(fm, 0), vertex(fm, 1), vertex(fm, 2)},
+                                      {vertex(fp, 0), vertex(fp, 1), vertex(fp, 2)}, kNegligibleReferenceArea))
                 pieces.emplace_back(t.begin(), t.end());
         }
         const auto nodeXyz = nodeCoordinates(mesh_, cut.cell);
-        const Vec3 towardsPlus = difference(centroid(xyz, cut.subcells[fp.subcell]), centroid(xyz, cut.subcells[fm.subcell]));
+        const Vec3 towardsPlus =
+            difference(centroid(xyz, cut.subcells[fp.subcell]), centroid(xyz, cut.subcells[fm.subcell]));
         for (const auto& ref : pieces) {
             std::vector<Vec3> verts;
             for (const auto& r : ref) verts.push_back(mapToPhysical(cut.type, nodeXyz, r));
@@ -381,7 +385,8 @@ private:
             f.minus = makeSide(cut, fm.subcell, ref, blocks);
             f.plus = makeSide(cut, fp.subcell, ref, blocks);
             if (!finishFacet(f, verts, towardsPlus)) continue;
-            for (const auto& r : ref) f.atJunction = f.atJunction || touchesOtherCrack(cut, fm, r) || touchesOtherCrack(cut, fp, r);
+            for (const auto& r : ref)
+                f.atJunction = f.atJunction || touchesOtherCrack(cut, fm, r) || touchesOtherCrack(cut, fp, r);
             coveredMinus += f.measure;
             coveredPlus += f.measure;
             addFacet(std::move(f), {cut.cell, cut.cell, cut.subcells[fm.subcell].heaviside, crack,
@@ -407,7 +412,8 @@ private:
             const Vec3 e1 = difference(r[f.points[1]].ref, r[f.points[0]].ref);
             const double refMeasure =
                 dim_ == 2 ? norm(e1) : 0.5 * norm(cross(e1, difference(r[f.points[2]].ref, r[f.points[0]].ref)));
-            if (refMeasure > 0.0) negligible = std::max(negligible, kNegligibleReferenceArea * probe.measure / refMeasure);
+            if (refMeasure > 0.0)
+                negligible = std::max(negligible, kNegligibleReferenceArea * probe.measure / refMeasure);
         }
         const double left = probe.measure - covered;
         if (left <= negligible) return;
@@ -510,14 +516,19 @@ private:
         f.crack = crack;
         f.minus = plusSide ? other : own;
         f.plus = plusSide ? own : other;
-        const Vec3 fromOwn = difference(centroid(acrossXyz, across->subcells[acrossSub]), centroid(xyz, cut->subcells[face.subcell]));
+        const Vec3 fromOwn =
+            difference(centroid(acrossXyz, across->subcells[acrossSub]), centroid(xyz, cut->subcells[face.subcell]));
         const Vec3 towardsPlus = plusSide ? Vec3{-fromOwn[0], -fromOwn[1], -fromOwn[2]} : fromOwn;
         if (!finishFacet(f, verts, towardsPlus)) return false;
         for (int p : face.points) f.atJunction = f.atJunction || onOtherCrack(*cut, p, size_t(face.local));
         const auto& minusCut = plusSide ? *across : *cut;
         const auto& plusCut = plusSide ? *cut : *across;
-        const PairKey key{f.minus.cell, f.plus.cell, minusCut.subcells[f.minus.subcell].heaviside, crack,
-                          plusCut.subcells[f.plus.subcell].heaviside, f.minus.cell == f.plus.cell ? 0 : 1};
+        const PairKey key{f.minus.cell,
+                          f.plus.cell,
+                          minusCut.subcells[f.minus.subcell].heaviside,
+                          crack,
+                          plusCut.subcells[f.plus.subcell].heaviside,
+                          f.minus.cell == f.plus.cell ? 0 : 1};
         addFacet(std::move(f), key);
         ++st_.acrossDropped;
         return true;

@@ -23,7 +23,7 @@ struct FacetSide {
     // Measure of the block the sub-cell belongs to inside its parent (all sub-cells of the parent
     // with the same Heaviside tuple): the stress there is one polynomial (weights of the average).
     double blockMeasure = 0.0;
-    double cellMeasure = 0.0;  // measure of the parent cell (sum of its blocks)
+    double cellMeasure = 0.0;                // measure of the parent cell (sum of its blocks)
     std::vector<std::array<double, 3>> ref;  // facet vertices in the parent's reference coordinates
 };
 

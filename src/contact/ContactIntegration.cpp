@@ -33,9 +33,10 @@ std::string missingRuleReason(int dim, const ContactIntegration& in) {
     if (in.scheme == "NCOTES" && in.order > 5)
         return "code_aster's X-FEM contact (xminte) selects no integration family for it in 3D";
     const char* family = in.scheme == "SIMPSON" ? "SIMP1" : "COTES";
-    return fmt::format("code_aster's X-FEM contact (xminte) selects for it the family {}, which is defined on "
-                       "segment facets only (elraga has no {} for triangles)",
-                       family, family);
+    return fmt::format(
+        "code_aster's X-FEM contact (xminte) selects for it the family {}, which is defined on "
+        "segment facets only (elraga has no {} for triangles)",
+        family, family);
 }
 
 int facetTraceDegree(CellType parent, const std::vector<std::array<double, 3>>& ref) {
@@ -46,8 +47,8 @@ int facetTraceDegree(CellType parent, const std::vector<std::array<double, 3>>& 
     constexpr double kTolerance = 1e-9;
     int varying = 0;
     for (int k = 0; k < dim; ++k) {
-        const auto [lo, hi] = std::minmax_element(ref.begin(), ref.end(),
-                                                  [k](const auto& a, const auto& b) { return a[k] < b[k]; });
+        const auto [lo, hi] =
+            std::minmax_element(ref.begin(), ref.end(), [k](const auto& a, const auto& b) { return a[k] < b[k]; });
         if ((*hi)[k] - (*lo)[k] > kTolerance) ++varying;
     }
     return std::max(varying, 1);

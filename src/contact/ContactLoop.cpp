@@ -78,16 +78,18 @@ std::shared_ptr<ContactTerms> attachContact(MechanicalProblem& problem, const Ma
         for (const auto& f : facets)
             if (f.crack == z.crackIndex) ++count, measure += f.measure;
         if (count == 0)
-            throw UserError(fmt::format("DEFI_CONTACT zone on {}: the interface has no contact facet in the model "
-                                        "(it cuts no element of the model)",
-                                        z.crack->name));
+            throw UserError(
+                fmt::format("DEFI_CONTACT zone on {}: the interface has no contact facet in the model "
+                            "(it cuts no element of the model)",
+                            z.crack->name));
         msg().infof("    contact zone {}: {} facets, interface {} {:.6g} ({})", z.crack->name, count,
                     xm.dim() == 2 ? "length" : "area", measure,
                     z.algorithm == ContactAlgorithm::Nitsche ? "Nitsche" : fmt::format("penalty {:.3e}", z.penalty));
     }
-    msg().infof("    contact facets: {} ({} touching a junction, {} between two parent cells, {} where the two sides' "
-                "faces in a cell differ, {} facing a piece the cut dropped)",
-                stats.facets, stats.atJunction, stats.acrossParentFaces, stats.clipped, stats.acrossDropped);
+    msg().infof(
+        "    contact facets: {} ({} touching a junction, {} between two parent cells, {} where the two sides' "
+        "faces in a cell differ, {} facing a piece the cut dropped)",
+        stats.facets, stats.atJunction, stats.acrossParentFaces, stats.clipped, stats.acrossDropped);
     // Interface faces that no face of the other side covers, even after ContactFacets' clipping and
     // block-across pairing (the two sides split the interface differently at a branch joined to it,
     // or the cut dropped a flat piece there; those pairings cover every face measured). No contact
@@ -101,18 +103,20 @@ std::shared_ptr<ContactTerms> attachContact(MechanicalProblem& problem, const Ma
     msg().infof("    contact facets: smallest block fraction of a cell next to a facet {:.3e}", smallest);
     const double missing = stats.unmatchedMeasure / std::max(stats.totalMeasure + stats.unmatchedMeasure, 1e-300);
     if (stats.unmatched > 0)
-        msg().infof("    contact facets: {} sub-cell face(s) on an interface inside their cell ({} {:.3e}, {:.1e} of the "
-                    "interfaces) have no sub-cell of the other side: no contact term on them",
-                    stats.unmatched, xm.dim() == 2 ? "length" : "area", stats.unmatchedMeasure, missing);
+        msg().infof(
+            "    contact facets: {} sub-cell face(s) on an interface inside their cell ({} {:.3e}, {:.1e} of the "
+            "interfaces) have no sub-cell of the other side: no contact term on them",
+            stats.unmatched, xm.dim() == 2 ? "length" : "area", stats.unmatchedMeasure, missing);
     constexpr double kMissingFraction = 1e-11;
     if (missing > kMissingFraction)
         msg().alarm(CONTACT_SLIVER, stats.unmatched, xm.dim() == 2 ? "total length" : "total area",
                     stats.unmatchedMeasure, missing);
     auto terms = std::make_shared<ContactTerms>(problem, material, definition, std::move(facets));
     if (terms->mergedPenaltyPoints() > 0)
-        msg().infof("    penalised contact: {} contact points ({} merged with a point of the same gap at a shared facet "
-                    "vertex), one pressure unknown each",
-                    terms->points().size(), terms->mergedPenaltyPoints());
+        msg().infof(
+            "    penalised contact: {} contact points ({} merged with a point of the same gap at a shared facet "
+            "vertex), one pressure unknown each",
+            terms->points().size(), terms->mergedPenaltyPoints());
     announceReplacedRules(*terms, *definition);
     terms->initialiseStatus();
     problem.setAdditionalTerms(terms);
@@ -151,13 +155,38 @@ std::pair<double, double> penaltyStrength(const ContactTerms& terms) {
 std::string penaltySingularHint(const ContactTerms& terms) {
     const auto [kappa, ratio] = penaltyStrength(terms);
     if (kappa == 0.0) return {};
-    return fmt::format("The contact uses ALGO_CONT='PENALISATION' with COEF_PENA_CONT up to {:.3e} (COEF_PENA_CONT x "
-                       "facet size / E up to {:.1e}): the contact pressures are regularised by 1/COEF_PENA_CONT only, "
-                       "and so large a coefficient turns the penalty into exact constraints at more contact points "
-                       "than the gap can follow, whose pressures are then numerically dependent. Lower "
-                       "COEF_PENA_CONT (its error, interpenetration = pressure/COEF_PENA_CONT, is logged) or use "
-                       "ALGO_CONT='STANDARD' (exact contact).",
-                       kappa, ratio);
+    return fmt::format(
+        "The contact uses ALGO_CONT='PENALISATION' with COEF_PENA_CONT up to {:.3e} (COEF_PENA_CONT x "
+        "facet size / E up to {:.1e}): the contact pressures are regularised by 1/COEF_PENA_CONT only, "
+        "and so large a coefficient turns the penalty into exact constraints at more contact points "
+        "than the gap can follow, whose pressures are then numerically dependent. Lower "
+        "COEF_PENA_CONT (its error, interpenetration = pressure/COEF_PENA_CONT, is logged) or use "
+        "ALGO_CONT='STANDARD' (exact contact).",
+        kappa, ratio);
+}
+
+// One Newton solve of the increment; a numerical failure gets the likely contact cause added.
+IncrementReport solveExplainingFailure(MechanicalProblem& problem, ContactTerms& terms, double inst,
+                                       const ConvergenceOptions& options, int activePoints) {
+    try {
+        return problem.solveIncrement(inst, options);
+    } catch (const NumericalError& e) {
+        if (activePoints > 0) {
+            const std::string hint = penaltySingularHint(terms);
+            // A penalty far above the stiffness shows as a singular system or as a Newton loop that
+            // cannot reduce its residual below the round-off of the penalised terms.
+            const bool singular = dynamic_cast<const SingularSystemError*>(&e) != nullptr;
+            const bool stalled = dynamic_cast<const NonConvergenceError*>(&e) != nullptr &&
+                                 penaltyStrength(terms).second > kPenaltyRoundOffRatio;
+            if (hint.empty() || (!singular && !stalled)) throw;
+            throw NumericalError(fmt::format("{}\n{}", e.what(), hint));
+        }
+        throw NumericalError(
+            fmt::format("{}\nNo contact point is active (CONTACT_INIT='NON'): blocks held only by the "
+                        "contact float; start with CONTACT_INIT='OUI' or hold every block by "
+                        "boundary conditions",
+                        e.what()));
+    }
 }
 
 }  // namespace
@@ -171,57 +200,45 @@ ContactIncrementReport solveIncrementWithContact(MechanicalProblem& problem, Con
         const auto before = terms.inspect(problem.state());
         msg().infof("    INST {:g} contact iteration {}: {} active contact points of {}", inst, it, before.active,
                     before.points);
-        IncrementReport report;
-        try {
-            report = problem.solveIncrement(inst, options);
-        } catch (const NumericalError& e) {
-            if (before.active > 0) {
-                const std::string hint = penaltySingularHint(terms);
-                // A penalty far above the stiffness shows as a singular system or as a Newton loop that
-                // cannot reduce its residual below the round-off of the penalised terms.
-                const bool singular = dynamic_cast<const SingularSystemError*>(&e) != nullptr;
-                const bool stalled = dynamic_cast<const NonConvergenceError*>(&e) != nullptr &&
-                                     penaltyStrength(terms).second > kPenaltyRoundOffRatio;
-                if (hint.empty() || (!singular && !stalled)) throw;
-                throw NumericalError(fmt::format("{}\n{}", e.what(), hint));
-            }
-            throw NumericalError(fmt::format("{}\nNo contact point is active (CONTACT_INIT='NON'): blocks held only by the "
-                                             "contact float; start with CONTACT_INIT='OUI' or hold every block by "
-                                             "boundary conditions",
-                                             e.what()));
-        }
+        const IncrementReport report = solveExplainingFailure(problem, terms, inst, options, before.active);
         out.newtonIterations += report.iterations;
         out.lastNewton = report;
         const StatusReport st = terms.updateStatus(problem.state());
         out.contactIterations = it;
         out.last = st;
         const ActiveSetHistory::Step step = history.record(terms.active());
-        msg().infof("    INST {:g} contact iteration {}: {} status change(s) ({} activated, {} released), {} active, "
-                    "largest penetration {:.6e}, contact residual {:.6e}, largest contact pressure {:.6e}",
-                    inst, it, st.changed, step.activated, step.released, st.active, st.maxPenetration,
-                    st.contactResidual, st.maxPressure);
+        msg().infof(
+            "    INST {:g} contact iteration {}: {} status change(s) ({} activated, {} released), {} active, "
+            "largest penetration {:.6e}, contact residual {:.6e}, largest contact pressure {:.6e}",
+            inst, it, st.changed, step.activated, step.released, st.active, st.maxPenetration, st.contactResidual,
+            st.maxPressure);
         if (step.repeats >= 0)
             throw NumericalError(fmt::format(
                 "contact did not converge at INST {}: the statuses after contact iteration {} repeat those {} "
                 "(the loop would cycle between them whatever ITER_CONT_MAXI); {} active points of {}, contact "
                 "residual {:.3e}.{}",
-                inst, it, step.repeats == 0 ? std::string("it started from") : fmt::format("after iteration {}", step.repeats),
-                st.active, st.points, st.contactResidual, history.flippingPoints(terms, problem.state(), kListedPoints)));
+                inst, it,
+                step.repeats == 0 ? std::string("it started from") : fmt::format("after iteration {}", step.repeats),
+                st.active, st.points, st.contactResidual,
+                history.flippingPoints(terms, problem.state(), kListedPoints)));
         if (st.changed == 0) {
             bool penalty = false;
-            for (const auto& z : terms.definition().zones) penalty = penalty || z.algorithm == ContactAlgorithm::Penalty;
+            for (const auto& z : terms.definition().zones)
+                penalty = penalty || z.algorithm == ContactAlgorithm::Penalty;
             if (penalty)
-                msg().infof("    penalised contact (PENALISATION): largest interpenetration {:.6e} at convergence "
-                            "(error of the method ~ pressure / COEF_PENA_CONT)",
-                            st.maxPenetration);
+                msg().infof(
+                    "    penalised contact (PENALISATION): largest interpenetration {:.6e} at convergence "
+                    "(error of the method ~ pressure / COEF_PENA_CONT)",
+                    st.maxPenetration);
             return out;
         }
         problem.invalidateMatrix();
     }
-    std::string message = fmt::format("contact did not converge at INST {} in {} contact iterations (ITER_CONT_MAXI): "
-                                      "{} status change(s) at the last one, {} active points, contact residual {:.3e}.{}",
-                                      inst, maxIter, out.last.changed, out.last.active, out.last.contactResidual,
-                                      history.flippingPoints(terms, problem.state(), kListedPoints));
+    std::string message = fmt::format(
+        "contact did not converge at INST {} in {} contact iterations (ITER_CONT_MAXI): "
+        "{} status change(s) at the last one, {} active points, contact residual {:.3e}.{}",
+        inst, maxIter, out.last.changed, out.last.active, out.last.contactResidual,
+        history.flippingPoints(terms, problem.state(), kListedPoints));
     // With a huge penalty the interpenetration of the active points, pressure / COEF_PENA_CONT, can
     // sink below the round-off of the displacements: their gaps then change sign by round-off and the
     // statuses cannot settle (measured: TRIA3 N = 41 at COEF_PENA_CONT = 1e24, p/k = 2e-18 m against
@@ -230,13 +247,14 @@ ContactIncrementReport solveIncrementWithContact(MechanicalProblem& problem, Con
     double umax = 0.0;
     for (double v : problem.state()) umax = std::max(umax, std::abs(v));
     if (kappa > 0.0 && out.last.maxPressure / kappa < 1e-12 * umax)
-        message += fmt::format("\nPossible cause: ALGO_CONT='PENALISATION' with COEF_PENA_CONT up to {:.3e} "
-                               "(COEF_PENA_CONT x facet size / E up to {:.1e}): the interpenetration of the active "
-                               "points, contact pressure / COEF_PENA_CONT (at most {:.1e}), is below the round-off of "
-                               "the displacements (largest {:.3e}), so their gaps change sign by round-off and the "
-                               "contact statuses cannot settle. Lower COEF_PENA_CONT or use ALGO_CONT='STANDARD' "
-                               "(exact contact).",
-                               kappa, ratio, out.last.maxPressure / kappa, umax);
+        message += fmt::format(
+            "\nPossible cause: ALGO_CONT='PENALISATION' with COEF_PENA_CONT up to {:.3e} "
+            "(COEF_PENA_CONT x facet size / E up to {:.1e}): the interpenetration of the active "
+            "points, contact pressure / COEF_PENA_CONT (at most {:.1e}), is below the round-off of "
+            "the displacements (largest {:.3e}), so their gaps change sign by round-off and the "
+            "contact statuses cannot settle. Lower COEF_PENA_CONT or use ALGO_CONT='STANDARD' "
+            "(exact contact).",
+            kappa, ratio, out.last.maxPressure / kappa, umax);
     throw NumericalError(message);
 }
 

@@ -26,8 +26,7 @@ namespace {
 // without a family). Whatever the rule, the point terms are consistent (docs/contact.md).
 const QuadratureRule& facetRule(int dim, const ContactIntegration& integration) {
     const std::string family = facetFamily(dim, integration);
-    if (family.empty())
-        throw InternalError("contact: no facet family for INTEGRATION='" + integration.scheme + "'");
+    if (family.empty()) throw InternalError("contact: no facet family for INTEGRATION='" + integration.scheme + "'");
     return quadratureRule(dim == 2 ? CellType::SEG2 : CellType::TRIA3, family);
 }
 
@@ -40,7 +39,8 @@ std::array<double, 3> facetBarycentric(int dim, const Vec3& xi) {
 // Unit gradient of the level set of the facet's interface at a point of the parent cell (nodal
 // values of the cut, physical shape-function gradients at the point), oriented like the facet's
 // geometric normal (from - to +); the geometric normal when the gradient vanishes.
-Vec3 levelSetNormal(const xfem::CellCut& cut, const ContactFacet& facet, int nodeCount, const std::vector<double>& gradN) {
+Vec3 levelSetNormal(const xfem::CellCut& cut, const ContactFacet& facet, int nodeCount,
+                    const std::vector<double>& gradN) {
     const auto it = std::find(cut.cracks.begin(), cut.cracks.end(), facet.crack);
     if (it == cut.cracks.end()) return facet.normal;
     const size_t j = static_cast<size_t>(it - cut.cracks.begin());
@@ -175,8 +175,7 @@ void addSideTerms(const xfem::XfemModel& xm, const Model& model, const DofNumber
 }  // namespace
 
 ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField& material,
-                           std::shared_ptr<const ContactDefinition> definition,
-                           std::vector<ContactFacet> facets)
+                           std::shared_ptr<const ContactDefinition> definition, std::vector<ContactFacet> facets)
     : definition_(std::move(definition)), facets_(std::move(facets)) {
     const Model& model = problem.model();
     const Mesh& mesh = *model.mesh;
@@ -193,7 +192,8 @@ ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField
         const ContactFacet& facet = facets_[f];
         const int zone = definition_->zoneOfCrack(facet.crack);
         if (zone < 0) continue;
-        const QuadratureRule* rule = facetPointRule(mesh, dim, facet, definition_->zones[zone].integration, shortfalls_[zone]);
+        const QuadratureRule* rule =
+            facetPointRule(mesh, dim, facet, definition_->zones[zone].integration, shortfalls_[zone]);
         // Nitsche parameter on the stiffest normal response of the two sides, the P-wave modulus
         // lambda + 2 mu (E (1 - nu) / ((1 + nu)(1 - 2 nu)) in 3D / D_PLAN): sigma_n(v) is bounded by it,
         // not by E. With E the symmetric Nitsche matrix lost positive definiteness near
@@ -222,7 +222,8 @@ ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField
             // merge tolerance (1e-9 h), which tilts a sliver facet (length 1e-5 h) by 1e-5 rad: then
             // the exact uniform stress has a shear on it and frictionless contact is no longer exact.
             Vec3 nv = facet.normal;
-            for (int s = 0; s < 2; ++s) addSideTerms(xm, model, numbering, material, facet, s, bary, wMinus, ei, geo, nv, cp);
+            for (int s = 0; s < 2; ++s)
+                addSideTerms(xm, model, numbering, material, facet, s, bary, wMinus, ei, geo, nv, cp);
             if (definition_->zones[zone].algorithm == ContactAlgorithm::Penalty) {
                 cp.scale = youngMax;
                 if (ContactPoint* same = penaltyPoints.find(cp, points_)) {
@@ -246,7 +247,8 @@ ContactTerms::ContactTerms(const MechanicalProblem& problem, const MaterialField
     // Distributed (docs/mpi.md): a point's matrix and residual terms are computed by the process of
     // its facet's - side cell; statuses are decided on every process from the whole state.
     owned_.resize(points_.size());
-    for (size_t p = 0; p < points_.size(); ++p) owned_[p] = problem.ownsCell(facets_[size_t(points_[p].facet)].minus.cell);
+    for (size_t p = 0; p < points_.size(); ++p)
+        owned_[p] = problem.ownsCell(facets_[size_t(points_[p].facet)].minus.cell);
 }
 
 double ContactTerms::gap(int p, const std::vector<double>& u) const {
@@ -304,8 +306,7 @@ void ContactTerms::tangent(const std::vector<double>& u, const std::function<voi
             for (size_t i = 0; i < m; ++i)
                 for (size_t j = 0; j < m; ++j) {
                     double v = -theta / gm * cp.stress[i] * cp.stress[j];
-                    if (active_[p])
-                        v += (theta * cp.stress[i] + gm * cp.gap[i]) * (cp.stress[j] + gm * cp.gap[j]) / gm;
+                    if (active_[p]) v += (theta * cp.stress[i] + gm * cp.gap[i]) * (cp.stress[j] + gm * cp.gap[j]) / gm;
                     if (v != 0.0) add(cp.dofs[i], cp.dofs[j], w * v);
                 }
         } else {
@@ -386,8 +387,8 @@ StatusReport ContactTerms::inspect(const std::vector<double>& u) const {
         // Complementarity violation: what the status would change.
         const bool want = wantsActive(int(p), u);
         if (want != bool(active_[p])) {
-            const double P = nitsche(int(p)) ? statusFunction(int(p), u).value
-                                             : definition_->zones[points_[p].zone].penalty * g;
+            const double P =
+                nitsche(int(p)) ? statusFunction(int(p), u).value : definition_->zones[points_[p].zone].penalty * g;
             r.contactResidual = std::max(r.contactResidual, std::abs(P));
         }
     }

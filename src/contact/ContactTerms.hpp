@@ -33,10 +33,10 @@ struct ContactPoint {
     int zone = -1;
     double weight = 0.0;  // physical quadrature weight
     std::array<double, 3> xyz{};
-    std::vector<int> dofs;            // unknowns the point depends on
-    std::vector<double> gap;          // g(u) = sum gap[i] u[dofs[i]]
-    std::vector<double> stress;       // sigma_n(u) = sum stress[i] u[dofs[i]] (weighted average)
-    double gamma = 0.0;               // Nitsche parameter (Pa/m)
+    std::vector<int> dofs;       // unknowns the point depends on
+    std::vector<double> gap;     // g(u) = sum gap[i] u[dofs[i]]
+    std::vector<double> stress;  // sigma_n(u) = sum stress[i] u[dofs[i]] (weighted average)
+    double gamma = 0.0;          // Nitsche parameter (Pa/m)
     // Penalty: the pressure is an unknown of the point, lambda = scale * u[multiplier], with the
     // equation g - lambda/kappa = 0 (mixed form: the displacement rows carry lambda, not
     // kappa*g, so that their residual is not amplified by kappa; code_aster's form).
@@ -51,12 +51,13 @@ struct ContactPoint {
 // A zone rule with a negative weight (3D ORDRE_INT=3, TR3 FPG4) is replaced on every facet by the
 // lowest Gauss rule of positive weights and at least its degree (positiveWeights()).
 struct RuleShortfall {
-    int facets = 0;       // facets of the zone
-    int replaced = 0;     // of which the zone's rule is too weak for: integrated with a Gauss rule instead
+    int facets = 0;    // facets of the zone
+    int replaced = 0;  // of which the zone's rule is too weak for: integrated with a Gauss rule instead
     int ruleDegree = 0;
     int traceDegree = 0;       // largest trace degree among them
     int replacementOrder = 0;  // largest ORDRE_INT of INTEGRATION='GAUSS' used instead
-    bool negativeWeight = false;  // the zone's rule has a negative weight: every facet takes ORDRE_INT=negativeWeightOrder
+    bool negativeWeight =
+        false;  // the zone's rule has a negative weight: every facet takes ORDRE_INT=negativeWeightOrder
     int negativeWeightOrder = 0;
 };
 
@@ -85,8 +86,7 @@ struct StatusReport {
 class ContactTerms : public AdditionalTerms {
 public:
     ContactTerms(const MechanicalProblem& problem, const MaterialField& material,
-                 std::shared_ptr<const ContactDefinition> definition,
-                 std::vector<ContactFacet> facets);
+                 std::shared_ptr<const ContactDefinition> definition, std::vector<ContactFacet> facets);
 
     void couplings(std::vector<std::pair<int, int>>& pairs) const override;
     void tangent(const std::vector<double>& u, const std::function<void(int, int, double)>& add) const override;

@@ -40,7 +40,7 @@ std::vector<Point2> clipConvex(std::vector<Point2> subject, const std::vector<Po
 }
 
 std::vector<std::array<Vec3, 3>> triangleIntersection(const std::array<Vec3, 3>& a, const std::array<Vec3, 3>& b,
-                                                     double negligible) {
+                                                      double negligible) {
     // Project on the two coordinates most parallel to the plane of a.
     const Vec3 n = cross(difference(a[1], a[0]), difference(a[2], a[0]));
     int k = 0;
@@ -59,8 +59,8 @@ std::vector<std::array<Vec3, 3>> triangleIntersection(const std::array<Vec3, 3>&
     if (poly.size() < 3 || polygonArea(poly) <= negligible) return {};
     // Back to 3D on the plane of a, through the barycentric coordinates in its projection.
     const std::array<Vec3, 3> ta = polygonArea({{a[0][u], a[0][v]}, {a[1][u], a[1][v]}, {a[2][u], a[2][v]}}) > 0.0
-                                      ? a
-                                      : std::array<Vec3, 3>{a[0], a[2], a[1]};
+                                       ? a
+                                       : std::array<Vec3, 3>{a[0], a[2], a[1]};
     auto lift = [&](const Point2& p) {
         const double l1 = orient(pa[2], pa[0], p) / areaA / 2.0;
         const double l2 = orient(pa[0], pa[1], p) / areaA / 2.0;
@@ -72,12 +72,13 @@ std::vector<std::array<Vec3, 3>> triangleIntersection(const std::array<Vec3, 3>&
     std::vector<std::array<Vec3, 3>> out;
     const double total = polygonArea(poly);
     for (size_t i = 1; i + 1 < poly.size(); ++i)
-        if (orient(poly[0], poly[i], poly[i + 1]) > 1e-12 * total) out.push_back({lift(poly[0]), lift(poly[i]), lift(poly[i + 1])});
+        if (orient(poly[0], poly[i], poly[i + 1]) > 1e-12 * total)
+            out.push_back({lift(poly[0]), lift(poly[i]), lift(poly[i + 1])});
     return out;
 }
 
 std::vector<std::vector<Vec3>> segmentIntersection(const std::array<Vec3, 2>& a, const std::array<Vec3, 2>& b,
-                                                  double negligible) {
+                                                   double negligible) {
     const Vec3 e = difference(a[1], a[0]);
     const double ee = dot(e, e);
     if (!(ee > 0.0)) return {};

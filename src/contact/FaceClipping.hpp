@@ -22,11 +22,11 @@ std::vector<Point2> clipConvex(std::vector<Point2> subject, const std::vector<Po
 // Triangles (on the plane of `a`) covering the intersection of the nearly coplanar triangles a
 // and b; `negligible` is the smallest area kept.
 std::vector<std::array<Vec3, 3>> triangleIntersection(const std::array<Vec3, 3>& a, const std::array<Vec3, 3>& b,
-                                                     double negligible);
+                                                      double negligible);
 
 // Part of segment b on segment a (on the line of a; none or one segment); `negligible` is the
 // smallest length kept.
 std::vector<std::vector<Vec3>> segmentIntersection(const std::array<Vec3, 2>& a, const std::array<Vec3, 2>& b,
-                                                  double negligible);
+                                                   double negligible);
 
 }  // namespace ma::contact

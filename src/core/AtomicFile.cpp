@@ -64,7 +64,9 @@ void syncFile(const std::string& path) {
 
 std::string systemError(const std::string& what, const std::string& path, int error) {
     return what + " " + path + ": " + std::strerror(error) +
-           (error == ENOSPC ? " (the disk is full)" : error == EFBIG ? " (file size limit of the process)" : "");
+           (error == ENOSPC  ? " (the disk is full)"
+            : error == EFBIG ? " (file size limit of the process)"
+                             : "");
 }
 
 std::string temporaryPathFor(const std::string& finalPath) {
@@ -141,7 +143,8 @@ void writeFileAtomically(const std::string& path, const std::string& content) {
     if (fd < 0) throw UserError(systemError("cannot create", out.tempPath(), errno));
     try {
         writeAll(fd, out.tempPath(), content);
-        if (::fsync(fd) != 0 && errno != EINVAL) throw UserError(systemError("cannot write (fsync)", out.tempPath(), errno));
+        if (::fsync(fd) != 0 && errno != EINVAL)
+            throw UserError(systemError("cannot write (fsync)", out.tempPath(), errno));
     } catch (...) {
         ::close(fd);
         throw;

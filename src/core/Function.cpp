@@ -27,9 +27,10 @@ std::vector<double> Function::evaluateColumns(const std::map<std::string, std::v
                 if (!available.empty()) available += ", ";
                 available += k;
             }
-            throw UserError(fmt::format("function {} needs parameter {}, which is not available here "
-                                        "(available: {})",
-                                        name, p, available));
+            throw UserError(
+                fmt::format("function {} needs parameter {}, which is not available here "
+                            "(available: {})",
+                            name, p, available));
         }
         cols.push_back(&it->second);
     }
@@ -40,8 +41,7 @@ std::vector<double> Function::evaluateColumns(const std::map<std::string, std::v
 }
 
 double TabulatedFunction::evaluate(std::span<const double> args) const {
-    if (args.size() != 1 || x.empty())
-        throw UserError("function " + name + " expects one parameter");
+    if (args.size() != 1 || x.empty()) throw UserError("function " + name + " expects one parameter");
     const double t = args[0];
     auto interpolate = [&](size_t i) {  // on segment [x_i, x_{i+1}]
         return y[i] + (y[i + 1] - y[i]) * (t - x[i]) / (x[i + 1] - x[i]);
@@ -50,16 +50,18 @@ double TabulatedFunction::evaluate(std::span<const double> args) const {
     if (t < x.front()) {
         if (leftExtension == 'C') return y.front();
         if (leftExtension == 'L') return interpolate(0);
-        throw UserError(fmt::format("function {}: {}={} is left of its definition interval [{}, {}] "
-                                    "(PROL_GAUCHE='EXCLU')",
-                                    name, parameter_[0], t, x.front(), x.back()));
+        throw UserError(
+            fmt::format("function {}: {}={} is left of its definition interval [{}, {}] "
+                        "(PROL_GAUCHE='EXCLU')",
+                        name, parameter_[0], t, x.front(), x.back()));
     }
     if (t > x.back()) {
         if (rightExtension == 'C') return y.back();
         if (rightExtension == 'L') return interpolate(x.size() - 2);
-        throw UserError(fmt::format("function {}: {}={} is right of its definition interval [{}, {}] "
-                                    "(PROL_DROITE='EXCLU')",
-                                    name, parameter_[0], t, x.front(), x.back()));
+        throw UserError(
+            fmt::format("function {}: {}={} is right of its definition interval [{}, {}] "
+                        "(PROL_DROITE='EXCLU')",
+                        name, parameter_[0], t, x.front(), x.back()));
     }
     size_t i = std::upper_bound(x.begin(), x.end(), t) - x.begin();
     if (i == 0) i = 1;

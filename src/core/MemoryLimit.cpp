@@ -38,7 +38,7 @@ void setMemoryLimit(double megabytes) {
     // A limit beyond what size_t counts is no limit (and converting it would be undefined).
     const double bytes = megabytes * 1024.0 * 1024.0;
     gLimitBytes = bytes < double(std::numeric_limits<std::size_t>::max()) ? std::size_t(bytes)
-                                                                           : std::numeric_limits<std::size_t>::max();
+                                                                          : std::numeric_limits<std::size_t>::max();
 }
 
 std::size_t memoryLimitBytes() { return gLimitBytes ? gLimitBytes : availableMemoryBytes(); }
@@ -47,14 +47,15 @@ bool memoryLimitIsSet() { return gLimitBytes != 0; }
 
 void checkAllocation(double bytes, const std::string& what) {
     if (bytes <= double(memoryLimitBytes())) return;
-    throw UserError(fmt::format("{} needs {:.0f} MB of memory, more than {}", what, bytes / (1024.0 * 1024.0),
-                                origin()));
+    throw UserError(
+        fmt::format("{} needs {:.0f} MB of memory, more than {}", what, bytes / (1024.0 * 1024.0), origin()));
 }
 
 std::string outOfMemoryCause() {
-    return fmt::format("out of memory: the command needed more memory than {}; raise the limit or reduce the "
-                       "problem",
-                       origin());
+    return fmt::format(
+        "out of memory: the command needed more memory than {}; raise the limit or reduce the "
+        "problem",
+        origin());
 }
 
 }  // namespace ma

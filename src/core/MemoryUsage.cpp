@@ -29,8 +29,7 @@ std::atomic<double> peakBeforeResets{0.0};
 void foldPeakBeforeReset() {
     const double peak = statusFieldMb("VmHWM:");
     double seen = peakBeforeResets.load();
-    while (peak > seen && !peakBeforeResets.compare_exchange_weak(seen, peak)) {
-    }
+    while (peak > seen && !peakBeforeResets.compare_exchange_weak(seen, peak)) {}
 }
 
 }  // namespace

@@ -61,8 +61,9 @@ void Messages::alarmBox(const std::string& id, const std::string& text) {
         }
     }
     if (!line.empty()) out += "   ! " + line + "\n";
-    out += "   ! Ceci est une alarme. Si vous ne comprenez pas le sens de cette\n"
-           "   ! alarme, vous pouvez obtenir des resultats inattendus !\n";
+    out +=
+        "   ! Ceci est une alarme. Si vous ne comprenez pas le sens de cette\n"
+        "   ! alarme, vous pouvez obtenir des resultats inattendus !\n";
     out += box;
     info(out);
 }

@@ -132,25 +132,15 @@ std::optional<Failure> agree(const std::optional<Failure>& local) {
 Failure failureOf(const std::exception_ptr& error) {
     try {
         std::rethrow_exception(error);
-    } catch (const UserError& e) {
-        return {kUser, e.what()};
-    } catch (const NotImplemented& e) {
+    } catch (const UserError& e) { return {kUser, e.what()}; } catch (const NotImplemented& e) {
         return {kNotImplemented, e.what()};
-    } catch (const SingularSystemError& e) {
-        return {kSingular, e.what()};
-    } catch (const NonConvergenceError& e) {
+    } catch (const SingularSystemError& e) { return {kSingular, e.what()}; } catch (const NonConvergenceError& e) {
         return {kNonConvergence, e.what()};
-    } catch (const NumericalError& e) {
-        return {kNumerical, e.what()};
-    } catch (const InternalError& e) {
+    } catch (const NumericalError& e) { return {kNumerical, e.what()}; } catch (const InternalError& e) {
         return {kInternal, e.what()};
-    } catch (const std::bad_alloc&) {
-        return {kOutOfMemory, ""};
-    } catch (const std::exception& e) {
+    } catch (const std::bad_alloc&) { return {kOutOfMemory, ""}; } catch (const std::exception& e) {
         return {kOther, e.what()};
-    } catch (...) {
-        return {kOther, "unexpected error of unknown type"};
-    }
+    } catch (...) { return {kOther, "unexpected error of unknown type"}; }
 }
 
 void rethrow(const Failure& f) {

@@ -67,9 +67,7 @@ void collectively(F&& f) {
     std::optional<Failure> local;
     try {
         f();
-    } catch (...) {
-        local = failureOf(std::current_exception());
-    }
+    } catch (...) { local = failureOf(std::current_exception()); }
     if (const auto agreed = agree(local)) rethrow(*agreed);
 }
 

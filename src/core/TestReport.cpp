@@ -28,18 +28,16 @@ std::string TestReport::summary() const {
     std::string out = "  TEST SUMMARY                     OK     NOOK   SKIP\n";
     out += fmt::format("  reference checks            {:6d}   {:6d} {:6d}\n", count(S::Ok, false),
                        count(S::Nook, false), count(S::Skip, false));
-    out += fmt::format("  non-regression checks       {:6d}   {:6d} {:6d}\n", count(S::Ok, true),
-                       count(S::Nook, true), count(S::Skip, true));
+    out += fmt::format("  non-regression checks       {:6d}   {:6d} {:6d}\n", count(S::Ok, true), count(S::Nook, true),
+                       count(S::Skip, true));
     // The verdict in words: NON_REGRESSION values are code_aster's own results, not references
     // (ssnv511e-h carry its inexact contact values, README "Running code_aster's originals").
     const int references = count(S::Ok, false) + count(S::Nook, false);
     const int differing = count(S::Nook, true);
     if (count(S::Nook, false) > 0)
         out += fmt::format("  {} of {} reference checks NOOK", count(S::Nook, false), references);
-    else if (references == 0)
-        out += "  no reference check";
-    else
-        out += fmt::format("  all {} reference checks OK", references);
+    else if (references == 0) out += "  no reference check";
+    else out += fmt::format("  all {} reference checks OK", references);
     out += differing > 0 ? fmt::format("; {} non-regression value{} differ{} from code_aster's own\n", differing,
                                        differing > 1 ? "s" : "", differing > 1 ? "" : "s")
                          : "\n";

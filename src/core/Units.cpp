@@ -8,8 +8,8 @@ std::string Units::input(int unit) const {
     auto it = inputs_.find(unit);
     if (it == inputs_.end())
         throw UserError("logical unit " + std::to_string(unit) +
-                        " is not associated with any file (add an F line with unit " +
-                        std::to_string(unit) + " to the .export, or use --mesh)");
+                        " is not associated with any file (add an F line with unit " + std::to_string(unit) +
+                        " to the .export, or use --mesh)");
     return it->second;
 }
 

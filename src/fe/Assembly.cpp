@@ -21,7 +21,7 @@ class StiffnessKernel {
 public:
     StiffnessKernel(const DirichletConstraints& c, CsrMatrix& matrix) : c_(c), matrix_(matrix) {}
 
-    struct Part {  // one worker's element matrices of the current batch
+    struct Part {                      // one worker's element matrices of the current batch
         std::vector<int> rows, local;  // per element: m (equation, local index), sorted
         std::vector<double> Ke;
         void clear() { rows.clear(), local.clear(), Ke.clear(); }
@@ -150,8 +150,9 @@ double assembleSystemMatrix(const Discretisation& space, const DirichletConstrai
     });
     const double alpha = addMultiplierBlocks(c, matrix, space.distributed());
     msg().infof("    stiffness assembled: {} elements{}, {:.3f} s (cpu {:.3f} s, {:.3f} us per dof, {} thread(s)){}",
-                space.elementCount(), space.distributed() ? fmt::format(" ({} on this process)", ownedCount(space)) : "",
-                secondsSince(t0), cpuTotal, 1e6 * cpuTotal / std::max(1, space.numbering().size()), assembler.workers(),
+                space.elementCount(),
+                space.distributed() ? fmt::format(" ({} on this process)", ownedCount(space)) : "", secondsSince(t0),
+                cpuTotal, 1e6 * cpuTotal / std::max(1, space.numbering().size()), assembler.workers(),
                 c.multi.empty() ? "" : fmt::format(", multiplier scaling {:.3e}", alpha));
     return alpha;
 }

@@ -20,8 +20,9 @@ Sign jacobianSign(const Mesh& mesh, int cell, int dim) {
     for (const auto& xi : rule.points) {
         shapeDerivatives(type, xi, dN);
         double J[3][3] = {}, inv[3][3] = {};
-        jacobian(dim, dim, n, [&](int a) -> const Vec3& { return mesh.coords[size_t(nodes[size_t(a)])]; },
-                 [&](int a, int j) { return dN[size_t(3 * a + j)]; }, J);
+        jacobian(
+            dim, dim, n, [&](int a) -> const Vec3& { return mesh.coords[size_t(nodes[size_t(a)])]; },
+            [&](int a, int j) { return dN[size_t(3 * a + j)]; }, J);
         const double det = invertJacobian(dim, J, inv);
         if (degenerateJacobian(dim, J, det)) return Sign::degenerate;
         (det > 0.0 ? positive : negative) = true;

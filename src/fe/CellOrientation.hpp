@@ -13,11 +13,11 @@
 namespace ma {
 
 struct OrientationCensus {
-    int dimension = 0;                  // of the cells counted (the mesh's effective dimension)
-    std::map<CellType, int> total;      // volume cells per type
-    std::map<CellType, int> reversed;   // of them, negative det J at every point
-    std::vector<int> distorted;         // det J of both signs
-    std::vector<int> degenerate;        // det J round-off for the cell's size at some point
+    int dimension = 0;                 // of the cells counted (the mesh's effective dimension)
+    std::map<CellType, int> total;     // volume cells per type
+    std::map<CellType, int> reversed;  // of them, negative det J at every point
+    std::vector<int> distorted;        // det J of both signs
+    std::vector<int> degenerate;       // det J round-off for the cell's size at some point
     int reversedCount() const;
 };
 

@@ -74,12 +74,14 @@ inline void computeGeometry(const Ref& ref, const Mesh& mesh, int cell, Geometry
             for (int i = 0; i < 3; ++i) x[i] += ref.N[p][a] * (*X[a])[i];
         g.xyz[p] = x;
         double J[D][D], inv[D][D];
-        jacobian<D, D>(NN, [&](int a) -> const Vec3& { return *X[a]; }, [&](int a, int j) { return ref.dN[p][a][j]; }, J);
+        jacobian<D, D>(
+            NN, [&](int a) -> const Vec3& { return *X[a]; }, [&](int a, int j) { return ref.dN[p][a][j]; }, J);
         const double det = invertJacobian<D>(J, inv);
         if (degenerateJacobian<D>(J, det)) badJacobian(mesh, cell, det);
         g.weight[p] = ref.weight[p] * std::abs(det);
         for (int a = 0; a < NN; ++a)
-            physicalGradient<D>(inv, [&](int i) { return ref.dN[p][a][i]; }, g.grad[p][a]);
+            physicalGradient<D>(
+                inv, [&](int i) { return ref.dN[p][a][i]; }, g.grad[p][a]);
     }
 }
 

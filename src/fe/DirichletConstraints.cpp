@@ -102,7 +102,8 @@ private:
     }
 
     void fix(int d, double v) {
-        if (out_.fixed[d] && std::abs(out_.fixedValue[d] - v) > 1e-12 * std::max(std::abs(v), std::abs(out_.fixedValue[d])))
+        if (out_.fixed[d] &&
+            std::abs(out_.fixedValue[d] - v) > 1e-12 * std::max(std::abs(v), std::abs(out_.fixedValue[d])))
             throw UserError(fmt::format("conflicting Dirichlet conditions: {} is imposed to {} and to {}", describe(d),
                                         out_.fixedValue[d], v));
         out_.fixed[d] = 1;

@@ -12,16 +12,16 @@
 namespace ma {
 
 struct DirichletConstraints {
-    std::vector<char> fixed;          // per unknown: eliminated
-    std::vector<double> fixedValue;   // its value when eliminated
-    std::vector<int> eq;              // unknown -> equation (-1: eliminated)
-    int freeCount = 0;                // equations of the free unknowns (the multiplier rows follow)
+    std::vector<char> fixed;         // per unknown: eliminated
+    std::vector<double> fixedValue;  // its value when eliminated
+    std::vector<int> eq;             // unknown -> equation (-1: eliminated)
+    int freeCount = 0;               // equations of the free unknowns (the multiplier rows follow)
     struct Relation {
         std::vector<std::pair<int, double>> terms;  // free dofs only
         double value = 0.0;                         // right-hand side after substitution of eliminated dofs
     };
-    std::vector<Relation> multi;      // one Lagrange multiplier each
-    int unattached = 0;               // enriched dofs neutralised because no element uses them
+    std::vector<Relation> multi;  // one Lagrange multiplier each
+    int unattached = 0;           // enriched dofs neutralised because no element uses them
 
     int equationCount() const { return freeCount + static_cast<int>(multi.size()); }
     // Same eliminated unknowns and same multiplier terms (values may differ): the matrix pattern

@@ -20,8 +20,8 @@ namespace ma {
 
 // Unknowns beyond the displacement slots, per node (e.g. {"LAGS_C"} on contact nodes).
 struct ExtraUnknowns {
-    std::vector<std::string> names;            // global list, in output order
-    std::map<int, std::vector<int>> perNode;   // node -> indices into names
+    std::vector<std::string> names;           // global list, in output order
+    std::map<int, std::vector<int>> perNode;  // node -> indices into names
 };
 
 class DofNumbering {

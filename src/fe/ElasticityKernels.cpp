@@ -18,9 +18,10 @@ IsotropicLaw IsotropicLaw::from(const Material& m, Modelisation modelisation, co
         return law;
     }
     if (nu >= 0.5)
-        throw UserError(fmt::format("material {} has NU = {}: an incompressible material cannot be modelled "
-                                    "with {} displacement elements (lambda is infinite); use NU < 0.5",
-                                    where, nu, modelisationName(modelisation)));
+        throw UserError(
+            fmt::format("material {} has NU = {}: an incompressible material cannot be modelled "
+                        "with {} displacement elements (lambda is infinite); use NU < 0.5",
+                        where, nu, modelisationName(modelisation)));
     law.lambdaEff = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
     law.lambdaZ = modelisation == Modelisation::D_PLAN ? law.lambdaEff : 0.0;
     return law;
@@ -45,9 +46,10 @@ void localDofs(const Mesh& mesh, const DofNumbering& numbering, const ElementInt
             for (int c = 0; c < dim; ++c) {
                 const int d = numbering.dof(nodes[a], k, c);
                 if (d < 0)
-                    throw InternalError(fmt::format("element on cell {} uses slot {} of node {}, which the "
-                                                       "enrichment does not give to the node",
-                                                       mesh.cellNames[ei.cell], k, mesh.nodeNames[nodes[a]]));
+                    throw InternalError(
+                        fmt::format("element on cell {} uses slot {} of node {}, which the "
+                                    "enrichment does not give to the node",
+                                    mesh.cellNames[ei.cell], k, mesh.nodeNames[nodes[a]]));
                 dofs.push_back(d);
             }
 }

@@ -111,8 +111,8 @@ void classicalStiffness(const classical::Geometry<Ref>& g, const IsotropicLaw& l
                 const double wdot = w * law.mu * dot;
                 for (int ci = 0; ci < dim; ++ci)
                     for (int di = 0; di < dim; ++di) {
-                        const double v = w * (law.lambdaEff * ga[ci] * gb[di] + law.mu * ga[di] * gb[ci]) +
-                                         (ci == di ? wdot : 0.0);
+                        const double v =
+                            w * (law.lambdaEff * ga[ci] * gb[di] + law.mu * ga[di] * gb[ci]) + (ci == di ? wdot : 0.0);
                         Ke[(a * dim + ci) * nd + b * dim + di] += v;
                     }
             }
@@ -121,7 +121,8 @@ void classicalStiffness(const classical::Geometry<Ref>& g, const IsotropicLaw& l
     for (int a = 0; a < n; ++a)
         for (int b = a + 1; b < n; ++b)
             for (int ci = 0; ci < dim; ++ci)
-                for (int di = 0; di < dim; ++di) Ke[(b * dim + di) * nd + a * dim + ci] = Ke[(a * dim + ci) * nd + b * dim + di];
+                for (int di = 0; di < dim; ++di)
+                    Ke[(b * dim + di) * nd + a * dim + ci] = Ke[(a * dim + ci) * nd + b * dim + di];
 }
 
 // Internal-force vector of a classical element (ue: its dofs' displacements, fl: zeroed by the caller).

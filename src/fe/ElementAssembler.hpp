@@ -35,7 +35,10 @@ template <class Kernel>
 class ElementAssembler {
 public:
     ElementAssembler(const Discretisation& space, Kernel& kernel)
-        : space_(space), kernel_(kernel), workers_(elementWorkers(space.elementCount())), parts_(workers_),
+        : space_(space),
+          kernel_(kernel),
+          workers_(elementWorkers(space.elementCount())),
+          parts_(workers_),
           slots_(kElementBatch) {
         for (int t = 0; t < workers_; ++t) scratch_.emplace_back(space.material());
     }
@@ -67,10 +70,11 @@ private:
         }
         ElementScratch& w = scratch_[t];
         const ModelElement& element = space_.model().elements[e];
-        const ElementContext context{space_.mesh(), space_.numbering(), element.cell, space_.dim(),
-                                     w.laws.of(element), w};
+        const ElementContext context{space_.mesh(), space_.numbering(), element.cell,
+                                     space_.dim(),  w.laws.of(element), w};
         space_.visit(
-            e, w.general, [&](const auto& ref, const auto& g) { slot.entry = kernel_.classical(ref, g, context, part); },
+            e, w.general,
+            [&](const auto& ref, const auto& g) { slot.entry = kernel_.classical(ref, g, context, part); },
             [&](const ElementIntegration& ei, const PointGeometry& geo) {
                 slot.entry = kernel_.general(ei, geo, context, part);
             });

@@ -78,7 +78,8 @@ void computePointGeometry(const Mesh& mesh, int cell, int spaceDim, bool boundar
         for (int a = 0; a < n; ++a) {
             double* g = &geo.gradN[(size_t(p) * n + a) * 3];
             g[0] = g[1] = g[2] = 0.0;
-            physicalGradient(spaceDim, inv, [&](int i) { return dN[3 * a + i]; }, g);
+            physicalGradient(
+                spaceDim, inv, [&](int i) { return dN[3 * a + i]; }, g);
         }
     }
 }

@@ -17,9 +17,9 @@ void elementIntegration(const Model& model, int cell, bool boundary, ElementInte
 
 struct PointGeometry {
     int nodeCount = 0;
-    std::vector<double> N;         // N[p * n + a]
-    std::vector<double> gradN;     // gradN[(p * n + a) * 3 + j], physical (volume elements only)
-    std::vector<double> weight;    // physical weight (|J| included)
+    std::vector<double> N;                      // N[p * n + a]
+    std::vector<double> gradN;                  // gradN[(p * n + a) * 3 + j], physical (volume elements only)
+    std::vector<double> weight;                 // physical weight (|J| included)
     std::vector<std::array<double, 3>> xyz;     // physical point
     std::vector<std::array<double, 3>> normal;  // unit normal by node order (skin elements only)
 };

@@ -5,8 +5,8 @@
 
 #include "core/Error.hpp"
 #include "fe/DofNumbering.hpp"
-#include "fe/Enrichment.hpp"
 #include "fe/ElementLoop.hpp"
+#include "fe/Enrichment.hpp"
 
 namespace ma {
 
@@ -67,7 +67,8 @@ void appendDisplacementSamples(const Model& model, const NodalField& depl, const
                 for (size_t p = 0; p < ei.refPoints.size(); ++p) {
                     DisplacementSample s{element.cell, geo.xyz[p], geo.weight[p], {}};
                     for (int a = 0; a < n; ++a)
-                        for (int k = 0; k < ei.slots[a]; ++k) add(s, nodes[a], k, geo.N[p * n + a] * ei.multiplier(int(p), a, k));
+                        for (int k = 0; k < ei.slots[a]; ++k)
+                            add(s, nodes[a], k, geo.N[p * n + a] * ei.multiplier(int(p), a, k));
                     out.push_back(s);
                 }
             });

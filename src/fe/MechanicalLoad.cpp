@@ -7,8 +7,7 @@
 
 namespace ma {
 
-std::vector<double> evaluateAtPoints(const Function& f, const std::vector<std::array<double, 3>>& points,
-                                     double inst) {
+std::vector<double> evaluateAtPoints(const Function& f, const std::vector<std::array<double, 3>>& points, double inst) {
     const size_t n = points.size();
     std::map<std::string, std::vector<double>> columns;
     auto& x = columns["X"];

@@ -1,5 +1,5 @@
-#include "fe/EquationPoints.hpp"
 #include "fe/MechanicalProblem.hpp"
+#include "fe/EquationPoints.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -40,10 +40,11 @@ MechanicalProblem::MechanicalProblem(std::shared_ptr<const Model> model, std::sh
     solver_ = makeLinearSolver(solverOptions_);
     int nodesWithUnknowns = 0;
     for (int node = 0; node < numbering.nodeCount(); ++node) nodesWithUnknowns += numbering.hasNode(node);
-    msg().infof("    model {}: {} elements, {} boundary elements, {} nodes with unknowns, {} dofs "
-                "(components {}), set-up {:.3f} s",
-                model->name, model->elements.size(), model->skinElements.size(), nodesWithUnknowns, numbering.size(),
-                fmt::join(numbering.componentNames(), " "), secondsSince(t0));
+    msg().infof(
+        "    model {}: {} elements, {} boundary elements, {} nodes with unknowns, {} dofs "
+        "(components {}), set-up {:.3f} s",
+        model->name, model->elements.size(), model->skinElements.size(), nodesWithUnknowns, numbering.size(),
+        fmt::join(numbering.componentNames(), " "), secondsSince(t0));
 }
 
 MechanicalProblem::~MechanicalProblem() = default;
@@ -54,9 +55,10 @@ MechanicalProblem::~MechanicalProblem() = default;
 void MechanicalProblem::distributeCells() {
     if (mpi::size() == 1) return;
     if (solverOptions_.method != "MUMPS") {
-        msg().infof("    SOLVEUR METHODE='{}' is sequential: each of the {} processes assembles and solves the whole "
-                    "system (METHODE='MUMPS' distributes it)",
-                    solverOptions_.method, mpi::size());
+        msg().infof(
+            "    SOLVEUR METHODE='{}' is sequential: each of the {} processes assembles and solves the whole "
+            "system (METHODE='MUMPS' distributes it)",
+            solverOptions_.method, mpi::size());
         return;
     }
     const auto t0 = std::chrono::steady_clock::now();
@@ -65,9 +67,10 @@ void MechanicalProblem::distributeCells() {
     solverOptions_.wholePattern = [this] {
         return buildSparsityPattern(*space_, *constraints_, additional_.get(), /*allElements=*/true);
     };
-    msg().infof("    cells partitioned over {} processes (METIS_PartMeshDual, weighted by integration points, {:.3f} s): "
-                "{} elements per process",
-                mpi::size(), secondsSince(t0), fmt::join(space_->elementsPerProcess(), " "));
+    msg().infof(
+        "    cells partitioned over {} processes (METIS_PartMeshDual, weighted by integration points, {:.3f} s): "
+        "{} elements per process",
+        mpi::size(), secondsSince(t0), fmt::join(space_->elementsPerProcess(), " "));
 }
 
 bool MechanicalProblem::ownsCell(int cell) const { return space_->ownsCell(cell); }

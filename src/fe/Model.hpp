@@ -32,7 +32,7 @@ public:
     // copies MODELE_IN's elements and sets this (the concrete type lives in src/xfem).
     std::shared_ptr<Enrichment> enrichment;
 
-    int dim = 2;  // displacement components: 2 (D_PLAN, C_PLAN) or 3
+    int dim = 2;                                       // displacement components: 2 (D_PLAN, C_PLAN) or 3
     Modelisation modelisation = Modelisation::D_PLAN;  // the (single) modelisation of the model
 };
 

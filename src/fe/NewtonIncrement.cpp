@@ -19,7 +19,11 @@ namespace {
 class NewtonIteration {
 public:
     NewtonIteration(const NewtonSystem& s, std::vector<double>& u, std::vector<double>& lambda)
-        : s_(s), c_(s.constraints), u_(u), lambda_(lambda), total_(static_cast<int>(c_.eq.size())),
+        : s_(s),
+          c_(s.constraints),
+          u_(u),
+          lambda_(lambda),
+          total_(static_cast<int>(c_.eq.size())),
           rhs_(c_.equationCount()) {}
 
     // R = F_int(u) - F_ext + alpha*C^T*lambda (+ the additional terms).
@@ -76,9 +80,10 @@ public:
         const double forceScale = s_.alpha * umax;
         if (denominator > 1e-12 * forceScale) return denominator;
         if (!zeroLoadNoted_)
-            msg().infof("    loads and reactions are negligible (max {:.3e} vs elastic force scale {:.3e}): "
-                        "RESI_GLOB_RELA is taken relative to the force scale",
-                        denominator, forceScale);
+            msg().infof(
+                "    loads and reactions are negligible (max {:.3e} vs elastic force scale {:.3e}): "
+                "RESI_GLOB_RELA is taken relative to the force scale",
+                denominator, forceScale);
         zeroLoadNoted_ = true;
         return forceScale;
     }

@@ -17,10 +17,10 @@ namespace ma {
 // STAT_NON_LINE's CONVERGENCE (its defaults are the catalogue's); as constructed: one solve and
 // no convergence test (MECA_STATIQUE: the problem is linear).
 struct ConvergenceOptions {
-    int maxIterations = 0;        // ITER_GLOB_MAXI: iterations 0 .. maxIterations
-    double resiGlobMaxi = -1.0;   // < 0: not checked
-    double resiGlobRela = -1.0;   // < 0: not checked
-    bool stopOnFailure = true;    // ARRET='OUI'
+    int maxIterations = 0;       // ITER_GLOB_MAXI: iterations 0 .. maxIterations
+    double resiGlobMaxi = -1.0;  // < 0: not checked
+    double resiGlobRela = -1.0;  // < 0: not checked
+    bool stopOnFailure = true;   // ARRET='OUI'
 };
 
 struct IncrementReport {
@@ -33,13 +33,13 @@ struct IncrementReport {
 // What the iterations work on: the problem's constraints, its forces and its linear solve.
 struct NewtonSystem {
     const DirichletConstraints& constraints;
-    double alpha = 1.0;                      // multiplier scaling of the matrix
-    int ndof = 0;                            // displacement dofs; the additional unknowns follow
-    const std::vector<double>& fext;         // F_ext at the increment's instant
+    double alpha = 1.0;               // multiplier scaling of the matrix
+    int ndof = 0;                     // displacement dofs; the additional unknowns follow
+    const std::vector<double>& fext;  // F_ext at the increment's instant
     std::function<void(const std::vector<double>& u, std::vector<double>& fint)> internalForces;
     const AdditionalTerms* additional = nullptr;
     std::function<void(std::vector<double>& rhs)> solve;  // right-hand side in, correction out
-    std::chrono::steady_clock::time_point start;           // of the increment (its logged time)
+    std::chrono::steady_clock::time_point start;          // of the increment (its logged time)
     // Each process computes the additional terms' residual on its own cells: summed here.
     bool distributed = false;
 };

@@ -28,9 +28,7 @@ void parallelRanges(size_t n, int parts, F&& f) {
     auto run = [&](int t) {
         try {
             f(n * t / parts, n * (t + 1) / parts, t);
-        } catch (...) {
-            errors[t] = std::current_exception();
-        }
+        } catch (...) { errors[t] = std::current_exception(); }
     };
     {
         std::vector<std::jthread> threads;

@@ -16,7 +16,10 @@ using Point = std::array<double, 3>;
 // Gauss-Legendre on [-1, 1].
 void gaussLegendre(int n, std::vector<double>& x, std::vector<double>& w) {
     switch (n) {
-        case 1: x = {0.0}; w = {2.0}; return;
+        case 1:
+            x = {0.0};
+            w = {2.0};
+            return;
         case 2: {
             const double a = 1.0 / std::sqrt(3.0);
             x = {-a, a};
@@ -170,7 +173,7 @@ void tetraOrbit6(QuadratureRule& r, double a, double w) {
 // The 12 distinct permutations of barycentric (a, a, b, c), c = 1 - 2a - b.
 void tetraOrbit12(QuadratureRule& r, double a, double b, double w) {
     const double c = 1.0 - 2.0 * a - b;
-    for (int i = 0; i < 4; ++i)      // position of b
+    for (int i = 0; i < 4; ++i)        // position of b
         for (int j = 0; j < 4; ++j) {  // position of c
             if (j == i) continue;
             std::array<double, 4> l{a, a, a, a};
@@ -272,13 +275,11 @@ bool buildNamed(CellType cell, const std::string& family, QuadratureRule& r) {
         else if (family == "COTES")  // Simpson's 3/8 rule
             r = listed(cell, family, 3, {-1, -t, t, 1}, {0.25, 0.75, 0.75, 0.25});
         else if (family == "COTES1")  // Boole's rule
-            r = listed(cell, family, 5, {-1, -0.5, 0, 0.5, 1},
-                       {7.0 / 45, 32.0 / 45, 12.0 / 45, 32.0 / 45, 7.0 / 45});
+            r = listed(cell, family, 5, {-1, -0.5, 0, 0.5, 1}, {7.0 / 45, 32.0 / 45, 12.0 / 45, 32.0 / 45, 7.0 / 45});
         else if (family == "COTES2")  // the 3/8 rule on three thirds
             r = listed(cell, family, 3, {-1, -7 * s, -5 * s, -3 * s, -s, s, 3 * s, 5 * s, 7 * s, 1},
                        {1.0 / 12, 0.25, 0.25, 1.0 / 6, 0.25, 0.25, 1.0 / 6, 0.25, 0.25, 1.0 / 12});
-        else
-            return false;
+        else return false;
         return true;
     }
     if (cell == CellType::TRIA3 && family == "SIMP") {
@@ -321,7 +322,8 @@ const QuadratureRule& quadratureRule(CellType cell, const std::string& family) {
     auto key = std::make_pair(static_cast<int>(cell), family);
     auto it = cache.find(key);
     if (it != cache.end()) return it->second;
-    if (QuadratureRule named; buildNamed(cell, family, named)) return cache.emplace(key, std::move(named)).first->second;
+    if (QuadratureRule named; buildNamed(cell, family, named))
+        return cache.emplace(key, std::move(named)).first->second;
     if (family.rfind("FPG", 0) != 0 || family.size() == 3 ||
         family.find_first_not_of("0123456789", 3) != std::string::npos)
         throw NotImplemented("integration family " + family + " on " + cellTypeName(cell));

@@ -23,7 +23,7 @@ namespace ma {
 struct QuadratureRule {
     std::string family;  // "FPG4"
     CellType cell = CellType::QUAD4;
-    int degree = 0;      // polynomial degree integrated exactly
+    int degree = 0;  // polynomial degree integrated exactly
     std::vector<std::array<double, 3>> points;
     std::vector<double> weights;
     int size() const { return static_cast<int>(weights.size()); }

@@ -12,9 +12,7 @@ const ResultStep& Result::step(int order) const {
     throw UserError("result " + name + " has no NUME_ORDRE " + std::to_string(order));
 }
 
-ResultStep& Result::step(int order) {
-    return const_cast<ResultStep&>(static_cast<const Result&>(*this).step(order));
-}
+ResultStep& Result::step(int order) { return const_cast<ResultStep&>(static_cast<const Result&>(*this).step(order)); }
 
 const ResultStep& Result::stepAtInst(double inst, double precision, bool relative) const {
     for (const auto& s : steps) {

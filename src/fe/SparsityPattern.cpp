@@ -19,8 +19,13 @@ class PatternBuilder {
 public:
     PatternBuilder(const Discretisation& space, const DirichletConstraints& c, const AdditionalTerms* additional,
                    bool allElements)
-        : space_(space), mesh_(space.mesh()), numbering_(space.numbering()), c_(c), nNodes_(mesh_.nodeCount()),
-          workers_(workerCount()), allElements_(allElements) {
+        : space_(space),
+          mesh_(space.mesh()),
+          numbering_(space.numbering()),
+          c_(c),
+          nNodes_(mesh_.nodeCount()),
+          workers_(workerCount()),
+          allElements_(allElements) {
         collectMultipliers();
         collectExtraColumns(additional);
         nodeFree_.assign(nNodes_, 0);
@@ -77,7 +82,8 @@ private:
         std::vector<int> incidence(start.back()), fill(start.begin(), start.end() - 1);
         for (size_t e = 0; e < space_.elementCount(); ++e)
             if (counted(e))
-                for (int node : mesh_.cellNodes(space_.model().elements[e].cell)) incidence[fill[node]++] = static_cast<int>(e);
+                for (int node : mesh_.cellNodes(space_.model().elements[e].cell))
+                    incidence[fill[node]++] = static_cast<int>(e);
         fill = {};
         graphs_.assign(workers_, Graph{});
         firstNode_.assign(workers_ + 1, nNodes_);
@@ -154,7 +160,8 @@ private:
                         specialRow(d, row, neighbours);
                         matrix_.rowStart[eq + 1] = static_cast<long long>(row.size());
                     } else {
-                        matrix_.rowStart[eq + 1] = length + (dofMultipliers_.empty() ? 0 : long(dofMultipliers_[d].size()));
+                        matrix_.rowStart[eq + 1] =
+                            length + (dofMultipliers_.empty() ? 0 : long(dofMultipliers_[d].size()));
                     }
                 }
             }
@@ -226,11 +233,12 @@ CsrMatrix buildSparsityPattern(const Discretisation& space, const DirichletConst
     const auto t0 = std::chrono::steady_clock::now();
     const double cpu0 = threadCpuSeconds();
     CsrMatrix matrix = PatternBuilder(space, c, additional, allElements).build();
-    msg().infof("    matrix pattern{}: {} equations ({} free dofs, {} eliminated, {} multipliers), {} non-zeros, "
-                "{:.3f} s (cpu {:.3f} s)",
-                space.distributed() ? (allElements ? " of the whole matrix (ordering)" : " of this process's cells") : "",
-                matrix.rows, c.freeCount, static_cast<int>(c.eq.size()) - c.freeCount, c.multi.size(), matrix.nonZeros(),
-                secondsSince(t0), threadCpuSeconds() - cpu0);
+    msg().infof(
+        "    matrix pattern{}: {} equations ({} free dofs, {} eliminated, {} multipliers), {} non-zeros, "
+        "{:.3f} s (cpu {:.3f} s)",
+        space.distributed() ? (allElements ? " of the whole matrix (ordering)" : " of this process's cells") : "",
+        matrix.rows, c.freeCount, static_cast<int>(c.eq.size()) - c.freeCount, c.multi.size(), matrix.nonZeros(),
+        secondsSince(t0), threadCpuSeconds() - cpu0);
     return matrix;
 }
 

@@ -17,10 +17,10 @@ public:
     std::string typeName() const override { return "cham_no_sdaster"; }
 
     std::shared_ptr<const Mesh> mesh;
-    std::string quantity = "DEPL_R";       // physical quantity
-    std::vector<std::string> components;   // e.g. {"DX","DY","H1X","H1Y"}
-    std::vector<double> values;            // nodeCount * components.size()
-    std::vector<unsigned char> present;    // same layout: 1 when the node carries the component
+    std::string quantity = "DEPL_R";      // physical quantity
+    std::vector<std::string> components;  // e.g. {"DX","DY","H1X","H1Y"}
+    std::vector<double> values;           // nodeCount * components.size()
+    std::vector<unsigned char> present;   // same layout: 1 when the node carries the component
 
     void resize(const std::shared_ptr<const Mesh>& m, std::vector<std::string> comps);
     int componentIndex(const std::string& comp) const;  // -1 when absent
@@ -48,9 +48,9 @@ public:
     std::vector<int> pointOffsets{0};     // element e has points [pointOffsets[e], pointOffsets[e+1])
     std::vector<std::array<double, 3>> pointCoords;
     std::vector<double> pointWeights;
-    std::vector<int> pointSubcell;        // sub-cell index within the element (0 when not X-FEM)
+    std::vector<int> pointSubcell;                      // sub-cell index within the element (0 when not X-FEM)
     std::vector<std::array<double, 3>> pointRefCoords;  // in the parent reference element (MED localisation)
-    std::vector<double> values;           // pointCount * components.size()
+    std::vector<double> values;                         // pointCount * components.size()
 
     int pointCount() const { return static_cast<int>(pointWeights.size()); }
     int componentIndex(const std::string& comp) const;
@@ -58,8 +58,8 @@ public:
 
 // One archived state of a result (NUME_ORDRE, INST and its fields).
 struct ResultStep {
-    int order = 0;      // NUME_ORDRE
-    double inst = 0.0;  // INST
+    int order = 0;                                                                 // NUME_ORDRE
+    double inst = 0.0;                                                             // INST
     std::vector<std::pair<std::string, std::shared_ptr<NodalField>>> nodalFields;  // "DEPL"...
     std::vector<std::pair<std::string, std::shared_ptr<GaussField>>> gaussFields;  // "SIEF_ELGA"...
 

@@ -70,8 +70,9 @@ AsterToken AsterLexer::scan() {
         col_ = skipSeparators(s, col_, limit);
         if (col_ >= limit || s[col_] == '%') {
             if (col_ >= limit && s.find_first_not_of(" \t\r", limit) != std::string::npos)
-                fail(int(line_ + 1), "text beyond column 80 (code_aster reads columns 1 to 80 only and "
-                                     "would drop it without a word): wrap the line");
+                fail(int(line_ + 1),
+                     "text beyond column 80 (code_aster reads columns 1 to 80 only and "
+                     "would drop it without a word): wrap the line");
             ++line_;
             col_ = 0;
             continue;

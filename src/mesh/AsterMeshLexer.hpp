@@ -47,7 +47,7 @@ private:
 
     std::string source_;
     std::vector<std::string> lines_;
-    size_t line_ = 0, col_ = 0;  // position of the next character to scan
+    size_t line_ = 0, col_ = 0;        // position of the next character to scan
     size_t lastTokenLine_ = SIZE_MAX;  // 0-based line of the last token scanned
     bool peeked_ = false;
     AsterToken peek_;

@@ -92,9 +92,10 @@ std::shared_ptr<Mesh> AsterMeshParser::parse() {
         } else if (tok.is("GROUP_NO") || tok.is("GROUP_MA")) {
             readGroup(tok, tok.text == "GROUP_NO" ? nodeGroups_ : cellGroups_);
         } else {
-            lex_.fail(tok.line, "'" + tok.text +
-                                    "' is not a block keyword of a code_aster mesh file (TITRE, COOR_2D, COOR_3D, a "
-                                    "cell type such as QUAD4 or HEXA20, GROUP_NO, GROUP_MA, FINSF, FIN; in upper case)");
+            lex_.fail(tok.line,
+                      "'" + tok.text +
+                          "' is not a block keyword of a code_aster mesh file (TITRE, COOR_2D, COOR_3D, a "
+                          "cell type such as QUAD4 or HEXA20, GROUP_NO, GROUP_MA, FINSF, FIN; in upper case)");
         }
     }
 }
@@ -110,10 +111,9 @@ BlockHeader AsterMeshParser::readHeader(const AsterToken& keyword) {
         const bool isName = item.text.compare(0, 3, "NOM") == 0, isLines = item.text == "NBLIGE";
         if (!isName && !isLines) continue;
         const AsterToken value = lex_.moreOnLine() ? lex_.next() : AsterToken{};
-        if ( (isName && value.kind != AsterToken::Kind::Name) ||
-            (isLines && value.kind != AsterToken::Kind::Integer))
-            lex_.fail(item.line, item.text + "= must be followed by " + (isName ? "a name" : "an integer") +
-                                     " on the same line");
+        if ((isName && value.kind != AsterToken::Kind::Name) || (isLines && value.kind != AsterToken::Kind::Integer))
+            lex_.fail(item.line,
+                      item.text + "= must be followed by " + (isName ? "a name" : "an integer") + " on the same line");
         if (isName) header.name = value.text, header.line = value.line;
         if (isLines) headerLines = int(value.value);
     }
@@ -140,8 +140,9 @@ AsterToken AsterMeshParser::recordName(const char* what, const AsterToken& keywo
         lex_.fail(tok.line, "'" + tok.text + "' follows a complete record of the " + keyword.text +
                                 " block (one record per line, each one starting its line)");
     if (tok.kind != AsterToken::Kind::Name)
-        lex_.fail(tok.line, "'" + tok.text + "' where a " + what + " name is expected (a letter, then letters, "
-                                                                     "digits or '_')");
+        lex_.fail(tok.line, "'" + tok.text + "' where a " + what +
+                                " name is expected (a letter, then letters, "
+                                "digits or '_')");
     if (tok.text.size() > kEntityNameLength)
         lex_.fail(tok.line, std::string(what) + " name '" + tok.text + "' has " + std::to_string(tok.text.size()) +
                                 " characters: code_aster's node and cell names have at most 8");
@@ -163,7 +164,8 @@ void AsterMeshParser::readTitle(const AsterToken& keyword) {
     for (int line = keyword.line + 1; line <= lex_.lineCount(); ++line) {
         std::string text = lex_.rawLine(line);
         const size_t start = text.find_first_not_of(" \t");
-        const std::string word = start == std::string::npos ? "" : text.substr(start, text.find_first_of(" \t%", start) - start);
+        const std::string word =
+            start == std::string::npos ? "" : text.substr(start, text.find_first_of(" \t%", start) - start);
         if (word == "FINSF" || word == "FIN") {
             lex_.restartAt(line);
             return;
@@ -266,8 +268,7 @@ void AsterMeshParser::addGroups(const std::vector<GroupRecord>& records,
                                 const std::unordered_map<std::string, int>& index, const char* kind, GroupSet& out) {
     const bool ofNodes = std::string(kind) == "GROUP_NO";
     for (const auto& group : records) {
-        if (out.has(group.name))
-            lex_.fail(group.line, kind + std::string(" '") + group.name + "' is defined twice");
+        if (out.has(group.name)) lex_.fail(group.line, kind + std::string(" '") + group.name + "' is defined twice");
         std::vector<int> members;
         std::vector<char> seen(index.size(), 0);
         for (const auto& [name, line] : group.members) {
@@ -275,16 +276,13 @@ void AsterMeshParser::addGroups(const std::vector<GroupRecord>& records,
             if (it == index.end())
                 lex_.fail(line, kind + std::string(" '") + group.name + "' names " + (ofNodes ? "node" : "cell") +
                                     " '" + name + "', which the file does not define");
-            if (!seen[size_t(it->second)]++)
-                members.push_back(it->second);
+            if (!seen[size_t(it->second)]++) members.push_back(it->second);
             else
                 report_.alarms.push_back(
                     formatted(ofNodes ? MODELISA5_6 : MODELISA5_8, source_, line, name, group.name));
         }
-        if (members.empty())
-            report_.alarms.push_back(formatted(MODELISA4_80, source_, group.line, kind, group.name));
-        else
-            out.set(group.name, std::move(members));
+        if (members.empty()) report_.alarms.push_back(formatted(MODELISA4_80, source_, group.line, kind, group.name));
+        else out.set(group.name, std::move(members));
     }
 }
 
@@ -328,7 +326,8 @@ std::shared_ptr<Mesh> readAsterMesh(const std::string& path, AsterMeshReport* re
     char head[8] = {};
     in.read(head, sizeof(head));
     if (in.gcount() == sizeof(head) && std::memcmp(head, "\x89HDF\r\n\x1a\n", sizeof(head)) == 0)
-        throw UserError("mesh file '" + path + "' is a MED (HDF5) file, not a code_aster text mesh: read it with "
+        throw UserError("mesh file '" + path +
+                        "' is a MED (HDF5) file, not a code_aster text mesh: read it with "
                         "LIRE_MAILLAGE(FORMAT='MED')");
     in.clear();
     in.seekg(0);

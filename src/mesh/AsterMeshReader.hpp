@@ -24,8 +24,7 @@ struct AsterMeshReport {
 // Nodes and cells keep file order (code_aster's numbering), the node order inside a cell is
 // stored as written (it is code_aster's internal order, the one of Mesh). Every defect of the
 // text is a UserError with its line.
-std::shared_ptr<Mesh> parseAsterMesh(std::istream& in, const std::string& source,
-                                     AsterMeshReport* report = nullptr);
+std::shared_ptr<Mesh> parseAsterMesh(std::istream& in, const std::string& source, AsterMeshReport* report = nullptr);
 
 // Same, from a file; UserError when it cannot be opened.
 std::shared_ptr<Mesh> readAsterMesh(const std::string& path, AsterMeshReport* report = nullptr);

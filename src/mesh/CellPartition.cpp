@@ -9,8 +9,8 @@
 
 namespace ma {
 
-std::vector<int> partitionCells(const Mesh& mesh, std::span<const int> cells, std::span<const int> weights,
-                                int dim, int parts) {
+std::vector<int> partitionCells(const Mesh& mesh, std::span<const int> cells, std::span<const int> weights, int dim,
+                                int parts) {
     const size_t n = cells.size();
     std::vector<int> owner(n, 0);
     if (parts <= 1 || n == 0) return owner;
@@ -36,8 +36,8 @@ std::vector<int> partitionCells(const Mesh& mesh, std::span<const int> cells, st
     const int rc = METIS_PartMeshDual(&ne, &nn, eptr.data(), eind.data(), vwgt.empty() ? nullptr : vwgt.data(), nullptr,
                                       &ncommon, &nparts, nullptr, options, &objval, epart.data(), npart.data());
     if (rc != METIS_OK)
-        throw NumericalError(fmt::format("METIS_PartMeshDual could not partition {} cells into {} parts (code {})", n,
-                                         parts, rc));
+        throw NumericalError(
+            fmt::format("METIS_PartMeshDual could not partition {} cells into {} parts (code {})", n, parts, rc));
     for (size_t i = 0; i < n; ++i) owner[i] = int(epart[i]);
     return owner;
 }

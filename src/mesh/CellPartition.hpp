@@ -12,7 +12,7 @@ namespace ma {
 
 // owner[i] in [0, parts) for cells[i]. parts == 1: all 0; fewer cells than parts: cell i to i.
 // NumericalError when METIS fails.
-std::vector<int> partitionCells(const Mesh& mesh, std::span<const int> cells, std::span<const int> weights,
-                                int dim, int parts);
+std::vector<int> partitionCells(const Mesh& mesh, std::span<const int> cells, std::span<const int> weights, int dim,
+                                int parts);
 
 }  // namespace ma

@@ -86,7 +86,7 @@ std::vector<int> cellsInBand(const Mesh& mesh, Vec3 point, Vec3 normal, double d
         int inside = 0;
         for (int v : nodes) inside += near[size_t(v)];
         const int total = int(nodes.size());
-        const bool keep = criterion == "TOUS" ? inside == total
+        const bool keep = criterion == "TOUS"       ? inside == total
                           : criterion == "MAJORITE" ? 2 * inside >= total
                                                     : inside > 0;
         if (keep) out.push_back(c);

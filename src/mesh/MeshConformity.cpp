@@ -63,7 +63,8 @@ std::vector<CellFace> unsharedFaces(const Mesh& mesh, int dim) {
 std::vector<Vec3> facePoints(const Mesh& mesh, const CellFace& f) {
     const auto nodes = mesh.cellNodes(f.cell);
     std::vector<Vec3> p;
-    for (int v : localFaces(mesh.cellTypes[size_t(f.cell)])[size_t(f.local)]) p.push_back(mesh.coords[size_t(nodes[size_t(v)])]);
+    for (int v : localFaces(mesh.cellTypes[size_t(f.cell)])[size_t(f.local)])
+        p.push_back(mesh.coords[size_t(nodes[size_t(v)])]);
     return p;
 }
 
@@ -92,12 +93,15 @@ bool overlap(const Mesh& mesh, const CellFace& a, const CellFace& b, const Vec3&
 
 ConformityReport meshConformity(const Mesh& mesh) {
     ConformityReport r;
-    for (int c = 0; c < mesh.cellCount(); ++c) r.dimension = std::max(r.dimension, cellDimension(mesh.cellTypes[size_t(c)]));
+    for (int c = 0; c < mesh.cellCount(); ++c)
+        r.dimension = std::max(r.dimension, cellDimension(mesh.cellTypes[size_t(c)]));
     if (r.dimension < 2) return r;
     const auto once = unsharedFaces(mesh, r.dimension);
     r.unsharedFaces = int(once.size());
     // Sub-faces (3D: edges, 2D: nodes) of the unshared faces, sorted to meet the faces sharing one.
-    struct Sub { int a, b, face; };
+    struct Sub {
+        int a, b, face;
+    };
     std::vector<Sub> subs;
     for (size_t i = 0; i < once.size(); ++i) {
         const auto& local = localFaces(mesh.cellTypes[size_t(once[i].cell)])[size_t(once[i].local)];
@@ -108,7 +112,8 @@ ConformityReport meshConformity(const Mesh& mesh) {
             subs.push_back({a, b, int(i)});
         }
     }
-    std::sort(subs.begin(), subs.end(), [](const Sub& x, const Sub& y) { return std::tie(x.a, x.b) < std::tie(y.a, y.b); });
+    std::sort(subs.begin(), subs.end(),
+              [](const Sub& x, const Sub& y) { return std::tie(x.a, x.b) < std::tie(y.a, y.b); });
     std::vector<char> faulty(once.size(), 0);
     for (size_t i = 0; i < subs.size();) {
         size_t j = i + 1;

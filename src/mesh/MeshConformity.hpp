@@ -10,10 +10,10 @@
 namespace ma {
 
 struct ConformityReport {
-    int dimension = 0;             // of the cells examined (2 or 3)
-    int unsharedFaces = 0;         // faces of one cell only (the boundary, and the faults)
-    std::vector<int> faultCells;   // cells owning a face that overlaps another unshared face
-    int overlappingFaces = 0;      // unshared faces that overlap another one
+    int dimension = 0;            // of the cells examined (2 or 3)
+    int unsharedFaces = 0;        // faces of one cell only (the boundary, and the faults)
+    std::vector<int> faultCells;  // cells owning a face that overlaps another unshared face
+    int overlappingFaces = 0;     // unshared faces that overlap another one
 };
 
 ConformityReport meshConformity(const Mesh& mesh);

@@ -49,10 +49,9 @@ inline constexpr Message<std::string, int, int, size_t, std::string> MAILLAGE_NO
 // DEFI_GROUP ALARME='OUI': the keyword, "cell" or "node", the group.
 inline constexpr Message<std::string, std::string, std::string> SOUSTRUC_36{
     "SOUSTRUC_36", "{}: the {} group '{}' would be empty; it is not created"};
-inline constexpr Message<std::string> SOUSTRUC_37{"SOUSTRUC_37",
-                                                  "node group '{}' already exists: it is kept as it is"};
-inline constexpr Message<std::string, std::string, std::string> SOUSTRUC_38{
-    "SOUSTRUC_38", "{}: there is no {} group '{}' to destroy"};
+inline constexpr Message<std::string> SOUSTRUC_37{"SOUSTRUC_37", "node group '{}' already exists: it is kept as it is"};
+inline constexpr Message<std::string, std::string, std::string> SOUSTRUC_38{"SOUSTRUC_38",
+                                                                            "{}: there is no {} group '{}' to destroy"};
 
 inline constexpr MessageText meshMessages[] = {
     entry(MODELISA4_97),

@@ -7,20 +7,33 @@ namespace ma {
 int vertexCount(CellType t) {
     switch (t) {
         case CellType::POI1: return 1;
-        case CellType::SEG2: case CellType::SEG3: case CellType::SEG4: return 2;
-        case CellType::TRIA3: case CellType::TRIA6: case CellType::TRIA7: return 3;
-        case CellType::QUAD4: case CellType::QUAD8: case CellType::QUAD9: return 4;
-        case CellType::TETRA4: case CellType::TETRA10: return 4;
-        case CellType::PYRA5: case CellType::PYRA13: return 5;
-        case CellType::PENTA6: case CellType::PENTA15: case CellType::PENTA18: return 6;
-        case CellType::HEXA8: case CellType::HEXA20: case CellType::HEXA27: return 8;
+        case CellType::SEG2:
+        case CellType::SEG3:
+        case CellType::SEG4: return 2;
+        case CellType::TRIA3:
+        case CellType::TRIA6:
+        case CellType::TRIA7: return 3;
+        case CellType::QUAD4:
+        case CellType::QUAD8:
+        case CellType::QUAD9: return 4;
+        case CellType::TETRA4:
+        case CellType::TETRA10: return 4;
+        case CellType::PYRA5:
+        case CellType::PYRA13: return 5;
+        case CellType::PENTA6:
+        case CellType::PENTA15:
+        case CellType::PENTA18: return 6;
+        case CellType::HEXA8:
+        case CellType::HEXA20:
+        case CellType::HEXA27: return 8;
     }
     return nodeCount(t);
 }
 
 int centreNodeCount(CellType t) {
     switch (t) {
-        case CellType::TRIA7: case CellType::QUAD9: return 1;
+        case CellType::TRIA7:
+        case CellType::QUAD9: return 1;
         case CellType::PENTA18: return 3;
         case CellType::HEXA27: return 7;
         default: return 0;

@@ -15,8 +15,7 @@ std::string meshSummary(const Mesh& mesh, const std::string& meshName) {
     s += fmt::format("{:<34}{:>10}\n", "NOMBRE DE MAILLES", mesh.cellCount());
     std::map<int, int> perType;
     for (auto t : mesh.cellTypes) ++perType[int(t)];
-    for (const auto& [code, n] : perType)
-        s += fmt::format("{:30}{:<14}{:>10}\n", "", cellTypeName(CellType(code)), n);
+    for (const auto& [code, n] : perType) s += fmt::format("{:30}{:<14}{:>10}\n", "", cellTypeName(CellType(code)), n);
     auto groups = [&](const GroupSet& set, const char* title) {
         if (set.size() == 0) return;
         s += fmt::format("\n{:<34}{:>10}\n", title, set.size());
@@ -46,8 +45,7 @@ std::vector<FormattedMessage> meshDefects(const Mesh& mesh, const std::string& p
             for (size_t j = 0; j < i && !twice; ++j) twice = n[i] == n[j];
         if (twice && repeated++ == 0) example = mesh.cellNames[size_t(c)];
     }
-    if (repeated > 0)
-        out.push_back(formatted(MODELISA_VERI_MAIL_REPEATED_NODE, path, repeated, example));
+    if (repeated > 0) out.push_back(formatted(MODELISA_VERI_MAIL_REPEATED_NODE, path, repeated, example));
     return out;
 }
 

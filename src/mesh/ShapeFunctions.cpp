@@ -12,14 +12,8 @@ constexpr std::array<std::array<double, 3>, 2> kSeg2{{{-1, 0, 0}, {1, 0, 0}}};
 constexpr std::array<std::array<double, 3>, 3> kTria3{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}};
 constexpr std::array<std::array<double, 3>, 4> kQuad4{{{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}};
 constexpr std::array<std::array<double, 3>, 4> kTetra4{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
-constexpr std::array<std::array<double, 3>, 8> kHexa8{{{-1, -1, -1},
-                                                       {1, -1, -1},
-                                                       {1, 1, -1},
-                                                       {-1, 1, -1},
-                                                       {-1, -1, 1},
-                                                       {1, -1, 1},
-                                                       {1, 1, 1},
-                                                       {-1, 1, 1}}};
+constexpr std::array<std::array<double, 3>, 8> kHexa8{
+    {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}}};
 
 [[noreturn]] void unsupported(CellType type) {
     throw NotImplemented("no shape functions for cell type " + cellTypeName(type));
@@ -128,8 +122,8 @@ std::array<double, 3> mapToPhysical(CellType type, std::span<const std::array<do
     return x;
 }
 
-bool mapToReference(CellType type, std::span<const std::array<double, 3>> nodes,
-                    const std::array<double, 3>& x, std::array<double, 3>& xi) {
+bool mapToReference(CellType type, std::span<const std::array<double, 3>> nodes, const std::array<double, 3>& x,
+                    std::array<double, 3>& xi) {
     const int d = referenceDimension(type);
     if (d < 2) unsupported(type);
     const int n = nodeCount(type);
@@ -145,7 +139,8 @@ bool mapToReference(CellType type, std::span<const std::array<double, 3>> nodes,
         const auto cur = mapToPhysical(type, nodes, xi);
         shapeDerivatives(type, xi, dN);
         double J[3][3] = {}, inv[3][3] = {};
-        jacobian(d, d, n, [&](int a) -> const Vec3& { return nodes[a]; }, [&](int a, int j) { return dN[3 * a + j]; }, J);
+        jacobian(
+            d, d, n, [&](int a) -> const Vec3& { return nodes[a]; }, [&](int a, int j) { return dN[3 * a + j]; }, J);
         const Vec3 r{x[0] - cur[0], x[1] - cur[1], d == 3 ? x[2] - cur[2] : 0.0};
         if (norm(r) <= 1e-15 * size) return true;
         if (invertJacobian(d, J, inv) == 0.0) return false;

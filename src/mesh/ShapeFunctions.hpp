@@ -37,7 +37,7 @@ std::array<double, 3> mapToPhysical(CellType type, std::span<const std::array<do
 // TETRA4/HEXA8 in space): reference point of physical point x. Exact for simplices; for
 // QUAD4/HEXA8 Newton converges to 1e-14 relative on non-degenerate cells. Returns false when
 // Newton did not converge (degenerate cell).
-bool mapToReference(CellType type, std::span<const std::array<double, 3>> nodes,
-                    const std::array<double, 3>& x, std::array<double, 3>& xi);
+bool mapToReference(CellType type, std::span<const std::array<double, 3>> nodes, const std::array<double, 3>& x,
+                    std::array<double, 3>& xi);
 
 }  // namespace ma

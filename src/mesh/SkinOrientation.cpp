@@ -21,7 +21,8 @@ std::vector<int> reversedOrder(CellType t) {
     }
 }
 
-SkinOrientationReport orientSkin(Mesh& mesh, const std::vector<int>& skin, const std::vector<int>& bodies, int bodyDim) {
+SkinOrientationReport orientSkin(Mesh& mesh, const std::vector<int>& skin, const std::vector<int>& bodies,
+                                 int bodyDim) {
     const NodeCellIndex around(mesh, bodyDim, bodies);
 
     SkinOrientationReport report;

@@ -11,9 +11,9 @@
 #include "core/Function.hpp"
 #include "core/Mpi.hpp"
 #include "fe/FieldSampling.hpp"
-#include "fe/Parallel.hpp"
 #include "fe/Material.hpp"
 #include "fe/Model.hpp"
+#include "fe/Parallel.hpp"
 #include "fields/Fields.hpp"
 #include "post/TableOperations.hpp"
 
@@ -47,8 +47,7 @@ std::vector<int> groupElements(const Model& model, const std::string& group) {
     std::vector<int> out;
     for (int c : mesh.cellGroups.get(group))
         if (inModel[size_t(c)]) out.push_back(c);
-    if (out.empty())
-        throw UserError(fmt::format("GROUP_MA: group {} has no element of model {}", group, model.name));
+    if (out.empty()) throw UserError(fmt::format("GROUP_MA: group {} has no element of model {}", group, model.name));
     return out;
 }
 
@@ -72,22 +71,24 @@ std::vector<std::vector<double>> evaluateReference(const ReferenceFormulas& ref,
 void checkFormulaCounts(const ReferenceFormulas& ref, size_t groups) {
     for (size_t c = 0; c < ref.components.size(); ++c)
         if (!ref.formulas[c].empty() && ref.formulas[c].size() != groups)
-            throw UserError(fmt::format("{} gives {} formulas for {} groups of GROUP_MA: one formula per group is "
-                                        "needed (code_aster PREPOST_12)",
-                                        ref.components[c], ref.formulas[c].size(), groups));
+            throw UserError(
+                fmt::format("{} gives {} formulas for {} groups of GROUP_MA: one formula per group is "
+                            "needed (code_aster PREPOST_12)",
+                            ref.components[c], ref.formulas[c].size(), groups));
 }
 
 std::shared_ptr<Table> errorTable(const std::vector<std::string>& groups, const std::vector<double>& difference,
-                                  const std::vector<double>& reference, double totalDifference,
-                                  double totalReference, bool withRelative, double relative, const std::string& title) {
+                                  const std::vector<double>& reference, double totalDifference, double totalReference,
+                                  bool withRelative, double relative, const std::string& title) {
     // An overflow (loads of 1e300: squares beyond 1.8e308) would print inf/nan as if it were a
     // value, or a "zero reference": the norm is refused instead.
     for (double v : {totalDifference, totalReference, withRelative ? relative : 0.0})
         if (!std::isfinite(v))
-            throw NumericalError(fmt::format("{}: the norm is not finite (DIFFERENCE = {}, REFERENCE = {}): the field "
-                                             "or the reference values overflow (a value beyond about 1e154 squares "
-                                             "beyond the largest double); check the loads and the units",
-                                             title, totalDifference, totalReference));
+            throw NumericalError(
+                fmt::format("{}: the norm is not finite (DIFFERENCE = {}, REFERENCE = {}): the field "
+                            "or the reference values overflow (a value beyond about 1e154 squares "
+                            "beyond the largest double); check the loads and the units",
+                            title, totalDifference, totalReference));
     auto table = std::make_shared<Table>();
     size_t width = 5;  // "TOTAL"
     for (const auto& g : groups) width = std::max(width, g.size());
@@ -205,8 +206,8 @@ StressSlots stressSlots(const GaussField& stress, const ReferenceFormulas& refer
     StressSlots slots;
     for (int k = 0; k < 6; ++k) slots.field[k] = stress.componentIndex(kNames[k]);
     if (slots.field[0] < 0 || slots.field[1] < 0)
-        throw UserError(fmt::format("CHAM_GD: field {} has no stress components SIXX, SIYY (SIEF_ELGA expected)",
-                                    stress.name));
+        throw UserError(
+            fmt::format("CHAM_GD: field {} has no stress components SIXX, SIYY (SIEF_ELGA expected)", stress.name));
     for (int k = 0; k < 6; ++k) {
         slots.reference[k] = -1;
         for (size_t c = 0; c < reference.components.size(); ++c)

@@ -45,8 +45,7 @@ std::vector<int> nodeList(const Mesh& mesh, const NodalField& f, const std::vect
         candidates.push_back(i);
     }
     for (const auto& g : a.nodeGroups) {
-        if (!mesh.nodeGroups.has(g))
-            throw UserError(fmt::format("GROUP_NO: group {} is not in mesh {}", g, mesh.name));
+        if (!mesh.nodeGroups.has(g)) throw UserError(fmt::format("GROUP_NO: group {} is not in mesh {}", g, mesh.name));
         const auto& members = mesh.nodeGroups.get(g);
         candidates.insert(candidates.end(), members.begin(), members.end());
     }
@@ -83,7 +82,7 @@ struct Extraction {
 
 // The fields an action reads (a CHAM_GD, or NOM_CHAM at each step of a RESULTAT).
 std::vector<std::pair<const NodalField*, const ResultStep*>> sourcesOf(const NodalExtraction& a, Extraction& x,
-                                                                     std::string& label) {
+                                                                       std::string& label) {
     std::vector<std::pair<const NodalField*, const ResultStep*>> sources;
     if (a.field) {
         x.anyField = true;

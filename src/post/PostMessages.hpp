@@ -25,8 +25,7 @@ inline constexpr Message<std::string, std::string, int, std::string> RESULT1_6{
     "RESULT1_6", "{}: field {} does not exist at NUME_ORDRE {} of result {}; it is not printed"};
 // FORMAT='GMSH': TYPE_CHAM.
 inline constexpr Message<std::string, std::string> PREPOST6_35{
-    "PREPOST6_35",
-    "{}: a field at Gauss points is written as scalar views (one per component), not as TYPE_CHAM='{}'"};
+    "PREPOST6_35", "{}: a field at Gauss points is written as scalar views (one per component), not as TYPE_CHAM='{}'"};
 // The field, the result.
 inline constexpr Message<std::string, std::string, std::string> PREPOST2_59{
     "PREPOST2_59", "{}: no field {} in result {} at the selected steps; nothing written for it"};
@@ -37,8 +36,8 @@ inline constexpr Message<std::string, std::string, size_t, std::string> ALGELINE
     "linear cells)"};
 
 inline constexpr MessageText postMessages[] = {
-    entry(TEST0_11), entry(TEST0_12), entry(TABLE0_7), entry(RESULT1_6), entry(PREPOST6_35), entry(PREPOST2_59),
-    entry(ALGELINE_64),
+    entry(TEST0_11),    entry(TEST0_12),    entry(TABLE0_7),    entry(RESULT1_6),
+    entry(PREPOST6_35), entry(PREPOST2_59), entry(ALGELINE_64),
 };
 
 }  // namespace ma

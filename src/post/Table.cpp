@@ -39,8 +39,8 @@ std::vector<std::string> Table::columnNames() const {
 const Column& Table::column(const std::string& colName) const {
     const int i = columnIndex(colName);
     if (i < 0)
-        throw UserError(fmt::format("table {} has no column '{}' (columns: {})", name, colName,
-                                    fmt::join(columnNames(), ", ")));
+        throw UserError(
+            fmt::format("table {} has no column '{}' (columns: {})", name, colName, fmt::join(columnNames(), ", ")));
     return columns_[size_t(i)];
 }
 
@@ -100,20 +100,23 @@ void Table::set(size_t row, size_t col, Cell value) {
         case ColumnType::Real:
             if (auto* i = std::get_if<long long>(&value)) value = double(*i);
             if (!isEmpty(value) && !std::holds_alternative<double>(value))
-                throw UserError(fmt::format("table {}: column '{}' holds reals, not {}", name, c.name, describeCell(value)));
+                throw UserError(
+                    fmt::format("table {}: column '{}' holds reals, not {}", name, c.name, describeCell(value)));
             break;
         case ColumnType::Integer:
             if (!isEmpty(value) && !std::holds_alternative<long long>(value))
-                throw UserError(fmt::format("table {}: column '{}' holds integers, not {}", name, c.name, describeCell(value)));
+                throw UserError(
+                    fmt::format("table {}: column '{}' holds integers, not {}", name, c.name, describeCell(value)));
             break;
         case ColumnType::Text:
             if (!isEmpty(value)) {
                 auto* s = std::get_if<std::string>(&value);
                 if (!s)
-                    throw UserError(fmt::format("table {}: column '{}' holds texts, not {}", name, c.name, describeCell(value)));
+                    throw UserError(
+                        fmt::format("table {}: column '{}' holds texts, not {}", name, c.name, describeCell(value)));
                 if (int(s->size()) > c.type.width)
-                    throw UserError(fmt::format("table {}: '{}' is longer than the {} characters of column '{}'", name, *s,
-                                                c.type.width, c.name));
+                    throw UserError(fmt::format("table {}: '{}' is longer than the {} characters of column '{}'", name,
+                                                *s, c.type.width, c.name));
             }
             break;
     }

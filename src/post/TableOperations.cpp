@@ -17,9 +17,7 @@
 namespace ma {
 namespace {
 
-bool isNumber(const Cell& c) {
-    return std::holds_alternative<double>(c) || std::holds_alternative<long long>(c);
-}
+bool isNumber(const Cell& c) { return std::holds_alternative<double>(c) || std::holds_alternative<long long>(c); }
 double toDouble(const Cell& c) {
     if (auto* i = std::get_if<long long>(&c)) return double(*i);
     return std::get<double>(c);
@@ -57,8 +55,8 @@ bool numberEquals(double v, const std::vector<double>& values, bool relative, do
 
 void checkTextFilter(const Column& col, const RowFilter& f) {
     if (col.type.kind != ColumnType::Text)
-        throw UserError(fmt::format("FILTRE on column '{}' ({}) with VALE_K: the column does not hold texts",
-                                    col.name, col.type.name()));
+        throw UserError(fmt::format("FILTRE on column '{}' ({}) with VALE_K: the column does not hold texts", col.name,
+                                    col.type.name()));
     (void)f;
 }
 
@@ -123,7 +121,8 @@ std::vector<size_t> equalRows(const std::vector<Cell>& cells, const RowFilter& f
                 if (!isEmpty(cells[r]) && v == strip(t)) eq = true;
         } else {
             if (numbers.empty()) throw UserError(fmt::format("FILTRE CRIT_COMP='{}' needs VALE, VALE_I or VALE_K", op));
-            if (!numeric) throw UserError(fmt::format("FILTRE on text column '{}' needs VALE_K, not a number", f.column));
+            if (!numeric)
+                throw UserError(fmt::format("FILTRE on text column '{}' needs VALE_K, not a number", f.column));
             eq = isNumber(cells[r]) && numberEquals(toDouble(cells[r]), numbers, f.relative, f.precision);
         }
         if (eq == (op == "EQ")) kept.push_back(r);
@@ -213,12 +212,9 @@ std::string rowKey(const Table& t, const std::vector<size_t>& cols, size_t row, 
         const Cell& cell = t.cell(row, c);
         if (auto* d = std::get_if<double>(&cell))
             key += realFormat.empty() ? "R" + pythonRepr(*d) : "R" + printfReal(realFormat.c_str(), *d);
-        else if (auto* i = std::get_if<long long>(&cell))
-            key += "I" + std::to_string(*i);
-        else if (auto* s = std::get_if<std::string>(&cell))
-            key += "K" + strip(*s);
-        else
-            key += "N";
+        else if (auto* i = std::get_if<long long>(&cell)) key += "I" + std::to_string(*i);
+        else if (auto* s = std::get_if<std::string>(&cell)) key += "K" + strip(*s);
+        else key += "N";
         key += '\x1f';
     }
     return key;
@@ -297,8 +293,8 @@ void addFormulaColumn(Table& table, const Function& formula, const std::string& 
                                         formula.name, c, table.name, fmt::join(table.columnNames(), ", ")));
         const Column& col = table.column(c);
         if (col.type.kind == ColumnType::Text)
-            throw UserError(fmt::format("OPER: column '{}' holds texts and cannot be an argument of formula {}", c,
-                                        formula.name));
+            throw UserError(
+                fmt::format("OPER: column '{}' holds texts and cannot be an argument of formula {}", c, formula.name));
         cols.push_back(&col);
     }
     // Rows where every argument has a value, evaluated in one batch.
@@ -358,13 +354,13 @@ ColumnType textColumnFor(size_t length) {
 
 void addConstantColumns(Table& table, const std::vector<std::string>& names, const std::vector<Cell>& values) {
     if (names.size() != values.size())
-        throw UserError(fmt::format("AJOUT_COLONNE: {} column names (NOM_PARA) but {} values (VALE)", names.size(),
-                                    values.size()));
+        throw UserError(
+            fmt::format("AJOUT_COLONNE: {} column names (NOM_PARA) but {} values (VALE)", names.size(), values.size()));
     for (size_t k = 0; k < names.size(); ++k) {
         const Cell& v = values[k];
         ColumnType type = std::holds_alternative<long long>(v) ? ColumnType::integer()
                           : std::holds_alternative<double>(v)  ? ColumnType::real()
-                                                                : textColumnFor(std::get<std::string>(v).size());
+                                                               : textColumnFor(std::get<std::string>(v).size());
         const size_t c = table.addColumn(names[k], type);
         for (size_t r = 0; r < table.rowCount(); ++r) table.set(r, c, v);
     }
@@ -380,8 +376,8 @@ std::vector<std::string> automaticTitle(const std::string& conceptName, const st
     std::string type = typeName;
     for (char& c : type) c = char(std::toupper(static_cast<unsigned char>(c)));
     // The version word names miniaster: these tables are not code_aster's.
-    const std::string text = fmt::format("ASTER miniaster-0.1 CONCEPT {} CALCULE LE {} A {} DE TYPE {}",
-                                         conceptName, date, hour, type);
+    const std::string text =
+        fmt::format("ASTER miniaster-0.1 CONCEPT {} CALCULE LE {} A {} DE TYPE {}", conceptName, date, hour, type);
     std::vector<std::string> lines;
     std::istringstream words(text);
     std::string word, line;
@@ -403,10 +399,11 @@ std::string fortranToPrintf(const std::string& fortranFormat) {
     if (letter == 'D') letter = 'E';
     const std::string spec = f.substr(1);
     const bool valid = !spec.empty() && spec.find_first_not_of("0123456789.") == std::string::npos &&
-                       std::count(spec.begin(), spec.end(), '.') <= 1 && std::isdigit(static_cast<unsigned char>(spec[0]));
+                       std::count(spec.begin(), spec.end(), '.') <= 1 &&
+                       std::isdigit(static_cast<unsigned char>(spec[0]));
     if (!valid || (letter != 'E' && letter != 'F' && letter != 'G'))
-        throw UserError(fmt::format("FORMAT_R '{}' is not a Fortran real format such as 'E12.5' or 'F10.3'",
-                                    fortranFormat));
+        throw UserError(
+            fmt::format("FORMAT_R '{}' is not a Fortran real format such as 'E12.5' or 'F10.3'", fortranFormat));
     return fmt::format("%{}{}", spec, letter == 'F' ? 'f' : letter);
 }
 

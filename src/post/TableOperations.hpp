@@ -17,12 +17,12 @@ void extractColumns(Table& table, const std::vector<std::string>& names);
 // OPERATION='FILTRE'.
 struct RowFilter {
     std::string column;
-    std::string comparison = "EQ";  // EQ NE GT LT GE LE REGEXP VIDE NON_VIDE MAXI MAXI_ABS MINI MINI_ABS
-    std::vector<double> reals;       // VALE
+    std::string comparison = "EQ";    // EQ NE GT LT GE LE REGEXP VIDE NON_VIDE MAXI MAXI_ABS MINI MINI_ABS
+    std::vector<double> reals;        // VALE
     std::vector<long long> integers;  // VALE_I
-    std::vector<std::string> texts;  // VALE_K (the pattern for REGEXP)
-    bool relative = true;            // CRITERE
-    double precision = 1.0e-3;       // PRECISION
+    std::vector<std::string> texts;   // VALE_K (the pattern for REGEXP)
+    bool relative = true;             // CRITERE
+    double precision = 1.0e-3;        // PRECISION
 
     // The trace line code_aster appends to the title.
     std::string describe() const;

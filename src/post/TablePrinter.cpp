@@ -75,12 +75,9 @@ std::string formatTable(const Table& table, const TablePrintOptions& options) {
                 continue;
             }
             any = true;
-            if (auto* d = std::get_if<double>(&cell))
-                line += rjust(printfReal(options.realFormat.c_str(), *d), w);
-            else if (auto* i = std::get_if<long long>(&cell))
-                line += rjust(fmt::format("{:12d}", *i), w);
-            else
-                line += std::string(w - valueWidth, ' ') + ljust(std::get<std::string>(cell), valueWidth);
+            if (auto* d = std::get_if<double>(&cell)) line += rjust(printfReal(options.realFormat.c_str(), *d), w);
+            else if (auto* i = std::get_if<long long>(&cell)) line += rjust(fmt::format("{:12d}", *i), w);
+            else line += std::string(w - valueWidth, ' ') + ljust(std::get<std::string>(cell), valueWidth);
         }
         if (any) out += line + "\n";
     }

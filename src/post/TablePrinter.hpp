@@ -8,8 +8,8 @@
 namespace ma {
 
 struct TablePrintOptions {
-    std::vector<std::string> columns;        // NOM_PARA (all columns when empty)
-    std::string realFormat = "%12.5E";       // FORMAT_R 'E12.5' in printf form
+    std::vector<std::string> columns;   // NOM_PARA (all columns when empty)
+    std::string realFormat = "%12.5E";  // FORMAT_R 'E12.5' in printf form
 };
 
 // The text IMPR_TABLE appends to its unit: '#', the separator line, the title lines, the column

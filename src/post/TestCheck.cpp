@@ -49,7 +49,8 @@ bool fortranMatch(const Cell& cell, const TestFilter& f) {
         const std::string a = rstrip(*s), b = rstrip(std::get<std::string>(f.value));
         if (op == "EQ") return a == b;
         if (op == "NE") return a != b;
-        throw UserError(fmt::format("FILTRE on text column '{}': CRIT_COMP '{}' is not available (EQ or NE)", f.column, op));
+        throw UserError(
+            fmt::format("FILTRE on text column '{}': CRIT_COMP '{}' is not available (EQ or NE)", f.column, op));
     }
     if (auto* i = std::get_if<long long>(&cell)) {
         const long long v = std::get<long long>(f.value);
@@ -115,10 +116,11 @@ std::vector<size_t> filterRowsForTest(const Table& table, const std::vector<Test
                 if (!isEmpty(col.cells[r]) && fortranMatch(col.cells[r], f)) kept.push_back(r);
         }
         if (kept.empty())
-            throw UserError(fmt::format("FILTRE[{}] (NOM_PARA='{}', CRIT_COMP='{}'{}) leaves no row of table {} "
-                                        "(code_aster CALCULEL6_7)",
-                                        k + 1, f.column, op, isEmpty(f.value) ? "" : ", value " + describeCell(f.value),
-                                        table.name));
+            throw UserError(
+                fmt::format("FILTRE[{}] (NOM_PARA='{}', CRIT_COMP='{}'{}) leaves no row of table {} "
+                            "(code_aster CALCULEL6_7)",
+                            k + 1, f.column, op, isEmpty(f.value) ? "" : ", value " + describeCell(f.value),
+                            table.name));
         rows = std::move(kept);
     }
     return rows;
@@ -131,22 +133,25 @@ Cell testedValue(const Table& table, const std::vector<size_t>& rows, const std:
                                     table.name, column, fmt::join(table.columnNames(), ", ")));
     const Column& col = table.column(column);
     if (col.type.kind != expected)
-        throw UserError(fmt::format("NOM_PARA: column '{}' of table {} has type {}, but the expected value is {} "
-                                    "(code_aster {})",
-                                    column, table.name, col.type.name(), kindName(expected),
-                                    reduction == Reduction::None ? "CALCULEL6_8" : "TEST0_7"));
+        throw UserError(
+            fmt::format("NOM_PARA: column '{}' of table {} has type {}, but the expected value is {} "
+                        "(code_aster {})",
+                        column, table.name, col.type.name(), kindName(expected),
+                        reduction == Reduction::None ? "CALCULEL6_8" : "TEST0_7"));
     if (reduction == Reduction::None) {
         std::vector<size_t> withValue;
         for (size_t r : rows)
             if (!isEmpty(col.cells[r])) withValue.push_back(r);
         if (withValue.empty())
-            throw UserError(fmt::format("no row of table {} has a value in column '{}' (code_aster CALCULEL6_4); add "
-                                        "a FILTRE or a TYPE_TEST",
-                                        table.name, column));
+            throw UserError(
+                fmt::format("no row of table {} has a value in column '{}' (code_aster CALCULEL6_4); add "
+                            "a FILTRE or a TYPE_TEST",
+                            table.name, column));
         if (withValue.size() > 1)
-            throw UserError(fmt::format("{} rows of table {} have a value in column '{}', one is needed (code_aster "
-                                        "CALCULEL6_5); add a FILTRE or a TYPE_TEST",
-                                        withValue.size(), table.name, column));
+            throw UserError(
+                fmt::format("{} rows of table {} have a value in column '{}', one is needed (code_aster "
+                            "CALCULEL6_5); add a FILTRE or a TYPE_TEST",
+                            withValue.size(), table.name, column));
         return col.cells[withValue.front()];
     }
     if (col.type.kind == ColumnType::Text)
@@ -289,8 +294,8 @@ Cell absolute(const Cell& c) {
 }
 
 std::string describe(const TestTableRequest& rq, const CheckInput& in, const CheckOutput& out) {
-    std::string what = fmt::format("{} {} {}{}{}", rq.where, rq.tableName, rq.column,
-                                   rq.typeTest.empty() ? "" : " ", rq.typeTest);
+    std::string what =
+        fmt::format("{} {} {}{}{}", rq.where, rq.tableName, rq.column, rq.typeTest.empty() ? "" : " ", rq.typeTest);
     for (const auto& f : rq.filters)
         what += fmt::format(" [{} {}{}{}]", f.column, f.comparison, isEmpty(f.value) ? "" : " ",
                             isEmpty(f.value) ? std::string() : describeCell(f.value));
@@ -318,8 +323,7 @@ std::vector<TestLine> runTestTable(const Table& table, const TestTableRequest& r
         if (rq.orderOfMagnitude) order = *rq.orderOfMagnitude;
         else skip = true;
     }
-    if (skip && !hasReference)
-        msg().alarm(TEST0_11);
+    if (skip && !hasReference) msg().alarm(TEST0_11);
 
     std::string h1 = ljust("---- TABLE", 21) + ljust(" NOM_PARA", 17);
     std::string h2 = ljust("     " + ljust(rq.tableName, 8), 21) + ljust(" " + rq.column.substr(0, 16), 17);
@@ -358,8 +362,7 @@ std::vector<TestLine> runTestTable(const Table& table, const TestTableRequest& r
             in.computed = absolute(in.computed);
         }
         CheckOutput out = formatCheck(in);
-        if (skipLine)
-            msg().alarm(TEST0_12);
+        if (skipLine) msg().alarm(TEST0_12);
         msg().result(out.text);
         TestLine line{type, out.status, describe(rq, in, out)};
         testReport().add(line);

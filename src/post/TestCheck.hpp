@@ -38,7 +38,7 @@ struct CheckInput {
     bool skip = false;
     bool relative = true;
     double tolerance = 1.0e-6;
-    double order = 1.0;  // ORDRE_GRANDEUR (line A only)
+    double order = 1.0;       // ORDRE_GRANDEUR (line A only)
     Cell expected, computed;  // both double, or both long long, or both string
 };
 struct CheckOutput {
@@ -57,21 +57,21 @@ size_t chooseExpected(const std::vector<Cell>& expected, const Cell& computed);
 
 // A whole TEST_TABLE call.
 struct TestTableRequest {
-    std::string tableName;     // printed in the header (legacy naming: DEPZON_1)
-    std::string column;        // NOM_PARA
-    std::string typeTest;      // MIN MAX SOMM SOMM_ABS, or empty
+    std::string tableName;  // printed in the header (legacy naming: DEPZON_1)
+    std::string column;     // NOM_PARA
+    std::string typeTest;   // MIN MAX SOMM SOMM_ABS, or empty
     std::vector<TestFilter> filters;
-    std::vector<Cell> calc;    // VALE_CALC / _I / _K (or legacy VALE)
-    std::vector<Cell> refe;    // VALE_REFE / _I / _K
-    bool legacyVale = false;   // VALE= syntax (§1.8): one check against it, tolerance PRECISION
-    std::optional<std::string> reference;  // REFERENCE
+    std::vector<Cell> calc;                  // VALE_CALC / _I / _K (or legacy VALE)
+    std::vector<Cell> refe;                  // VALE_REFE / _I / _K
+    bool legacyVale = false;                 // VALE= syntax (§1.8): one check against it, tolerance PRECISION
+    std::optional<std::string> reference;    // REFERENCE
     std::optional<double> orderOfMagnitude;  // ORDRE_GRANDEUR
-    std::optional<std::string> legend;     // LEGENDE
-    bool relative = true;      // CRITERE
-    bool absoluteValues = false;  // VALE_ABS='OUI'
-    double machineTolerance = 1.0e-6;  // TOLE_MACHINE
-    double precision = 1.0e-3;         // PRECISION
-    std::string where;         // "TEST_TABLE (.comm line 123)" for the registry descriptions
+    std::optional<std::string> legend;       // LEGENDE
+    bool relative = true;                    // CRITERE
+    bool absoluteValues = false;             // VALE_ABS='OUI'
+    double machineTolerance = 1.0e-6;        // TOLE_MACHINE
+    double precision = 1.0e-3;               // PRECISION
+    std::string where;                       // "TEST_TABLE (.comm line 123)" for the registry descriptions
 };
 
 // Runs the checks, writes the report block to the result file (msg().result), emits the TEST0_11 /

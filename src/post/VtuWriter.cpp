@@ -14,10 +14,24 @@ namespace {
 
 // VTK's cell type numbers (vtkCellType.h).
 enum : int {
-    kVertex = 1, kLine = 3, kTriangle = 5, kQuad = 9, kTetra = 10, kHexahedron = 12, kWedge = 13, kPyramid = 14,
-    kQuadraticEdge = 21, kQuadraticTriangle = 22, kQuadraticQuad = 23, kQuadraticTetra = 24,
-    kQuadraticHexahedron = 25, kQuadraticWedge = 26, kQuadraticPyramid = 27, kBiquadraticQuad = 28,
-    kBiquadraticTriangle = 34, kCubicLine = 35,
+    kVertex = 1,
+    kLine = 3,
+    kTriangle = 5,
+    kQuad = 9,
+    kTetra = 10,
+    kHexahedron = 12,
+    kWedge = 13,
+    kPyramid = 14,
+    kQuadraticEdge = 21,
+    kQuadraticTriangle = 22,
+    kQuadraticQuad = 23,
+    kQuadraticTetra = 24,
+    kQuadraticHexahedron = 25,
+    kQuadraticWedge = 26,
+    kQuadraticPyramid = 27,
+    kBiquadraticQuad = 28,
+    kBiquadraticTriangle = 34,
+    kCubicLine = 35,
 };
 
 // code_aster lists the mid-edge nodes of prisms and hexahedra bottom, vertical, top; VTK bottom,
@@ -66,7 +80,8 @@ std::string xmlEscaped(const std::string& s) {
 std::string dataArray(const DataArray& a, size_t tuples) {
     const int nc = std::max(a.componentCount(), 1);
     if (a.values.size() != tuples * size_t(nc))
-        throw InternalError(fmt::format("VTU array {}: {} values for {} tuples of {}", a.name, a.values.size(), tuples, nc));
+        throw InternalError(
+            fmt::format("VTU array {}: {} values for {} tuples of {}", a.name, a.values.size(), tuples, nc));
     std::string head = fmt::format(R"(        <DataArray type="{}" Name="{}" NumberOfComponents="{}")",
                                    a.flag ? "UInt8" : "Float64", xmlEscaped(a.name), nc);
     for (int c = 0; c < a.componentCount() && nc > 1; ++c)
@@ -120,25 +135,30 @@ void write(const std::string& path, const Mesh& mesh, const std::vector<DataArra
     for (int c = 0; c < mesh.cellCount(); ++c) {
         const VtkCell v = vtkCellOf(mesh.cellTypes[size_t(c)]);
         const auto nodes = mesh.cellNodes(c);
-        for (int j = 0; j < v.nodes; ++j) connectivity.push_back(nodes[size_t(v.internalNode.empty() ? j : v.internalNode[size_t(j)])]);
+        for (int j = 0; j < v.nodes; ++j)
+            connectivity.push_back(nodes[size_t(v.internalNode.empty() ? j : v.internalNode[size_t(j)])]);
         offsets.push_back(int64_t(connectivity.size()));
         types.push_back(uint8_t(v.type));
     }
-    std::string xml = "<?xml version=\"1.0\"?>\n"
-                      "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-                      "header_type=\"UInt64\">\n  <UnstructuredGrid>\n";
+    std::string xml =
+        "<?xml version=\"1.0\"?>\n"
+        "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+        "header_type=\"UInt64\">\n  <UnstructuredGrid>\n";
     xml += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", mesh.nodeCount(), mesh.cellCount());
     xml += "      <PointData>\n";
     for (const auto& a : pointData) xml += dataArray(a, size_t(mesh.nodeCount()));
     xml += "      </PointData>\n      <CellData>\n";
     for (const auto& a : cellData) xml += dataArray(a, size_t(mesh.cellCount()));
-    xml += "      </CellData>\n      <Points>\n"
-           "        <DataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\" format=\"binary\">\n          " +
-           encoded(points) + "\n        </DataArray>\n      </Points>\n      <Cells>\n" +
-           "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"binary\">\n          " + encoded(connectivity) +
-           "\n        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"binary\">\n          " +
-           encoded(offsets) + "\n        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" format=\"binary\">\n          " +
-           encoded(types) + "\n        </DataArray>\n      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
+    xml +=
+        "      </CellData>\n      <Points>\n"
+        "        <DataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\" format=\"binary\">\n          " +
+        encoded(points) + "\n        </DataArray>\n      </Points>\n      <Cells>\n" +
+        "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"binary\">\n          " +
+        encoded(connectivity) +
+        "\n        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"binary\">\n          " +
+        encoded(offsets) +
+        "\n        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" format=\"binary\">\n          " +
+        encoded(types) + "\n        </DataArray>\n      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
     writeFileAtomically(path, xml);
 }
 

@@ -14,9 +14,9 @@ namespace ma {
 
 namespace {
 
-constexpr size_t kLeafVertices = 8;  // ordered as they come: their fill is negligible
+constexpr size_t kLeafVertices = 8;                // ordered as they come: their fill is negligible
 constexpr double kBandLow = 0.4, kBandHigh = 0.6;  // candidate planes: between these count quantiles
-constexpr double kImbalanceCost = 4.0;  // a split 10 % off balance must save 40 % of separator
+constexpr double kImbalanceCost = 4.0;             // a split 10 % off balance must save 40 % of separator
 
 struct Split {
     float position = 0.0f;  // left part: coordinate <= position
@@ -26,8 +26,13 @@ struct Split {
 class Bisection {
 public:
     Bisection(const OrderingGraph& g, const std::vector<idx_t>& weight, const std::vector<RowPoint>& point)
-        : g_(g), weight_(weight), point_(point), rank_(weight.size()), part_(weight.size(), -1),
-          coordinate_(weight.size()), reach_(weight.size()) {}
+        : g_(g),
+          weight_(weight),
+          point_(point),
+          rank_(weight.size()),
+          part_(weight.size(), -1),
+          coordinate_(weight.size()),
+          reach_(weight.size()) {}
 
     // Parts are disjoint and each vertex's scratch entries belong to its part: the two halves
     // of the top `parallelLevels` levels are ordered on two threads, with the same ranks.
@@ -47,7 +52,8 @@ private:
         std::array<float, 3> low, high;
         low.fill(std::numeric_limits<float>::max()), high.fill(std::numeric_limits<float>::lowest());
         for (idx_t v : vertices)
-            for (int a = 0; a < 3; ++a) low[a] = std::min(low[a], point_[v][a]), high[a] = std::max(high[a], point_[v][a]);
+            for (int a = 0; a < 3; ++a)
+                low[a] = std::min(low[a], point_[v][a]), high[a] = std::max(high[a], point_[v][a]);
         int axis = 0;
         for (int a = 1; a < 3; ++a)
             if (high[a] - low[a] > high[axis] - low[axis]) axis = a;
@@ -60,11 +66,13 @@ private:
     // the other thread may be renumbering its own vertices meanwhile, hence the atomic access).
     void measure(const std::vector<idx_t>& vertices, int axis) {
         const int part = nextPart_++;
-        for (idx_t v : vertices) std::atomic_ref<int>(part_[v]).store(part, std::memory_order_relaxed), coordinate_[v] = point_[v][axis];
+        for (idx_t v : vertices)
+            std::atomic_ref<int>(part_[v]).store(part, std::memory_order_relaxed), coordinate_[v] = point_[v][axis];
         for (idx_t v : vertices) {
             float reach = std::numeric_limits<float>::lowest();
             for (idx_t k = g_.start[v]; k < g_.start[v + 1]; ++k)
-                if (const idx_t u = g_.neighbours[k]; std::atomic_ref<int>(part_[u]).load(std::memory_order_relaxed) == part)
+                if (const idx_t u = g_.neighbours[k];
+                    std::atomic_ref<int>(part_[u]).load(std::memory_order_relaxed) == part)
                     reach = std::max(reach, coordinate_[u]);
             reach_[v] = reach;
         }
@@ -90,7 +98,9 @@ private:
         const size_t K = candidates.size();
         std::vector<double> separatorChange(K + 1, 0.0), leftAdded(K, 0.0);
         double below = 0.0, total = 0.0;
-        auto index = [&](float x) { return size_t(std::lower_bound(candidates.begin(), candidates.end(), x) - candidates.begin()); };
+        auto index = [&](float x) {
+            return size_t(std::lower_bound(candidates.begin(), candidates.end(), x) - candidates.begin());
+        };
         for (idx_t v : vertices) {
             const double w = double(weight_[v]);
             total += w;
@@ -100,7 +110,8 @@ private:
             if (x < low) below += w;
             else first = index(x), leftAdded[first] += w;
             if (reach_[v] > x)
-                if (const size_t last = index(reach_[v]); last > first) separatorChange[first] += w, separatorChange[last] -= w;
+                if (const size_t last = index(reach_[v]); last > first)
+                    separatorChange[first] += w, separatorChange[last] -= w;
         }
         Split best;
         double bestScore = std::numeric_limits<double>::max(), separator = 0.0, left = below;

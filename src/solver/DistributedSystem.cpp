@@ -28,7 +28,8 @@ std::vector<double> distributedDiagonalScaling(const CsrMatrix& A, std::span<con
     for (size_t z = 0; z < zeroDiagonal.size(); ++z) {
         const int i = zeroDiagonal[z];
         for (long long k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k)
-            if (s[size_t(A.cols[k])] > 0.0) largest[z] = std::max(largest[z], std::abs(A.values[k]) * s[size_t(A.cols[k])]);
+            if (s[size_t(A.cols[k])] > 0.0)
+                largest[z] = std::max(largest[z], std::abs(A.values[k]) * s[size_t(A.cols[k])]);
     }
     mpi::max(largest);
     for (size_t z = 0; z < zeroDiagonal.size(); ++z)

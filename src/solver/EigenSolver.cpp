@@ -8,8 +8,8 @@
 #include <cmath>
 
 #include "core/Error.hpp"
-#include "core/Timing.hpp"
 #include "core/Messages.hpp"
+#include "core/Timing.hpp"
 #include "solver/LinearSolverImpl.hpp"
 
 namespace ma {
@@ -44,7 +44,8 @@ protected:
             const double dmax = d.cwiseAbs().maxCoeff();
             const double dmin = d.cwiseAbs().minCoeff();
             if (options_.nprec >= 0 && (dmin <= std::pow(10.0, -options_.nprec) * dmax || d.minCoeff() <= 0.0))
-                throw SingularSystemError(fmt::format("{} (smallest/largest pivot {:.3e}/{:.3e})", singular, dmin, dmax));
+                throw SingularSystemError(
+                    fmt::format("{} (smallest/largest pivot {:.3e}/{:.3e})", singular, dmin, dmax));
         } else {
             lu_.compute(M);
             if (lu_.info() != Eigen::Success) throw SingularSystemError(singular + " " + lu_.lastErrorMessage());

@@ -10,8 +10,8 @@
 #include <thread>
 
 #include "core/Error.hpp"
-#include "core/Timing.hpp"
 #include "core/Messages.hpp"
+#include "core/Timing.hpp"
 #include "solver/LinearSolverImpl.hpp"
 #include "solver/SolverMessages.hpp"
 
@@ -40,12 +40,10 @@ double relativeResidual(const CsrMatrix& A, std::span<const double> x, std::span
 void checkSolution(std::span<const double> x, double residual, const SolverOptions& options) {
     for (double v : x)
         if (!std::isfinite(v))
-            throw SingularSystemError("singular system: the solution contains NaN or Inf. Likely cause: " +
-                                 options.singularHint + ".");
-    if (!std::isfinite(residual) || residual > 1e-6)
-        msg().alarm(FACTOR_57, residual);
+            throw SingularSystemError(
+                "singular system: the solution contains NaN or Inf. Likely cause: " + options.singularHint + ".");
+    if (!std::isfinite(residual) || residual > 1e-6) msg().alarm(FACTOR_57, residual);
 }
-
 
 std::vector<double> symmetricDiagonalScaling(const CsrMatrix& A) {
     std::vector<double> s(A.rows, 0.0);
@@ -133,7 +131,9 @@ void ScaledDirectSolver::factorize(const CsrMatrix& A, MatrixKind kind, std::spa
         int zero = 0;
         for (int i = 0; i < A.rows; ++i) {
             const long long k = options_.distributed ? -1 : A.find(i, i);
-            const double d = options_.distributed ? std::abs(diagonal[size_t(i)]) : k >= 0 ? std::abs(A.values[k]) : 0.0;
+            const double d = options_.distributed ? std::abs(diagonal[size_t(i)])
+                             : k >= 0             ? std::abs(A.values[k])
+                                                  : 0.0;
             if (d > 0.0) dmin = std::min(dmin, d), dmax = std::max(dmax, d);
             else ++zero;
         }
@@ -183,12 +183,13 @@ double ScaledDirectSolver::solve(std::span<double> rhs) {
         ++steps;
         if (slow) break;
     }
-    msg().infof("    {} solve {:.3f} s, relative residual ||Ku-f||/||f|| = {:.3e}, componentwise backward error "
-                "{:.2e}{}",
-                name(), secondsSince(t0), res.normwise, res.componentwise,
-                steps ? fmt::format(" after {} refinement step(s) (before: {:.3e}, {:.2e})", steps, first.normwise,
-                                    first.componentwise)
-                      : std::string(options_.maxRefinementSteps ? "" : " (no refinement)"));
+    msg().infof(
+        "    {} solve {:.3f} s, relative residual ||Ku-f||/||f|| = {:.3e}, componentwise backward error "
+        "{:.2e}{}",
+        name(), secondsSince(t0), res.normwise, res.componentwise,
+        steps ? fmt::format(" after {} refinement step(s) (before: {:.3e}, {:.2e})", steps, first.normwise,
+                            first.componentwise)
+              : std::string(options_.maxRefinementSteps ? "" : " (no refinement)"));
     checkSolution(rhs, res.normwise, options_);
     return res.normwise;
 }

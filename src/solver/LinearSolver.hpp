@@ -30,8 +30,8 @@ struct SolverOptions {
     // MUMPS ordering: AUTO (coordinate nested dissection when every row has a point, else METIS)
     // METIS AMD AMF QAMD PORD SCOTCH
     std::string renum = "AUTO";
-    int nprec = 8;                 // singular pivot threshold 10^-NPREC; < 0 disables the detection
-    int pcentPivot = 20;           // MUMPS workspace relaxation (%)
+    int nprec = 8;                   // singular pivot threshold 10^-NPREC; < 0 disables the detection
+    int pcentPivot = 20;             // MUMPS workspace relaxation (%)
     std::string typeResol = "AUTO";  // MUMPS TYPE_RESOL: SYMDEF forces SYM=1 on SPD systems
     // MUMPS ACCELERATION: AUTO and FR* full rank; LR* refused (MumpsSolver.cpp says why).
     std::string acceleration = "AUTO";
@@ -49,8 +49,7 @@ struct SolverOptions {
     // the fill-reducing ordering on rank 0; built when asked and freed after the analysis.
     std::function<CsrMatrix()> wholePattern;
     // Appended to the "singular system" message: what the caller knows about likely causes.
-    std::string singularHint =
-        "a missing boundary condition (rigid body motion) or an unattached enriched dof";
+    std::string singularHint = "a missing boundary condition (rigid body motion) or an unattached enriched dof";
 };
 
 class LinearSolver {

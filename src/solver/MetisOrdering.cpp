@@ -46,14 +46,15 @@ std::vector<idx_t> nestedDissection(OrderingGraph& g, std::vector<idx_t>& w) {
     idx_t options[METIS_NOPTIONS];
     setOptions(options);
     // perm/iperm of METIS: row i of the permuted matrix is row perm[i]; iperm is the rank.
-    const int status = METIS_NodeND(&n, g.start.data(), g.neighbours.data(), w.data(), options, perm.data(), rank.data());
+    const int status =
+        METIS_NodeND(&n, g.start.data(), g.neighbours.data(), w.data(), options, perm.data(), rank.data());
     if (status != METIS_OK) metisFailed("METIS_NodeND", status, n);
     return rank;
 }
 
 // The subgraph of the vertices v with part[v] == which; local -> global vertex in `vertices`.
-OrderingGraph inducedSubgraph(const OrderingGraph& g, const std::vector<idx_t>& part, idx_t which, const std::vector<idx_t>& local,
-                      std::vector<idx_t>& vertices) {
+OrderingGraph inducedSubgraph(const OrderingGraph& g, const std::vector<idx_t>& part, idx_t which,
+                              const std::vector<idx_t>& local, std::vector<idx_t>& vertices) {
     OrderingGraph sub;
     sub.start.push_back(0);
     for (size_t v = 0; v + 1 < g.start.size(); ++v) {
@@ -69,9 +70,11 @@ OrderingGraph inducedSubgraph(const OrderingGraph& g, const std::vector<idx_t>& 
 // Orders the two halves, the second in a child process when `twoProcesses` (threads would share
 // METIS's random generator; a process has its own copy, reseeded by each call like this one's):
 // the ranks are the same either way. A failed fork or child falls back to this process.
-void orderHalves(OrderingGraph (&half)[2], std::vector<idx_t> (&weights)[2], std::vector<idx_t> (&rank)[2], bool twoProcesses) {
+void orderHalves(OrderingGraph (&half)[2], std::vector<idx_t> (&weights)[2], std::vector<idx_t> (&rank)[2],
+                 bool twoProcesses) {
     const size_t n1 = weights[1].size(), bytes = (n1 + 1) * sizeof(idx_t);
-    void* shared = twoProcesses ? mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0) : MAP_FAILED;
+    void* shared =
+        twoProcesses ? mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0) : MAP_FAILED;
     const pid_t child = shared != MAP_FAILED ? fork() : -1;
     if (child == 0) {  // only METIS and memcpy here, then _exit: no atexit handler, no Python
         // The run's own handlers would write into its .mess or wake its watchdog: a signal or a
@@ -85,9 +88,7 @@ void orderHalves(OrderingGraph (&half)[2], std::vector<idx_t> (&weights)[2], std
             const std::vector<idx_t> r = nestedDissection(half[1], weights[1]);
             std::copy(r.begin(), r.end(), out + 1);
             out[0] = 1;
-        } catch (...) {
-            out[0] = 0;
-        }
+        } catch (...) { out[0] = 0; }
         _exit(0);
     }
     rank[0] = nestedDissection(half[0], weights[0]);

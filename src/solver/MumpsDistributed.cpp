@@ -10,7 +10,9 @@
 
 namespace ma::mumps {
 
-int communicator(const SolverOptions& options) { return options.distributed ? mpi::fortranWorld() : mpi::fortranSelf(); }
+int communicator(const SolverOptions& options) {
+    return options.distributed ? mpi::fortranWorld() : mpi::fortranSelf();
+}
 
 void setInputFormat(DMUMPS_STRUC_C& id, const SolverOptions& options) {
     id.icntl[4] = 0;                             // ICNTL(5): assembled
@@ -51,9 +53,10 @@ void logProcesses(const SolverOptions& options, const DMUMPS_STRUC_C& id, double
     mpi::sum(peaks);
     std::string list;
     for (double p : peaks) list += fmt::format(" {:.0f}", p);
-    msg().infof("    MUMPS on {} processes: {} MB on the largest (INFOG(21)), {} MB in all (INFOG(22)); resident peak "
-                "per process (MB):{}",
-                mpi::size(), id.infog[20], id.infog[21], list);
+    msg().infof(
+        "    MUMPS on {} processes: {} MB on the largest (INFOG(21)), {} MB in all (INFOG(22)); resident peak "
+        "per process (MB):{}",
+        mpi::size(), id.infog[20], id.infog[21], list);
 }
 
 }  // namespace ma::mumps

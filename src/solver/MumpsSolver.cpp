@@ -13,14 +13,14 @@
 #include <vector>
 
 #include "core/Error.hpp"
-#include "core/Timing.hpp"
 #include "core/MemoryUsage.hpp"
-#include "core/Mpi.hpp"
 #include "core/Messages.hpp"
+#include "core/Mpi.hpp"
+#include "core/Timing.hpp"
 #include "solver/CoordinateOrdering.hpp"
+#include "solver/LinearSolverImpl.hpp"
 #include "solver/MetisOrdering.hpp"
 #include "solver/MumpsDistributed.hpp"
-#include "solver/LinearSolverImpl.hpp"
 #include "solver/SolverMessages.hpp"
 
 namespace ma {
@@ -75,9 +75,10 @@ std::string mumpsErrorText(int code, int detail) {
         case -7:
         case -13:
         case -22:
-            return fmt::format("MUMPS could not allocate memory (INFOG(1)={}, INFOG(2)={}): the system is too "
-                               "large for the available memory",
-                               code, detail);
+            return fmt::format(
+                "MUMPS could not allocate memory (INFOG(1)={}, INFOG(2)={}): the system is too "
+                "large for the available memory",
+                code, detail);
         case -6: return fmt::format("the matrix is structurally singular (INFOG(1)=-6, structural rank {})", detail);
         case -10: return "the matrix is numerically singular (INFOG(1)=-10)";
         case -16: return fmt::format("MUMPS: invalid system size N={} (INFOG(1)=-16)", detail);
@@ -128,10 +129,11 @@ protected:
         mumps::shareSolution(options_, rhs);
         // Estimates are for the matrix MUMPS factorised: the diagonal-scaled one when scaling is on.
         if (options_.conditionEstimate && !conditionLogged_)
-            msg().infof("    MUMPS condition number estimates ({} matrix): cond1 = {:.3e}, cond2 = {:.3e}, backward errors "
-                        "{:.2e} {:.2e}",
-                        options_.diagonalScaling ? "scaled" : "unscaled", id_.rinfog[9], id_.rinfog[10],
-                        id_.rinfog[6], id_.rinfog[7]);
+            msg().infof(
+                "    MUMPS condition number estimates ({} matrix): cond1 = {:.3e}, cond2 = {:.3e}, backward errors "
+                "{:.2e} {:.2e}",
+                options_.diagonalScaling ? "scaled" : "unscaled", id_.rinfog[9], id_.rinfog[10], id_.rinfog[6],
+                id_.rinfog[7]);
         conditionLogged_ = conditionLogged_ || options_.conditionEstimate;
     }
 
@@ -143,7 +145,8 @@ private:
     void upperTriangle(const CsrMatrix& A, std::span<const double> s) {
         triplets_ = {};
         auto diagonal = [&](int i) {
-            return std::lower_bound(A.cols.begin() + A.rowStart[i], A.cols.begin() + A.rowStart[i + 1], i) - A.cols.begin();
+            return std::lower_bound(A.cols.begin() + A.rowStart[i], A.cols.begin() + A.rowStart[i + 1], i) -
+                   A.cols.begin();
         };
         auto passes = [&](int i, long long k) { return mumps::passes(options_, i, A.cols[k], A.values[k]); };
         std::vector<long long> offset(size_t(A.rows) + 1, 0);
@@ -213,20 +216,22 @@ private:
         id_.icntl[6] = orderingCode(options_.renum, havePoints, ordering_);
         orderingNote_.clear();
         // On the host (rank 0) only, on the whole matrix's pattern (docs/mpi.md).
-        if (id_.icntl[6] == kUserOrdering) mpi::collectively([&] {
-            if (!mpi::isRoot()) return;
-            const CsrMatrix whole = options_.wholePattern ? options_.wholePattern() : CsrMatrix{};
-            const CsrMatrix& graph = options_.wholePattern ? whole : A;
-            const bool byPoints = ordering_ == "COORDINATES";
-            const FillReducingOrdering nd = byPoints ? coordinateNestedDissection(graph, rowPoints, options_.threads)
-                                                     : nestedDissectionOrdering(graph, options_.threads);
-            permIn_.resize(nd.pivotRank.size());
-            for (size_t i = 0; i < permIn_.size(); ++i) permIn_[i] = nd.pivotRank[i] + 1;
-            id_.perm_in = permIn_.data();
-            orderingNote_ = fmt::format("{} on the matrix graph ({} unknowns in {} vertices, {} edges) {:.3f} s",
-                                        byPoints ? "nested dissection by coordinate bisection" : "METIS_NodeND",
-                                        A.rows, nd.vertices, nd.graphEdges, nd.seconds);
-        });
+        if (id_.icntl[6] == kUserOrdering)
+            mpi::collectively([&] {
+                if (!mpi::isRoot()) return;
+                const CsrMatrix whole = options_.wholePattern ? options_.wholePattern() : CsrMatrix{};
+                const CsrMatrix& graph = options_.wholePattern ? whole : A;
+                const bool byPoints = ordering_ == "COORDINATES";
+                const FillReducingOrdering nd = byPoints
+                                                    ? coordinateNestedDissection(graph, rowPoints, options_.threads)
+                                                    : nestedDissectionOrdering(graph, options_.threads);
+                permIn_.resize(nd.pivotRank.size());
+                for (size_t i = 0; i < permIn_.size(); ++i) permIn_[i] = nd.pivotRank[i] + 1;
+                id_.perm_in = permIn_.data();
+                orderingNote_ = fmt::format("{} on the matrix graph ({} unknowns in {} vertices, {} edges) {:.3f} s",
+                                            byPoints ? "nested dissection by coordinate bisection" : "METIS_NodeND",
+                                            A.rows, nd.vertices, nd.graphEdges, nd.seconds);
+            });
         id_.n = A.rows;
         const auto nnz = static_cast<MUMPS_INT8>(triplets_.size);
         mumps::setEntries(id_, options_, nnz, triplets_.irn.get(), triplets_.jcn.get(), triplets_.a.get());
@@ -254,26 +259,29 @@ private:
                 const double estimate = mumpsCount(id_.info[7]), missing = mumpsCount(id_.info[1]);
                 int relaxed = std::max(2 * before, 50);
                 if (code == -9 && estimate > 0.0 && id_.info[1] != 0)
-                    relaxed = std::max(before + 20, int(std::ceil(100.0 * ((1.0 + before / 100.0) * estimate + missing) /
-                                                                  estimate - 100.0)) + 20);
+                    relaxed = std::max(
+                        before + 20,
+                        int(std::ceil(100.0 * ((1.0 + before / 100.0) * estimate + missing) / estimate - 100.0)) + 20);
                 id_.icntl[13] = relaxed;
-                msg().infof("    MUMPS workspace too small (INFOG(1)={}, INFO(2)={}): factorisation again (JOB=2, the "
-                            "analysis kept) with ICNTL(14)={} instead of {}",
-                            code, id_.info[1], relaxed, before);
+                msg().infof(
+                    "    MUMPS workspace too small (INFOG(1)={}, INFO(2)={}): factorisation again (JOB=2, the "
+                    "analysis kept) with ICNTL(14)={} instead of {}",
+                    code, id_.info[1], relaxed, before);
                 continue;
             }
             if (code == -10 || code == -6)
                 throw SingularSystemError(fmt::format("singular system: {}. Likely cause: {}.",
-                                                 mumpsErrorText(code, id_.infog[1]), options_.singularHint));
+                                                      mumpsErrorText(code, id_.infog[1]), options_.singularHint));
             if (code < 0) throw NumericalError(mumpsErrorText(code, id_.infog[1]));
             break;
         }
         factorisationSeconds_ = secondsSince(t0);
         if (options_.nprec >= 0 && id_.infog[27] > 0)
-            throw SingularSystemError(fmt::format(
-                "singular system: MUMPS found {} null pivot(s) (pivot below 1e-{} of the norm of the diagonal-scaled matrix, "
-                "SOLVEUR/NPREC={}). Likely cause: {}.",
-                id_.infog[27], options_.nprec, options_.nprec, options_.singularHint));
+            throw SingularSystemError(
+                fmt::format("singular system: MUMPS found {} null pivot(s) (pivot below 1e-{} of the norm of the "
+                            "diagonal-scaled matrix, "
+                            "SOLVEUR/NPREC={}). Likely cause: {}.",
+                            id_.infog[27], options_.nprec, options_.nprec, options_.singularHint));
     }
 
     void logFactorisation(const CsrMatrix& A, MatrixKind kind, double total, double analysisPeakMb,
@@ -282,26 +290,30 @@ private:
         const int usedOrdering = id_.infog[6];
         msg().infof("    MUMPS ({}): n = {}, non-zeros (upper triangle) = {}{}, ordering {} (asked {}){}",
                     id_.sym == 1 ? "SYM=1, positive definite" : "SYM=2, general symmetric", A.rows, entries_,
-                    options_.distributed ? fmt::format(" in distributed triplets from {} processes (ICNTL(18)=3)", mpi::size()) : "",
-                    usedOrdering == kUserOrdering ? ordering_ + " (PERM_IN)"
-                    : usedOrdering >= 0 && usedOrdering <= 7 ? orderings[usedOrdering] : "?",
-                    options_.renum,
-                    orderingNote_.empty() ? "" : ": " + orderingNote_);
-        msg().infof("    MUMPS analysis {:.3f} s: predicted flops {:.3e} (RINFOG(1)), factor entries {:.4g} (INFOG(20)), "
-                    "memory {} MB (INFOG(17))",
-                    analysisSeconds_, predictedFlops_, mumpsCount(id_.infog[19]), id_.infog[16]);
-        msg().infof("    MUMPS factorisation {:.3f} s: {:.3e} flops (RINFOG(3), {:.1f} GFLOP/s), factor entries = {}, "
-                    "peak memory {} MB (INFOG(22)); analysis + factorisation {:.3f} s",
-                    factorisationSeconds_, id_.rinfog[2], factorisationSeconds_ > 0 ? id_.rinfog[2] / factorisationSeconds_ / 1e9 : 0.0,
-                    static_cast<long long>(mumpsCount(id_.infog[28])), id_.infog[21], total);
-        msg().infof("    memory (resident, process): {:.0f} MB before the analysis, peak {:.0f} MB in the analysis, "
-                    "{:.0f} MB in the factorisation",
-                    residentBeforeMb_, analysisPeakMb, factorisation.peakMb());
+                    options_.distributed
+                        ? fmt::format(" in distributed triplets from {} processes (ICNTL(18)=3)", mpi::size())
+                        : "",
+                    usedOrdering == kUserOrdering            ? ordering_ + " (PERM_IN)"
+                    : usedOrdering >= 0 && usedOrdering <= 7 ? orderings[usedOrdering]
+                                                             : "?",
+                    options_.renum, orderingNote_.empty() ? "" : ": " + orderingNote_);
+        msg().infof(
+            "    MUMPS analysis {:.3f} s: predicted flops {:.3e} (RINFOG(1)), factor entries {:.4g} (INFOG(20)), "
+            "memory {} MB (INFOG(17))",
+            analysisSeconds_, predictedFlops_, mumpsCount(id_.infog[19]), id_.infog[16]);
+        msg().infof(
+            "    MUMPS factorisation {:.3f} s: {:.3e} flops (RINFOG(3), {:.1f} GFLOP/s), factor entries = {}, "
+            "peak memory {} MB (INFOG(22)); analysis + factorisation {:.3f} s",
+            factorisationSeconds_, id_.rinfog[2],
+            factorisationSeconds_ > 0 ? id_.rinfog[2] / factorisationSeconds_ / 1e9 : 0.0,
+            static_cast<long long>(mumpsCount(id_.infog[28])), id_.infog[21], total);
+        msg().infof(
+            "    memory (resident, process): {:.0f} MB before the analysis, peak {:.0f} MB in the analysis, "
+            "{:.0f} MB in the factorisation",
+            residentBeforeMb_, analysisPeakMb, factorisation.peakMb());
         if (id_.sym == 2 && id_.infog[11] > 0) {
-            if (kind == MatrixKind::SymmetricPositiveDefinite)
-                msg().alarm(FACTOR_10, id_.infog[11]);
-            else
-                msg().infof("    MUMPS: {} negative pivots (expected: one per Lagrange multiplier)", id_.infog[11]);
+            if (kind == MatrixKind::SymmetricPositiveDefinite) msg().alarm(FACTOR_10, id_.infog[11]);
+            else msg().infof("    MUMPS: {} negative pivots (expected: one per Lagrange multiplier)", id_.infog[11]);
         }
     }
 

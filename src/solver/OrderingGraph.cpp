@@ -10,8 +10,9 @@ Supervariables consecutiveIdenticalRows(const CsrMatrix& A) {
     s.of.resize(size_t(A.rows));
     for (int i = 0; i < A.rows; ++i) {
         const long long length = A.rowStart[i + 1] - A.rowStart[i];
-        const bool same = i > 0 && length == A.rowStart[i] - A.rowStart[i - 1] &&
-                          std::memcmp(&A.cols[A.rowStart[i]], &A.cols[A.rowStart[i - 1]], size_t(length) * sizeof(int)) == 0;
+        const bool same =
+            i > 0 && length == A.rowStart[i] - A.rowStart[i - 1] &&
+            std::memcmp(&A.cols[A.rowStart[i]], &A.cols[A.rowStart[i - 1]], size_t(length) * sizeof(int)) == 0;
         if (!same) s.size.push_back(0);
         s.of[i] = int(s.size.size()) - 1;
         ++s.size.back();

@@ -19,8 +19,8 @@ namespace {
 // ssnv511 cannot afford. miniaster only removes round-off of the interpolation (docs/xfem.md): a
 // point eps^2 h off an interface (interfaces eps h from node rows next to a junction) is not on it.
 constexpr double kPointSnap = 1e-14;
-constexpr double kMergeDistance = 1e-9;       // a zero this close (edge length) to a point of its edge merges
-constexpr double kVertexOnInterface = 1e-9;   // zero closer than this (relative) to a vertex
+constexpr double kMergeDistance = 1e-9;      // a zero this close (edge length) to a point of its edge merges
+constexpr double kVertexOnInterface = 1e-9;  // zero closer than this (relative) to a vertex
 // Round-off of reference coordinates (magnitude <= 1), with a margin: the determinant of a piece
 // whose measure is below it times its cofactors is numerically zero.
 constexpr double kMeasureRoundOff = 16 * 2.2e-16;
@@ -222,7 +222,8 @@ private:
     // coordinates times the cofactors (edge lengths in 2D, edge cross products in 3D).
     bool flat(const Piece& piece) const {
         std::array<std::array<double, 3>, 3> e{};
-        for (size_t a = 1; a < piece.size(); ++a) e[a - 1] = difference(cut_.points[piece[a]].ref, cut_.points[piece[0]].ref);
+        for (size_t a = 1; a < piece.size(); ++a)
+            e[a - 1] = difference(cut_.points[piece[a]].ref, cut_.points[piece[0]].ref);
         double det = 0.0, cofactors = 1.0;
         if (cut_.dim == 1) det = norm(e[0]);
         if (cut_.dim == 2) det = 2.0 * std::abs(measure(piece)), cofactors = norm(e[0]) + norm(e[1]);
@@ -346,8 +347,8 @@ private:
     std::span<const int> nodes_;
     bool simplexParent_ = true;
     double lref_ = 1.0;
-    std::map<std::pair<int, int>, int> edgePoints_;                // zero of the current crack per segment
-    std::map<std::pair<int, int>, std::vector<int>> onSegment_;   // points created on a segment, any crack
+    std::map<std::pair<int, int>, int> edgePoints_;              // zero of the current crack per segment
+    std::map<std::pair<int, int>, std::vector<int>> onSegment_;  // points created on a segment, any crack
 };
 
 }  // namespace
@@ -359,8 +360,8 @@ double CellCut::referenceMeasure(int s) const {
     return std::abs(simplexMeasure(dim, std::span<const std::array<double, 3>>(v.data(), vertexCount())));
 }
 
-CellCut cutCell(const Mesh& mesh, int cell, const std::vector<const Crack*>& local,
-                const std::vector<int>& localIndex, bool skin, const std::vector<int>& outsideSign) {
+CellCut cutCell(const Mesh& mesh, int cell, const std::vector<const Crack*>& local, const std::vector<int>& localIndex,
+                bool skin, const std::vector<int>& outsideSign) {
     CellCut cut;
     cut.cell = cell;
     cut.type = mesh.cellTypes[cell];

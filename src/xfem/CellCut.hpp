@@ -19,7 +19,7 @@ struct CutPoint {
 };
 
 struct SubCell {
-    std::array<int, 4> vertices{};    // CutPoint indices (dimension + 1 used), positive orientation
+    std::array<int, 4> vertices{};       // CutPoint indices (dimension + 1 used), positive orientation
     std::vector<signed char> heaviside;  // per local crack: -1, +1, or 0 (forbidden side of a branch)
 };
 
@@ -32,9 +32,9 @@ struct CellCut {
     // Cracks whose level set is carried by the points: the local ones first, then the masters of
     // local branches that are not local themselves.
     std::vector<const Crack*> lsnCracks;
-    std::vector<CutPoint> points;     // parent nodes first (in local order), then new points
+    std::vector<CutPoint> points;  // parent nodes first (in local order), then new points
     std::vector<SubCell> subcells;
-    int droppedDegenerate = 0;        // zero-measure pieces removed while cutting
+    int droppedDegenerate = 0;  // zero-measure pieces removed while cutting
 
     int vertexCount() const { return dim + 1; }
     int parentNodeCount() const { return nodeCount(type); }
@@ -45,7 +45,7 @@ struct CellCut {
 // Cuts `cell` by the cracks `local` (model indices `localIndex`, same order). `outsideSign` is used
 // for skin sub-cells lying on an interface (sign of the adjacent volume's level set, per local
 // crack; empty for volume cells).
-CellCut cutCell(const Mesh& mesh, int cell, const std::vector<const Crack*>& local,
-                const std::vector<int>& localIndex, bool skin, const std::vector<int>& outsideSign);
+CellCut cutCell(const Mesh& mesh, int cell, const std::vector<const Crack*>& local, const std::vector<int>& localIndex,
+                bool skin, const std::vector<int>& outsideSign);
 
 }  // namespace ma::xfem

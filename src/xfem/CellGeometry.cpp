@@ -12,8 +12,8 @@ constexpr std::array<Edge, 1> kSeg2{{{0, 1}}};
 constexpr std::array<Edge, 3> kTria3{{{0, 1}, {1, 2}, {2, 0}}};
 constexpr std::array<Edge, 4> kQuad4{{{0, 1}, {1, 2}, {2, 3}, {3, 0}}};
 constexpr std::array<Edge, 6> kTetra4{{{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}}};
-constexpr std::array<Edge, 12> kHexa8{{{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 5},
-                                       {2, 6}, {3, 7}, {4, 5}, {5, 6}, {6, 7}, {7, 4}}};
+constexpr std::array<Edge, 12> kHexa8{
+    {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 5}, {2, 6}, {3, 7}, {4, 5}, {5, 6}, {6, 7}, {7, 4}}};
 
 [[noreturn]] void unsupported(CellType type) {
     throw NotImplemented("X-FEM elements are not available on " + cellTypeName(type) +

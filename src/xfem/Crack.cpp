@@ -40,12 +40,14 @@ std::vector<std::array<double, 3>> nodalGradient(const Mesh& mesh, const std::ve
             shapeDerivatives(type, ref[a], dN);
             auto d = [&](int b, int j) { return dN[3 * b + j]; };
             double J[3][3] = {}, inv[3][3] = {};  // J[i][j] = dx_i / dxi_j
-            jacobian(dim, dim, int(nodes.size()), [&](int b) -> const Vec3& { return mesh.coords[nodes[b]]; }, d, J);
+            jacobian(
+                dim, dim, int(nodes.size()), [&](int b) -> const Vec3& { return mesh.coords[nodes[b]]; }, d, J);
             if (invertJacobian(dim, J, inv) == 0.0) continue;
             Vec3 g{}, gx{};  // dLSN / dxi_j, dLSN / dx_j
             for (size_t b = 0; b < nodes.size(); ++b)
                 for (int j = 0; j < dim; ++j) g[j] += lsn[nodes[b]] * dN[3 * b + j];
-            physicalGradient(dim, inv, [&](int j) { return g[j]; }, gx);
+            physicalGradient(
+                dim, inv, [&](int j) { return g[j]; }, gx);
             for (int j = 0; j < 3; ++j) grad[nodes[a]][j] += gx[j];
             ++count[nodes[a]];
         }
@@ -81,28 +83,25 @@ std::vector<JunctionMaster> junctionMasters(const Mesh& mesh, const JunctionInpu
         if (inherited) continue;
         const double value = master->lsn[closest];
         if (value == 0.0)
-            throw UserError(fmt::format(
-                "{}/POINT: the mesh node {} closest to POINT=({}, {}, {}) lies on the interface of the "
-                "master crack {} (LSN = 0); POINT must designate one side of the master interface",
-                in.keywordPath, mesh.nodeNames[closest], in.point[0], in.point[1], in.point[2], master->name));
+            throw UserError(
+                fmt::format("{}/POINT: the mesh node {} closest to POINT=({}, {}, {}) lies on the interface of the "
+                            "master crack {} (LSN = 0); POINT must designate one side of the master interface",
+                            in.keywordPath, mesh.nodeNames[closest], in.point[0], in.point[1], in.point[2],
+                            master->name));
         if (!contains(master.get())) out.push_back({master, value > 0 ? -1.0 : 1.0, true});
         for (const auto& chained : master->masters)
             if (!contains(chained.crack.get())) out.push_back({chained.crack, chained.coef, false});
     }
-    if (out.size() > 10)
-        throw UserError(in.keywordPath + ": a branch interface may depend on at most 10 masters");
+    if (out.size() > 10) throw UserError(in.keywordPath + ": a branch interface may depend on at most 10 masters");
     return out;
 }
 
 }  // namespace
 
-int Crack::enrichedNodeCount() const {
-    return static_cast<int>(std::count(nodeStatus.begin(), nodeStatus.end(), 1));
-}
+int Crack::enrichedNodeCount() const { return static_cast<int>(std::count(nodeStatus.begin(), nodeStatus.end(), 1)); }
 
 bool Crack::hasMaster(const Crack* crack) const {
-    return std::any_of(masters.begin(), masters.end(),
-                       [&](const JunctionMaster& m) { return m.crack.get() == crack; });
+    return std::any_of(masters.begin(), masters.end(), [&](const JunctionMaster& m) { return m.crack.get() == crack; });
 }
 
 int snapLevelSet(const Mesh& mesh, std::vector<double>& lsn) {

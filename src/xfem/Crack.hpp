@@ -18,8 +18,8 @@ class Crack;
 // coef * LSN_master < 0 (the side of POINT).
 struct JunctionMaster {
     std::shared_ptr<const Crack> crack;
-    double coef = 0.0;      // -1 or +1 (xfem_spec §2.1)
-    bool declared = true;   // listed under JONCTION/FISSURE (false: inherited through a chain)
+    double coef = 0.0;     // -1 or +1 (xfem_spec §2.1)
+    bool declared = true;  // listed under JONCTION/FISSURE (false: inherited through a chain)
 };
 
 class Crack : public Concept {
@@ -27,13 +27,13 @@ public:
     std::string typeName() const override { return "fiss_xfem"; }
 
     std::shared_ptr<const Mesh> mesh;
-    std::vector<double> lsn;                       // normal level set at every mesh node
-    std::vector<std::array<double, 3>> lsnGradient; // nodal average of the cell gradients (§1.3), nodes of cut cells
-    std::vector<int> cutCells;                     // MAFIS (§1.4), increasing
-    std::vector<unsigned char> nodeStatus;         // STNO: 1 = Heaviside enriched (§1.5, §2.4)
-    std::vector<int> heavisideCells;               // MAILFISS.HEAV (§1.6), increasing
-    std::vector<JunctionMaster> masters;           // JONFISS / JONCOEF (§2.2), chain included
-    int adjustedLevelSets = 0;                     // nodal values moved onto the interface (§1.2)
+    std::vector<double> lsn;                         // normal level set at every mesh node
+    std::vector<std::array<double, 3>> lsnGradient;  // nodal average of the cell gradients (§1.3), nodes of cut cells
+    std::vector<int> cutCells;                       // MAFIS (§1.4), increasing
+    std::vector<unsigned char> nodeStatus;           // STNO: 1 = Heaviside enriched (§1.5, §2.4)
+    std::vector<int> heavisideCells;                 // MAILFISS.HEAV (§1.6), increasing
+    std::vector<JunctionMaster> masters;             // JONFISS / JONCOEF (§2.2), chain included
+    int adjustedLevelSets = 0;                       // nodal values moved onto the interface (§1.2)
 
     int enrichedNodeCount() const;
     // True when `crack` is a master (directly or through a chain) of this crack.

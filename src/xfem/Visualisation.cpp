@@ -89,7 +89,8 @@ double contactPressure(const XfemModel& xm, const MaterialField& material, Model
     const Crack& c = *cut.lsnCracks[crack];
     for (int a = 0; a < n; ++a) {
         double g[3] = {};
-        physicalGradient(dim, inv, [&](int k) { return dN[3 * a + k]; }, g);
+        physicalGradient(
+            dim, inv, [&](int k) { return dN[3 * a + k]; }, g);
         for (int j = 0; j < dim; ++j) normal[j] += c.lsn[nodes[a]] * g[j];
         for (int k = 0; k <= xm.activeSlots(nodes[a]); ++k) {
             const double psi = k == 0 ? 1.0 : xm.psi(nodes[a], k, cut, vn.subcell);
@@ -221,8 +222,7 @@ Visualisation buildVisualisation(const Model& model, const XfemModel& xm, const 
                 }
                 const CutPoint& p = cut->points[pid];
                 bool onCrack = p.parentNode < 0;
-                for (size_t j = 0; j < cut->cracks.size() && !onCrack; ++j)
-                    onCrack = namingLevelSet(*cut, p, j) == 0.0;
+                for (size_t j = 0; j < cut->cracks.size() && !onCrack; ++j) onCrack = namingLevelSet(*cut, p, j) == 0.0;
                 const std::string& prefix = onCrack ? lipPrefix(*cut, sub, p, names) : names.nodeX;
                 const auto x = mapToPhysical(cut->type, xs, p.ref);
                 std::string digits = base36(++nodeCounter);
@@ -256,10 +256,10 @@ namespace {
 
 // DEPL on the visualisation mesh: each new node takes the displacement of its side of the
 // interface in its parent cell (all active Heaviside slots); contact models add LAGS_C.
-std::shared_ptr<NodalField> visualisationDisplacement(const XfemModel* xm, const Model& model, const Visualisation& visu,
-                                                      const std::shared_ptr<Mesh>& vmesh, const NodalField* depl,
-                                                      const std::vector<std::string>& comps, const Result& input,
-                                                      bool withContact) {
+std::shared_ptr<NodalField> visualisationDisplacement(const XfemModel* xm, const Model& model,
+                                                      const Visualisation& visu, const std::shared_ptr<Mesh>& vmesh,
+                                                      const NodalField* depl, const std::vector<std::string>& comps,
+                                                      const Result& input, bool withContact) {
     const Mesh& mesh = xm->mesh();
     const int dim = model.dim;
     std::array<double, 8> N{};
@@ -270,8 +270,7 @@ std::shared_ptr<NodalField> visualisationDisplacement(const XfemModel* xm, const
     std::vector<int> column(maxSlot * 3, -1);
     for (int k = 0; k < maxSlot; ++k)
         for (int j = 0; j < dim; ++j)
-            column[k * 3 + j] =
-                depl->componentIndex(k == 0 ? comps[j] : fmt::format("H{}{}", k, "XYZ"[j]));
+            column[k * 3 + j] = depl->componentIndex(k == 0 ? comps[j] : fmt::format("H{}{}", k, "XYZ"[j]));
     auto value = [&](int node, int k, int j) {
         const int col = k < maxSlot ? column[k * 3 + j] : -1;
         return col >= 0 && depl->has(node, col) ? depl->at(node, col) : 0.0;
@@ -379,25 +378,25 @@ std::shared_ptr<Result> visualisationResult(const Result& input, const std::shar
     if (!input.model) throw UserError("RESULTAT " + input.name + " has no model");
     const Model& model = *input.model;
     const auto* xm = dynamic_cast<const XfemModel*>(model.enrichment.get());
-    if (!xm)
-        throw UserError("RESULTAT " + input.name + " was not computed on an X-FEM model (MODI_MODELE_XFEM)");
+    if (!xm) throw UserError("RESULTAT " + input.name + " was not computed on an X-FEM model (MODI_MODELE_XFEM)");
     if (modelVisu->enrichment)
-        throw UserError("MODELE_VISU must be a classical model built on the POST_MAIL_XFEM mesh, not an X-FEM "
-                        "model (code_aster XFEM2_30)");
+        throw UserError(
+            "MODELE_VISU must be a classical model built on the POST_MAIL_XFEM mesh, not an X-FEM "
+            "model (code_aster XFEM2_30)");
     const Visualisation visu = buildVisualisation(model, *xm);
     const auto& vmesh = modelVisu->mesh;
     if (!vmesh || vmesh->nodeCount() != visu.mesh->nodeCount() || vmesh->cellCount() != visu.mesh->cellCount())
-        throw UserError(fmt::format("MODELE_VISU {} is not built on the POST_MAIL_XFEM mesh of the model {} of "
-                                    "RESULTAT {} ({} nodes and {} cells expected)",
-                                    modelVisu->name, model.name, input.name, visu.mesh->nodeCount(),
-                                    visu.mesh->cellCount()));
+        throw UserError(
+            fmt::format("MODELE_VISU {} is not built on the POST_MAIL_XFEM mesh of the model {} of "
+                        "RESULTAT {} ({} nodes and {} cells expected)",
+                        modelVisu->name, model.name, input.name, visu.mesh->nodeCount(), visu.mesh->cellCount()));
     const int dim = model.dim;
     auto out = std::make_shared<Result>(input.typeName());
     out->mesh = vmesh;
     out->model = modelVisu;
 
-    std::vector<std::string> comps = dim == 3 ? std::vector<std::string>{"DX", "DY", "DZ"}
-                                              : std::vector<std::string>{"DX", "DY"};
+    std::vector<std::string> comps =
+        dim == 3 ? std::vector<std::string>{"DX", "DY", "DZ"} : std::vector<std::string>{"DX", "DY"};
     // Contact models: the contact pressure LAGS_C (<= 0 in compression, code_aster's sign) at the
     // interface nodes, after the displacement components (docs/contact.md).
     const bool withContact = xm->contact() == XfemContact::Standard && input.material;
@@ -407,8 +406,8 @@ std::shared_ptr<Result> visualisationResult(const Result& input, const std::shar
         s.order = step.order;
         s.inst = step.inst;
         if (auto depl = step.nodal("DEPL"))
-            s.nodalFields.emplace_back("DEPL", visualisationDisplacement(xm, model, visu, vmesh, depl.get(), comps, input,
-                                                                         withContact));
+            s.nodalFields.emplace_back("DEPL", visualisationDisplacement(xm, model, visu, vmesh, depl.get(), comps,
+                                                                         input, withContact));
         if (auto sief = step.gauss("SIEF_ELGA"))
             s.gaussFields.emplace_back("SIEF_ELGA", visualisationStress(xm, visu, vmesh, *modelVisu, sief.get()));
         out->steps.push_back(std::move(s));

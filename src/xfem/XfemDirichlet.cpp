@@ -40,8 +40,7 @@ public:
         std::vector<double> values(points_.size(), request_.value);
         if (request_.function && !points_.empty()) values = evaluateAtPoints(*request_.function, points_, inst);
         for (const auto& e : emit_) e(values);
-        if (bothLipsAlarm_)
-            msg().alarm(XFEM_22, request_.path, comp_);
+        if (bothLipsAlarm_) msg().alarm(XFEM_22, request_.path, comp_);
         return std::move(out_);
     }
 
@@ -65,7 +64,8 @@ private:
         // Prescribed nodes connected to n through the X-FEM cells around it.
         for (int cell : xm_.cellsOfNode(n))
             for (int w : mesh_.cellNodes(cell))
-                if (w != n && inGroup_[w] && std::find(e.neighbours.begin(), e.neighbours.end(), w) == e.neighbours.end())
+                if (w != n && inGroup_[w] &&
+                    std::find(e.neighbours.begin(), e.neighbours.end(), w) == e.neighbours.end())
                     e.neighbours.push_back(w);
         if (!request_.function) return constantValue(e);
         const int other = cutEdgeInGroup(n, e.crack.lsn);
@@ -143,14 +143,15 @@ private:
         const size_t fPlus = at(along(mesh_.coords[vm], mesh_.coords[vp], std::min(1.0, t + kSideOffset)));
         const size_t fMinus = at(along(mesh_.coords[vm], mesh_.coords[vp], std::max(0.0, t - kSideOffset)));
         const bool minusNode = n == vm;
-        emit_.push_back([this, n, h = e.h, s = e.s, pn, pm, pp, fPlus, fMinus, Nm, Np, minusNode](const std::vector<double>& f) {
-            // (f+ - Np f(V+) - Nm f(V-)) / (s Nm) written without the cancellation of
-            // f(V+) - Np f(V+) when the crossing is close to V- (Nm small), using Nm + Np = 1.
-            const double b = minusNode ? ((f[fPlus] - f[pp]) + Nm * (f[pp] - f[pm])) / (s * Nm)
-                                       : ((f[fMinus] - f[pm]) + Np * (f[pm] - f[pp])) / (s * Np);
-            out_.push_back({{{n, h, 1.0}}, b});
-            out_.push_back({{{n, comp_, 1.0}}, f[pn]});
-        });
+        emit_.push_back(
+            [this, n, h = e.h, s = e.s, pn, pm, pp, fPlus, fMinus, Nm, Np, minusNode](const std::vector<double>& f) {
+                // (f+ - Np f(V+) - Nm f(V-)) / (s Nm) written without the cancellation of
+                // f(V+) - Np f(V+) when the crossing is close to V- (Nm small), using Nm + Np = 1.
+                const double b = minusNode ? ((f[fPlus] - f[pp]) + Nm * (f[pp] - f[pm])) / (s * Nm)
+                                           : ((f[fMinus] - f[pm]) + Np * (f[pm] - f[pp])) / (s * Np);
+                out_.push_back({{{n, h, 1.0}}, b});
+                out_.push_back({{{n, comp_, 1.0}}, f[pn]});
+            });
     }
 
     // Node on the interface: f just on each side, towards prescribed neighbours.

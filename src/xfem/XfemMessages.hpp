@@ -9,8 +9,7 @@ namespace ma {
 // DEFI_FISS_XFEM: the keyword path; the count of values moved.
 inline constexpr Message<std::string> XFEM_25{"XFEM_25", "{} is ignored with TYPE_DISCONTINUITE='INTERFACE'"};
 inline constexpr Message<int> XFEM_63{
-    "XFEM_63",
-    "{} nodal level-set values were moved onto the interface (their zero lay within 1e-6 of an edge end)"};
+    "XFEM_63", "{} nodal level-set values were moved onto the interface (their zero lay within 1e-6 of an edge end)"};
 inline constexpr Message<> XFEM_ENRI{
     "XFEM_ENRI",
     "the interface enriches no node (it lies on the boundary of the structure or between the cells without "

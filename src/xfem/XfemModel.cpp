@@ -35,12 +35,15 @@ double physicalGradients(const Mesh& mesh, int cell, const std::array<double, 3>
     std::array<double, 24> dN{};
     shapeDerivatives(type, xi, dN);
     double J[3][3] = {}, inv[3][3] = {};
-    jacobian(d, d, n, [&](int a) -> const Vec3& { return mesh.coords[nodes[a]]; },
-             [&](int a, int j) { return dN[3 * a + j]; }, J);
+    jacobian(
+        d, d, n, [&](int a) -> const Vec3& { return mesh.coords[nodes[a]]; },
+        [&](int a, int j) { return dN[3 * a + j]; }, J);
     grad.assign(3 * n, 0.0);
     const double det = invertJacobian(d, J, inv);
     if (det == 0.0) return 0.0;
-    for (int a = 0; a < n; ++a) physicalGradient(d, inv, [&](int j) { return dN[3 * a + j]; }, &grad[3 * a]);
+    for (int a = 0; a < n; ++a)
+        physicalGradient(
+            d, inv, [&](int j) { return dN[3 * a + j]; }, &grad[3 * a]);
     return std::abs(det);
 }
 
@@ -61,7 +64,8 @@ XfemModel::XfemModel(const Model& model, std::vector<std::shared_ptr<const Crack
       subcellDegree_(subcellDegree) {
     if (!mesh_) throw UserError("MODELE_IN has no mesh");
     if (subcellDegree_ < 0 || subcellDegree_ > kMaxSubcellDegree)
-        throw UserError(fmt::format("sub-cell quadrature degree {} is outside 1..{}", subcellDegree_, kMaxSubcellDegree));
+        throw UserError(
+            fmt::format("sub-cell quadrature degree {} is outside 1..{}", subcellDegree_, kMaxSubcellDegree));
     dim_ = model.dim;
     if (cracks_.empty()) throw UserError("FISSURE: at least one crack is needed");
     for (size_t i = 0; i < cracks_.size(); ++i) {
@@ -70,20 +74,20 @@ XfemModel::XfemModel(const Model& model, std::vector<std::shared_ptr<const Crack
             throw UserError(fmt::format("FISSURE: crack {} is defined on mesh {}, the model on mesh {}", c.name,
                                         c.mesh ? c.mesh->name : "?", mesh_->name));
         for (size_t j = 0; j < i; ++j)
-            if (cracks_[j] == cracks_[i])
-                throw UserError(fmt::format("FISSURE: crack {} is listed twice", c.name));
+            if (cracks_[j] == cracks_[i]) throw UserError(fmt::format("FISSURE: crack {} is listed twice", c.name));
         for (const auto& m : c.masters) {
-            auto it = std::find_if(cracks_.begin(), cracks_.end(),
-                                   [&](const auto& x) { return x.get() == m.crack.get(); });
+            auto it =
+                std::find_if(cracks_.begin(), cracks_.end(), [&](const auto& x) { return x.get() == m.crack.get(); });
             if (it == cracks_.end())
-                throw UserError(fmt::format("FISSURE: crack {} is joined (JONCTION) to crack {}, which is not in "
-                                            "the list; add {} before {}",
-                                            c.name, m.crack->name, m.crack->name, c.name));
+                throw UserError(
+                    fmt::format("FISSURE: crack {} is joined (JONCTION) to crack {}, which is not in "
+                                "the list; add {} before {}",
+                                c.name, m.crack->name, m.crack->name, c.name));
             if (static_cast<size_t>(it - cracks_.begin()) > i)
-                throw UserError(fmt::format(
-                    "FISSURE: crack {} is joined (JONCTION) to crack {}, which must be listed before it "
-                    "(code_aster XFEM_46: the master interface comes first)",
-                    c.name, m.crack->name));
+                throw UserError(
+                    fmt::format("FISSURE: crack {} is joined (JONCTION) to crack {}, which must be listed before it "
+                                "(code_aster XFEM_46: the master interface comes first)",
+                                c.name, m.crack->name));
         }
     }
     buildCells(model);
@@ -243,10 +247,10 @@ void XfemModel::buildNodes() {
                 smallestFraction_ = std::min(smallestFraction_, fraction);
             }
             if (e.domainsBeforeGuard > 4)
-                throw UserError(fmt::format(
-                    "node {} is connected to {} regions cut off by the interfaces; at most 4 Heaviside "
-                    "enrichments per node are possible (code_aster XFEM_40)",
-                    mesh.nodeNames[n], e.domainsBeforeGuard));
+                throw UserError(
+                    fmt::format("node {} is connected to {} regions cut off by the interfaces; at most 4 Heaviside "
+                                "enrichments per node are possible (code_aster XFEM_40)",
+                                mesh.nodeNames[n], e.domainsBeforeGuard));
             const bool mono = e.activeCracks.size() == 1 && e.slotDomain.size() == 1 && e.own[0] != 0 &&
                               e.slotDomain[0][0] == -e.own[0];
             for (const auto& d : e.slotDomain) e.slotValue.push_back(mono ? 2.0 * d[0] : 2.0);
@@ -290,7 +294,9 @@ int XfemModel::nodeSlots(int node) const {
     return 1 + (e ? e->carried : 0);
 }
 
-bool XfemModel::isEnriched(int cell) const { return cell >= 0 && cell < int(cellIndex_.size()) && cellIndex_[cell] >= 0; }
+bool XfemModel::isEnriched(int cell) const {
+    return cell >= 0 && cell < int(cellIndex_.size()) && cellIndex_[cell] >= 0;
+}
 
 const CellCut* XfemModel::cut(int cell) const { return isEnriched(cell) ? &cuts_[cellIndex_[cell]] : nullptr; }
 

@@ -30,14 +30,14 @@ enum class XfemContact { None, Standard };  // CONTACT='SANS' / 'STANDARD' (lega
 
 // Enrichment state of one node that at least one X-FEM cell contains.
 struct NodeEnrichment {
-    std::vector<int> activeCracks;              // model crack indices with status 1, model order
-    std::vector<signed char> own;               // own domain digits (one per active crack)
+    std::vector<int> activeCracks;                     // model crack indices with status 1, model order
+    std::vector<signed char> own;                      // own domain digits (one per active crack)
     std::vector<std::vector<signed char>> slotDomain;  // domain of each active slot (k = 1..)
-    std::vector<double> slotValue;              // psi value of each active slot in its domain
-    std::vector<double> slotFraction;           // retained support fraction (conditioning, §3.10)
-    int carried = 0;                            // Heaviside slots the node carries (active + inactive)
-    int domainsBeforeGuard = 0;                 // other domains found in the support
-    bool ownMissing = false;                    // own domain absent from the support (first one used)
+    std::vector<double> slotValue;                     // psi value of each active slot in its domain
+    std::vector<double> slotFraction;                  // retained support fraction (conditioning, §3.10)
+    int carried = 0;                                   // Heaviside slots the node carries (active + inactive)
+    int domainsBeforeGuard = 0;                        // other domains found in the support
+    bool ownMissing = false;                           // own domain absent from the support (first one used)
 };
 
 class XfemModel : public Enrichment {
@@ -121,10 +121,10 @@ private:
     std::vector<CellCut> cuts_;
     std::vector<int> xfemCells_;
     std::vector<int> heavisideCount_;  // per cuts_ entry
-    std::vector<int> nodeIndex_;   // node -> index in nodes_ or -1
+    std::vector<int> nodeIndex_;       // node -> index in nodes_ or -1
     std::vector<NodeEnrichment> nodes_;
     std::vector<int> nodeCellOffsets_, nodeCells_;  // node -> X-FEM cells (CSR)
-    std::vector<int> skinVolume_;  // per cuts_ entry: adjacent volume cell (skin only)
+    std::vector<int> skinVolume_;                   // per cuts_ entry: adjacent volume cell (skin only)
     double smallestFraction_ = 1.0;
     int droppedSlots_ = 0;
 };

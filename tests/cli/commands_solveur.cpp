@@ -42,9 +42,9 @@ std::string rigid(const std::string& solveur) {
 
 struct Solved {
     std::string log;
-    double l2 = -1.0;       // relative L2 error of the rigid answer (TOTAL row)
-    int refinements = -1;   // steps reported by the solve line (0 when none)
-    bool scaled = false;    // the solver's scaling line is present
+    double l2 = -1.0;      // relative L2 error of the rigid answer (TOTAL row)
+    int refinements = -1;  // steps reported by the solve line (0 when none)
+    bool scaled = false;   // the solver's scaling line is present
 };
 
 Solved solve(const std::string& solveur) {

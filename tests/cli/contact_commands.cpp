@@ -17,9 +17,7 @@ namespace {
 
 const std::string kMesh = std::string("--mesh '") + MINIASTER_SHARED_DIR + "/astest/ssnv511a.mmed'";
 
-std::string scene(const std::string& contact) {
-    return ssnv511Preamble() + contact;
-}
+std::string scene(const std::string& contact) { return ssnv511Preamble() + contact; }
 
 const std::string kXfemContact = "MX = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(F1, F2, F3), CONTACT='OUI')\n";
 
@@ -51,8 +49,8 @@ TEST(ContactCommands, ModelWithoutContactIsRefused) {
     EXPECT_NE(r.output.find("was made without contact; use MODI_MODELE_XFEM(..., CONTACT='STANDARD')"),
               std::string::npos)
         << r.output;
-    const auto c = runComm(scene("CT = DEFI_CONTACT(MODELE=MO, FORMULATION='XFEM', ZONE=_F(FISS_MAIT=F1))\nFIN()\n"),
-                           kMesh);
+    const auto c =
+        runComm(scene("CT = DEFI_CONTACT(MODELE=MO, FORMULATION='XFEM', ZONE=_F(FISS_MAIT=F1))\nFIN()\n"), kMesh);
     EXPECT_EQ(c.status, 1);
     EXPECT_NE(c.output.find("is not an X-FEM model"), std::string::npos) << c.output;
 }
@@ -63,9 +61,10 @@ TEST(ContactCommands, OtherFormulationsAndFrictionAreNotSupported) {
                            kMesh);
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.output.find("not supported by miniaster"), std::string::npos) << r.output;
-    const auto f = runComm(scene(kXfemContact + "CT = DEFI_CONTACT(MODELE=MX, FORMULATION='XFEM', FROTTEMENT='COULOMB', "
-                                                "ZONE=_F(FISS_MAIT=F1))\nFIN()\n"),
-                           kMesh);
+    const auto f =
+        runComm(scene(kXfemContact + "CT = DEFI_CONTACT(MODELE=MX, FORMULATION='XFEM', FROTTEMENT='COULOMB', "
+                                     "ZONE=_F(FISS_MAIT=F1))\nFIN()\n"),
+                kMesh);
     EXPECT_EQ(f.status, 1);
     EXPECT_NE(f.output.find("not supported by miniaster"), std::string::npos) << f.output;
 }
@@ -77,8 +76,11 @@ TEST(ContactCommands, PulledApartReleasesEveryPointAndLogsTheLoop) {
     EXPECT_NE(r.output.find("ELIM_ARETE"), std::string::npos);
     EXPECT_NE(r.output.find("ZONE[1]/ALGO_LAGR"), std::string::npos);
     // INTEGRATION='NOEUD': one point at each end of the 22 facets.
-    EXPECT_NE(r.output.find("contact iteration 1: 44 status change(s) (0 activated, 44 released), 0 active"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("contact iteration 2: 0 status change(s) (0 activated, 0 released), 0 active"), std::string::npos);
+    EXPECT_NE(r.output.find("contact iteration 1: 44 status change(s) (0 activated, 44 released), 0 active"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("contact iteration 2: 0 status change(s) (0 activated, 0 released), 0 active"),
+              std::string::npos);
 }
 
 TEST(ContactCommands, IterContMaxiReachedIsAnError) {
@@ -107,7 +109,8 @@ TEST(ContactCommands, AContactLoopThatCannotConvergeNamesThePointsThatKeepChangi
                             "change(s) at the last one, 510 active points"),
               std::string::npos)
         << r.output;
-    EXPECT_NE(r.output.find("Points whose status changed at the last update:\n  FISS1 point at ("), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("Points whose status changed at the last update:\n  FISS1 point at ("), std::string::npos)
+        << r.output;
     EXPECT_NE(r.output.find("facet in cell M"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("1 status change(s), now inactive, gap "), std::string::npos) << r.output;
 }
@@ -117,18 +120,19 @@ namespace {
 // The pressed scene of the 2013 syntax: the contact CT given as the load CHC
 // (AFFE_CHAR_MECA(LIAISON_XFEM='OUI', CONTACT_XFEM=CT)); `solve` completes the STAT_NON_LINE call.
 std::string legacy(const std::string& extra, const std::string& solve) {
-    return scene("MX = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(F1, F2, F3), CONTACT='P1P1')\n"
-                 "CT = DEFI_CONTACT(MODELE=MX, FORMULATION='XFEM', "
-                 "ZONE=[_F(FISS_MAIT=F, CONTACT_INIT='OUI', INTEGRATION='NOEUD') for F in (F1, F2, F3)])\n"
-                 "MAT = DEFI_MATERIAU(ELAS=_F(E=1.0e8, NU=0.3))\n"
-                 "CM = AFFE_MATERIAU(MAILLAGE=MA, AFFE=_F(TOUT='OUI', MATER=MAT))\n"
-                 "CH = AFFE_CHAR_MECA(MODELE=MX, DDL_IMPO=(_F(GROUP_MA='LG', DX=0., H1X=0.), "
-                 "_F(GROUP_MA='LB', DY=0., H1Y=0.), _F(GROUP_MA='LD', DX=-0.01, H1X=0.), "
-                 "_F(GROUP_MA='LH', DY=-0.01, H1Y=0.)))\n"
-                 "CHC = AFFE_CHAR_MECA(MODELE=MX, LIAISON_XFEM='OUI', CONTACT_XFEM=CT)\n"
-                 "LI = DEFI_LIST_REEL(DEBUT=0., INTERVALLE=_F(JUSQU_A=1., NOMBRE=1))\n" +
-                 extra + "R = STAT_NON_LINE(MODELE=MX, CHAM_MATER=CM, COMP_ELAS=_F(RELATION='ELAS'), " + solve +
-                 "INCREMENT=_F(LIST_INST=LI))\nFIN()\n");
+    return scene(
+        "MX = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(F1, F2, F3), CONTACT='P1P1')\n"
+        "CT = DEFI_CONTACT(MODELE=MX, FORMULATION='XFEM', "
+        "ZONE=[_F(FISS_MAIT=F, CONTACT_INIT='OUI', INTEGRATION='NOEUD') for F in (F1, F2, F3)])\n"
+        "MAT = DEFI_MATERIAU(ELAS=_F(E=1.0e8, NU=0.3))\n"
+        "CM = AFFE_MATERIAU(MAILLAGE=MA, AFFE=_F(TOUT='OUI', MATER=MAT))\n"
+        "CH = AFFE_CHAR_MECA(MODELE=MX, DDL_IMPO=(_F(GROUP_MA='LG', DX=0., H1X=0.), "
+        "_F(GROUP_MA='LB', DY=0., H1Y=0.), _F(GROUP_MA='LD', DX=-0.01, H1X=0.), "
+        "_F(GROUP_MA='LH', DY=-0.01, H1Y=0.)))\n"
+        "CHC = AFFE_CHAR_MECA(MODELE=MX, LIAISON_XFEM='OUI', CONTACT_XFEM=CT)\n"
+        "LI = DEFI_LIST_REEL(DEBUT=0., INTERVALLE=_F(JUSQU_A=1., NOMBRE=1))\n" +
+        extra + "R = STAT_NON_LINE(MODELE=MX, CHAM_MATER=CM, COMP_ELAS=_F(RELATION='ELAS'), " + solve +
+        "INCREMENT=_F(LIST_INST=LI))\nFIN()\n");
 }
 
 // legacy(extra, solve) stops with exit 1 and an error containing `message`.
@@ -143,7 +147,8 @@ void expectLegacyRefused(const std::string& extra, const std::string& solve, con
 TEST(ContactCommands, TheContactLoadOf2013IsTheContactOfTheSolve) {
     const auto r = runComm(legacy("", "EXCIT=(_F(CHARGE=CH), _F(CHARGE=CHC)), "), kMesh);
     EXPECT_EQ(r.status, 0) << r.output;
-    EXPECT_NE(r.output.find("MODI_MODELE_XFEM: CONTACT='P1P1' (an older code_aster syntax) is read as CONTACT='STANDARD'"),
+    EXPECT_NE(r.output.find(
+                  "MODI_MODELE_XFEM: CONTACT='P1P1' (an older code_aster syntax) is read as CONTACT='STANDARD'"),
               std::string::npos)
         << r.output;
     EXPECT_NE(r.output.find("LIAISON_XFEM='OUI' (code_aster <= 2013): the X-FEM relations it added were those between "
@@ -167,10 +172,11 @@ TEST(ContactCommands, TheContactLoadOf2013IsRefusedOnlyWhereItConflicts) {
                         "STAT_NON_LINE (t.comm, line 17): two contact definitions for one solve: CONTACT gives CT2, "
                         "EXCIT[2]/CHARGE=CHC (CONTACT_XFEM=CT) gives CT.");
     // The contact of another model.
-    expectLegacyRefused("MX2 = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(F1, F2, F3), CONTACT='STANDARD')\n"
-                        "CH2 = AFFE_CHAR_MECA(MODELE=MX2, LIAISON_XFEM='OUI', CONTACT_XFEM=CT)\n",
-                        "EXCIT=_F(CHARGE=CH), ",
-                        "CONTACT_XFEM: CT was defined on the model MX, this load on MODELE MX2 (code_aster XFEM2_11");
+    expectLegacyRefused(
+        "MX2 = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(F1, F2, F3), CONTACT='STANDARD')\n"
+        "CH2 = AFFE_CHAR_MECA(MODELE=MX2, LIAISON_XFEM='OUI', CONTACT_XFEM=CT)\n",
+        "EXCIT=_F(CHARGE=CH), ",
+        "CONTACT_XFEM: CT was defined on the model MX, this load on MODELE MX2 (code_aster XFEM2_11");
     // LIAISON_XFEM on a model without X-FEM.
     expectLegacyRefused("CH3 = AFFE_CHAR_MECA(MODELE=MO, LIAISON_XFEM='OUI')\n", "EXCIT=_F(CHARGE=CH), ",
                         "LIAISON_XFEM='OUI': the model MO is not an X-FEM model");

@@ -23,7 +23,9 @@ std::string definition(bool threeD, const std::string& zone) {
     return ssnv511Preamble({.groups = threeD ? "'VOLU'" : "'SURF'", .threeD = threeD}) +
            "MX = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(F1, F2, F3), CONTACT='STANDARD')\n"
            "CT = DEFI_CONTACT(MODELE=MX, FORMULATION='XFEM',\n"
-           "                  ZONE=(_F(FISS_MAIT=F1, " + zone + "), _F(FISS_MAIT=F2), _F(FISS_MAIT=F3, " + zone + ")))\n"
+           "                  ZONE=(_F(FISS_MAIT=F1, " +
+           zone + "), _F(FISS_MAIT=F2), _F(FISS_MAIT=F3, " + zone +
+           ")))\n"
            "FIN()\n";
 }
 
@@ -47,10 +49,10 @@ TEST(ContactIntegration, EachZoneIsLoggedWithItsRule) {
 
 TEST(ContactIntegration, OrdersOutOfTheCatalogueRangeAreRefused) {
     const std::pair<const char*, const char*> cases[] = {{"INTEGRATION='GAUSS', ORDRE_INT=7", "[1, 6]"},
-                                                        {"INTEGRATION='GAUSS', ORDRE_INT=0", "[1, 6]"},
-                                                        {"INTEGRATION='SIMPSON', ORDRE_INT=5", "[1, 4]"},
-                                                        {"INTEGRATION='NCOTES', ORDRE_INT=2", "[3, 8]"},
-                                                        {"INTEGRATION='NCOTES', ORDRE_INT=9", "[3, 8]"}};
+                                                         {"INTEGRATION='GAUSS', ORDRE_INT=0", "[1, 6]"},
+                                                         {"INTEGRATION='SIMPSON', ORDRE_INT=5", "[1, 4]"},
+                                                         {"INTEGRATION='NCOTES', ORDRE_INT=2", "[3, 8]"},
+                                                         {"INTEGRATION='NCOTES', ORDRE_INT=9", "[3, 8]"}};
     for (const auto& [zone, range] : cases) {
         const auto r = runComm(definition(false, zone), kMesh2d);
         EXPECT_EQ(r.status, 1) << zone << "\n" << r.output;
@@ -64,12 +66,13 @@ TEST(ContactIntegration, OrdersOutOfTheCatalogueRangeAreRefused) {
 }
 
 TEST(ContactIntegration, SchemesWithoutATriangleRuleAreNotImplementedIn3D) {
-    for (const char* zone : {"INTEGRATION='SIMPSON', ORDRE_INT=2", "INTEGRATION='NCOTES'",
-                             "INTEGRATION='NCOTES', ORDRE_INT=8"}) {
+    for (const char* zone :
+         {"INTEGRATION='SIMPSON', ORDRE_INT=2", "INTEGRATION='NCOTES'", "INTEGRATION='NCOTES', ORDRE_INT=8"}) {
         const auto r = runComm(definition(true, zone), kMesh3d);
         EXPECT_EQ(r.status, 1) << zone;
         EXPECT_FALSE(r.exists("out/t.resu")) << "no result file after an error";
-        EXPECT_NE(r.output.find("DEFI_CONTACT (t.comm, line 10): ZONE[1]/INTEGRATION='"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("DEFI_CONTACT (t.comm, line 10): ZONE[1]/INTEGRATION='"), std::string::npos)
+            << r.output;
         EXPECT_NE(r.output.find("does not substitute another one"), std::string::npos) << r.output;
     }
     // The same schemes are defined on 2D segment facets.

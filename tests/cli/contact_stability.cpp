@@ -10,8 +10,8 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <regex>
+#include <sstream>
 #include <string>
 
 #include "parser_run.hpp"
@@ -52,8 +52,8 @@ std::string offsetMesh(double offset, const std::string& type = "quad4", int n =
     const auto dir = std::filesystem::temp_directory_path() / fmt::format("miniaster-contact-stability-{}", getpid());
     std::filesystem::create_directories(dir);
     const auto path = dir / fmt::format("m_{}_{}_{}.med", type, n, offset);
-    const auto cmd = fmt::format("'{}' --type {} --n {} --offset {} {}{} -o '{}' > /dev/null 2>&1", tool.string(), type, n,
-                                 offset, offset, type == "tetra4" ? " --zbounds 0 1" : "", path.string());
+    const auto cmd = fmt::format("'{}' --type {} --n {} --offset {} {}{} -o '{}' > /dev/null 2>&1", tool.string(), type,
+                                 n, offset, offset, type == "tetra4" ? " --zbounds 0 1" : "", path.string());
     EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
     return fmt::format("--mesh '{}'", path.string());
 }
@@ -116,7 +116,8 @@ TEST(ContactStability, SliverPiecesIn3DKeepTheExactAnswer) {
     // their faces got no contact term (energy error 1.2e-7 at TETRA4 1e-4, alarm CONTACT_SLIVER), then
     // ContactFacets paired them by clipping or with the block across (1.3e-11; HEXA8 1e-5 9.6e-10).
     // Now the cut keeps them: every face has its partner sub-cell, the answer is exact.
-    for (const auto& [type, eps] : std::vector<std::pair<std::string, double>>{{"tetra4", 1e-4}, {"tetra4", 1e-3}, {"hexa8", 1e-5}}) {
+    for (const auto& [type, eps] :
+         std::vector<std::pair<std::string, double>>{{"tetra4", 1e-4}, {"tetra4", 1e-3}, {"hexa8", 1e-5}}) {
         SCOPED_TRACE(fmt::format("{} eps={}", type, eps));
         const auto sliver = runComm(comm, offsetMesh(eps, type, 6));
         EXPECT_EQ(sliver.status, 0) << sliver.output;
@@ -157,7 +158,8 @@ TEST(ContactStability, InterfacesNextToNodeRowsKeepTheExactAnswer) {
                     // p/COEF_PENA_CONT, so the file's L2 check (against the exact field) goes.
                     const std::string zone = "CONTACT_INIT='OUI'";
                     ASSERT_NE(c.find(zone), std::string::npos);
-                    c.replace(c.find(zone), zone.size(), "CONTACT_INIT='OUI', ALGO_CONT='PENALISATION', COEF_PENA_CONT=1.0e12");
+                    c.replace(c.find(zone), zone.size(),
+                              "CONTACT_INIT='OUI', ALGO_CONT='PENALISATION', COEF_PENA_CONT=1.0e12");
                     const auto l2Check = c.find("TEST_TABLE(TABLE=TL");
                     ASSERT_NE(l2Check, std::string::npos);
                     c.erase(l2Check, c.find("FIN()", l2Check) - l2Check);
@@ -196,7 +198,8 @@ TEST(ContactStability, SingleBranchJunctionKeepsTheExactAnswer) {
         comm.erase(fdn, comm.find("MO = MODI_MODELE_XFEM") - fdn);
         replace("FISSURE=(FH, FUP, FDN)", "FISSURE=(FH, FUP)");
         replace("for F in (FH, FUP, FDN)", "for F in (FH, FUP)");
-        replace(threeD ? "return 2.0e6 if s >= 0 else 1.0e6" : "return 3.0e6 if s >= 0 else 1.5e6", threeD ? "return 2.0e6" : "return 3.0e6");
+        replace(threeD ? "return 2.0e6 if s >= 0 else 1.0e6" : "return 3.0e6 if s >= 0 else 1.5e6",
+                threeD ? "return 2.0e6" : "return 3.0e6");
         // the files' reference energy is the four-block one: keep the error tables, drop the checks
         const std::string tables = "IMPR_TABLE(TABLE=TL)\n";
         const auto end = comm.find(tables);
@@ -208,7 +211,8 @@ TEST(ContactStability, SingleBranchJunctionKeepsTheExactAnswer) {
             EXPECT_EQ(run.status, 0) << run.output;
             EXPECT_EQ(run.output.find("CONTACT_SLIVER"), std::string::npos) << run.output;
             EXPECT_GT(facetCount(run.output, "where the two sides' faces in a cell differ"), 0) << run.output;
-            const double energy = relativeError(run.output, "ENERGIE"), l2 = relativeError(run.output, "L2 DU DEPLACEMENT");
+            const double energy = relativeError(run.output, "ENERGIE"),
+                         l2 = relativeError(run.output, "L2 DU DEPLACEMENT");
             EXPECT_GE(energy, 0.0) << run.output;
             EXPECT_LT(energy, 1e-12);
             EXPECT_GE(l2, 0.0);

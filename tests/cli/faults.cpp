@@ -33,8 +33,7 @@ std::vector<std::string> temporaries(const fs::path& folder) {
     std::vector<std::string> out;
     std::error_code ec;
     for (const auto& e : fs::recursive_directory_iterator(folder, ec))
-        if (e.path().filename().string().find(".miniaster-tmp.") != std::string::npos)
-            out.push_back(e.path().string());
+        if (e.path().filename().string().find(".miniaster-tmp.") != std::string::npos) out.push_back(e.path().string());
     return out;
 }
 
@@ -72,8 +71,8 @@ TEST(Faults, DiskFullWhileWritingMed) {
     }
     auto r = runMiniaster(dir, xfemExport(), "", "");
     // runMiniaster writes to dir/out: rerun into the full file system.
-    const std::string cmd = "cd '" + dir.string() + "' && '" + std::string(MINIASTER_BINARY) + "' run '" + xfemExport() +
-                            "' --out-dir full > log.txt 2>&1";
+    const std::string cmd = "cd '" + dir.string() + "' && '" + std::string(MINIASTER_BINARY) + "' run '" +
+                            xfemExport() + "' --out-dir full > log.txt 2>&1";
     const int raw = std::system(cmd.c_str());
     const std::string log = readAll(dir / "log.txt");
     const auto left = temporaries(full);
@@ -145,8 +144,10 @@ TEST(Faults, VictimFileIsLeftAlone) {
 // the TEST lines done so far are kept.
 TEST(Faults, TimeLimitKeepsTheLogAndTheTestLines) {
     auto dir = freshDir();
-    writeText(dir / "t.comm", replaced(readAll(kSource + "/astest/tables_chain.comm"), "\nFIN()", "\nwhile True: pass"));
-    writeText(dir / "t.export", "P time_limit 2\nF comm t.comm D 1\nF mmed " + kSource + "/astest/tables_chain.mmed D 20\n");
+    writeText(dir / "t.comm",
+              replaced(readAll(kSource + "/astest/tables_chain.comm"), "\nFIN()", "\nwhile True: pass"));
+    writeText(dir / "t.export",
+              "P time_limit 2\nF comm t.comm D 1\nF mmed " + kSource + "/astest/tables_chain.mmed D 20\n");
     const auto t0 = std::chrono::steady_clock::now();
     auto r = runMiniaster(dir, "t.export");
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -169,11 +170,11 @@ TEST(Faults, KilledRunAndStaleTemporaries) {
     auto dir = freshDir();
     writeText(dir / "t.comm", replaced(readAll(kSource + "/astest/tables_chain.comm"), "\nFIN()",
                                        "\nopen('started', 'w').close()\nwhile True: pass"));
-    const std::string cmd = "cd '" + dir.string() + "' && ('" + std::string(MINIASTER_BINARY) + "' run t.comm --mesh '" +
-                            kSource + "/astest/tables_chain.mmed' --out-dir out > log.txt 2>&1 & p=$!; " +
-                            "for i in $(seq 600); do [ -e started ] && break; sleep 0.1; done; cp out/t.mess running.mess; " +
-                            "kill -TERM $p; wait $p; " +
-                            "echo $? > rc)";
+    const std::string cmd =
+        "cd '" + dir.string() + "' && ('" + std::string(MINIASTER_BINARY) + "' run t.comm --mesh '" + kSource +
+        "/astest/tables_chain.mmed' --out-dir out > log.txt 2>&1 & p=$!; " +
+        "for i in $(seq 600); do [ -e started ] && break; sleep 0.1; done; cp out/t.mess running.mess; " +
+        "kill -TERM $p; wait $p; " + "echo $? > rc)";
     ASSERT_EQ(std::system(cmd.c_str()), 0);
     EXPECT_EQ(readAll(dir / "rc"), "1\n") << readAll(dir / "log.txt");
     // The .mess is a log, streamed: while the run goes on it already holds the commands done.
@@ -254,11 +255,11 @@ TEST(Faults, MaterialAtItsLimits) {
               std::string::npos)
         << r.output;
     r = runPatch("nu = 0.3", "nu = -1.0");
-    EXPECT_NE(r.output.find("ELAS[1]/NU = -1: Poisson's ratio must lie in ]-1, 0.5]"), std::string::npos)
-        << r.output;
+    EXPECT_NE(r.output.find("ELAS[1]/NU = -1: Poisson's ratio must lie in ]-1, 0.5]"), std::string::npos) << r.output;
     r = runPatch("nu = 0.3", "nu = 0.4999999999");
     EXPECT_NE(r.output.find("<A> <MATERIAL_1>"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("NU = 0.4999999999 is nearly incompressible in 3D and plane strain"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("NU = 0.4999999999 is nearly incompressible in 3D and plane strain"), std::string::npos)
+        << r.output;
     EXPECT_EQ(r.output.find("Likely cause: a missing boundary condition"), std::string::npos) << r.output;
     r = runPatch("p1, p2 = 2.0E6, -0.5E6", "p1, p2 = 1e300, -0.5E6");
     EXPECT_EQ(r.status, 1) << r.output;
@@ -281,7 +282,8 @@ TEST(Faults, HugePenaltyIsNamed) {
 // Item 7: sizes beyond the memory limit, a folder as the .comm, strict .export lines.
 TEST(Faults, MemoryLimitAndStrictInputs) {
     auto dir = freshDir();
-    writeText(dir / "t.comm", "DEBUT()\nL = DEFI_LIST_REEL(DEBUT=0., INTERVALLE=_F(JUSQU_A=1., NOMBRE=2**31))\nFIN()\n");
+    writeText(dir / "t.comm",
+              "DEBUT()\nL = DEFI_LIST_REEL(DEBUT=0., INTERVALLE=_F(JUSQU_A=1., NOMBRE=2**31))\nFIN()\n");
     writeText(dir / "t.export", "P memory_limit 256\nF comm t.comm D 1\n");
     const auto t0 = std::chrono::steady_clock::now();
     auto r = runMiniaster(dir, "t.export");
@@ -309,8 +311,9 @@ TEST(Faults, MemoryLimitAndStrictInputs) {
         {"F rmed r.rmed R -80", "line 2: the unit '-80' is not a logical unit"},
         {"F rmed r.rmed RX 80", "line 2: unknown flag 'X' in 'RX'"},
         {"F rmed a.rmed R 80\nF rmed b.rmed R 80", "line 3: unit 80 is already given on line 2"},
-        {"F base glob.1 D 0", "line 2: 'base' is a code_aster database: miniaster neither reads nor writes one (there "
-                              "is no POURSUITE)"},
+        {"F base glob.1 D 0",
+         "line 2: 'base' is a code_aster database: miniaster neither reads nor writes one (there "
+         "is no POURSUITE)"},
         {"P time_limit 10s", "line 2: 'time_limit' must be a positive number (seconds), got '10s'"},
         {"Q what", "line 2: unknown line type 'Q'"},
     };
@@ -320,7 +323,8 @@ TEST(Faults, MemoryLimitAndStrictInputs) {
         r = runMiniaster(dir, "e.export");
         EXPECT_EQ(r.status, 1) << cases[k].first;
         EXPECT_NE(r.output.find("<F> <ERROR> e.export, " + cases[k].second), std::string::npos)
-            << cases[k].first << "\n" << r.output;
+            << cases[k].first << "\n"
+            << r.output;
     }
 }
 
@@ -332,12 +336,14 @@ TEST(Faults, CompressedFilesAndResultDirectories) {
     fs::copy_file(kSource + "/astest/tables_chain.comm", dir / "t.comm");
     fs::copy_file(kSource + "/astest/tables_chain.mmed", dir / "t.mmed");
     std::string comm = readAll(dir / "t.comm");
-    comm = replaced(comm, "\nFIN()", "\nIMPR_RESU(FORMAT='MED', UNITE=80, RESU=_F(MAILLAGE=MA))\n"
-                                    "IMPR_RESU(FORMAT='MED', UNITE=81, RESU=_F(MAILLAGE=MA))\nFIN()");
+    comm = replaced(comm, "\nFIN()",
+                    "\nIMPR_RESU(FORMAT='MED', UNITE=80, RESU=_F(MAILLAGE=MA))\n"
+                    "IMPR_RESU(FORMAT='MED', UNITE=81, RESU=_F(MAILLAGE=MA))\nFIN()");
     writeText(dir / "t.comm", comm);
     ASSERT_EQ(std::system(("cd '" + dir.string() + "' && gzip t.comm t.mmed").c_str()), 0);
-    writeText(dir / "t.export", "F comm t.comm.gz DC 1\nF mmed t.mmed.gz DC 20\nF rmed r.rmed.gz RC 80\n"
-                                "R repe results R 0\n");
+    writeText(dir / "t.export",
+              "F comm t.comm.gz DC 1\nF mmed t.mmed.gz DC 20\nF rmed r.rmed.gz RC 80\n"
+              "R repe results R 0\n");
     auto r = runMiniaster(dir, "t.export");
     EXPECT_EQ(r.status, 0) << r.output;
     ASSERT_TRUE(r.exists("out/r.rmed.gz")) << r.output;
@@ -363,7 +369,8 @@ TEST(Faults, LateFailureKeepsTheTestLines) {
     EXPECT_NE(r.file("out/t.resu").find(" OK "), std::string::npos) << r.file("out/t.resu");
     EXPECT_NE(r.file("out/t.mess").find("ZeroDivisionError"), std::string::npos);
 
-    writeText(dir / "t.comm", replaced(readAll(kSource + "/astest/tables_chain.comm"), "\nFIN()", "\nimport os\nos._exit(3)"));
+    writeText(dir / "t.comm",
+              replaced(readAll(kSource + "/astest/tables_chain.comm"), "\nFIN()", "\nimport os\nos._exit(3)"));
     r = runMiniaster(dir, "t.comm", "--mesh '" + kSource + "/astest/tables_chain.mmed'");
     EXPECT_EQ(r.status, 3);
     const std::string mess = r.file("out/t.mess");

@@ -46,18 +46,21 @@ TEST(MedCli, BadMeshFilesAndGroupsStopTheRunWithStatus1) {
     std::ofstream(text) << "not a MED file";
     r = runComm(dir, kRead, text);
     EXPECT_EQ(r.status, 1);
-    EXPECT_NE(r.mess.find("line 2): file '" + text + "' is not a MED file: it is not in HDF5 format"), std::string::npos);
+    EXPECT_NE(r.mess.find("line 2): file '" + text + "' is not a MED file: it is not in HDF5 format"),
+              std::string::npos);
 
     const std::string truncated = dir + "/truncated.med";
     std::filesystem::copy_file(ma::test::astest("ssnv511h.mmed"), truncated);
     std::filesystem::resize_file(truncated, 9000);
     r = runComm(dir, kRead, truncated);
     EXPECT_EQ(r.status, 1);
-    EXPECT_NE(r.mess.find("line 2): MED file '" + truncated + "' is damaged or truncated"), std::string::npos) << r.mess;
+    EXPECT_NE(r.mess.find("line 2): MED file '" + truncated + "' is damaged or truncated"), std::string::npos)
+        << r.mess;
     EXPECT_EQ(r.stderrText.find("HDF5"), std::string::npos) << r.stderrText;
     EXPECT_EQ(r.stderrText.find("Erreur"), std::string::npos) << r.stderrText;
 
-    r = runComm(dir, "DEBUT()\nMA=LIRE_MAILLAGE(FORMAT='MED',\n   NOM_MED='MAIL')\nFIN()\n", ma::test::astest("ssnv511a.mmed"));
+    r = runComm(dir, "DEBUT()\nMA=LIRE_MAILLAGE(FORMAT='MED',\n   NOM_MED='MAIL')\nFIN()\n",
+                ma::test::astest("ssnv511a.mmed"));
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.mess.find("line 2): NOM_MED='MAIL': MED file"), std::string::npos) << r.mess;
     EXPECT_NE(r.mess.find("meshes in the file: 'MA'"), std::string::npos);

@@ -20,7 +20,8 @@ TEST(AsterMeshReader, ExportUnitAndCommLineInErrors) {
                             "', line 7: cell M1 names node 'N4', which no COOR block defines"),
               std::string::npos)
         << r.output;
-    test::writeText(dir / "plate.mail", "COOR_2D\nN1 0 0\nN2 1 0\nN3 0 1\nN4 1 1\nFINSF\nQUAD4\nM1 N1 N2 N4 N3\nFINSF\nFIN\n");
+    test::writeText(dir / "plate.mail",
+                    "COOR_2D\nN1 0 0\nN2 1 0\nN3 0 1\nN4 1 1\nFINSF\nQUAD4\nM1 N1 N2 N4 N3\nFINSF\nFIN\n");
     r = test::runMiniaster(dir, "case.export");
     EXPECT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.file("out/case.mess").find("NOMBRE DE NOEUDS                           4"), std::string::npos);

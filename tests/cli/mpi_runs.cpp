@@ -10,8 +10,8 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
-#include <sys/wait.h>
 #include <sstream>
+#include <sys/wait.h>
 
 #include "med_io/MedResultReader.hpp"
 #include "med_io/MedWriter.hpp"
@@ -26,7 +26,8 @@ namespace {
 const std::string kSource = MINIASTER_SOURCE_DIR;
 const std::string kShared = MINIASTER_SHARED_DIR;
 const std::string kTimeout = "timeout 300 ";
-const std::string kMpirun = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timeout 300 mpirun --quiet --oversubscribe ";
+const std::string kMpirun =
+    "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timeout 300 mpirun --quiet --oversubscribe ";
 
 std::string readAll(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
@@ -100,7 +101,8 @@ TEST(MpiRuns, TwoProcessesWriteWhatOneWrites) {
     EXPECT_GE(expected.size(), 4u);
     EXPECT_EQ(verdicts(two.file("out/xfem_quad4_n7.resu")), expected);
     EXPECT_EQ(sortedFiles(two), sortedFiles(one));
-    EXPECT_EQ(sortedFiles(two), (std::vector<std::string>{"xfem_quad4_n7.mess", "xfem_quad4_n7.resu", "xfem_quad4_n7.rmed"}));
+    EXPECT_EQ(sortedFiles(two),
+              (std::vector<std::string>{"xfem_quad4_n7.mess", "xfem_quad4_n7.resu", "xfem_quad4_n7.rmed"}));
     // The header once, from rank 0 only.
     EXPECT_EQ(two.output.find("MPI processes: 2"), two.output.rfind("MPI processes: 2")) << two.output;
 }
@@ -109,8 +111,8 @@ TEST(MpiRuns, TwoProcessesWriteWhatOneWrites) {
 // works, and a --np that contradicts it is refused.
 TEST(MpiRuns, ProcessCountFromExportCommandLineAndMpirun) {
     auto dir = freshDir();
-    writeText(dir / "t.export", "P mpi_nbcpu 2\nF comm " + kSource + "/astest/fe_patch_quad4.comm D 1\nF mmed " + kSource +
-                                    "/astest/fe_patch_quad4.mmed D 20\n");
+    writeText(dir / "t.export", "P mpi_nbcpu 2\nF comm " + kSource + "/astest/fe_patch_quad4.comm D 1\nF mmed " +
+                                    kSource + "/astest/fe_patch_quad4.mmed D 20\n");
     auto r = runMiniaster(dir, "t.export", "", kTimeout);
     EXPECT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.file("out/t.mess").find("  MPI processes: 2\n"), std::string::npos);
@@ -170,7 +172,6 @@ TEST(MpiRuns, BadInputEndsAsOnOneProcess) {
         const auto lines = verdicts(one.file("out/tables_nook.resu"));
         EXPECT_NE(std::find(lines.begin(), lines.end(), "NOOK ANALYTIQUE"), lines.end());
     }
-
 }
 
 // Rank 0's MED write fails (a full disk: a tmpfs of 200 kB nearly filled as the output folder): the
@@ -217,8 +218,10 @@ int processesIn(const fs::path& folder) {
 // far, as one process does; no process is left.
 TEST(MpiRuns, TimeLimitAndSignalStopEveryProcess) {
     const auto dir = freshDir();
-    writeText(dir / "t.comm", replaced(readAll(kSource + "/astest/tables_chain.comm"), "\nFIN()", "\nwhile True: pass"));
-    writeText(dir / "t.export", "P time_limit 2\nF comm t.comm D 1\nF mmed " + kSource + "/astest/tables_chain.mmed D 20\n");
+    writeText(dir / "t.comm",
+              replaced(readAll(kSource + "/astest/tables_chain.comm"), "\nFIN()", "\nwhile True: pass"));
+    writeText(dir / "t.export",
+              "P time_limit 2\nF comm t.comm D 1\nF mmed " + kSource + "/astest/tables_chain.mmed D 20\n");
     writeText(dir / "k.export", "F comm t.comm D 1\nF mmed " + kSource + "/astest/tables_chain.mmed D 20\n");
     auto r = runMiniaster(dir, "t.export", "--np 2", kTimeout);
     EXPECT_EQ(r.status, 1) << r.output;
@@ -270,11 +273,12 @@ TEST(MpiRuns, RefinedSsnv511eSameFieldOnTwoAndFourProcesses) {
         ASSERT_EQ(r.status, 0) << r.output;
         const std::string mess = r.file("out/e.mess");
         std::smatch m;
-        ASSERT_TRUE(std::regex_search(mess, m, std::regex("increment 1 \\(INST 1\\): ([0-9]+) contact iteration\\(s\\)")));
+        ASSERT_TRUE(
+            std::regex_search(mess, m, std::regex("increment 1 \\(INST 1\\): ([0-9]+) contact iteration\\(s\\)")));
         iterations.push_back(m[1]);
         for (const char* norm : {"ENERGIE", "L2 DU DEPLACEMENT"}) {
-            ASSERT_TRUE(std::regex_search(mess, m, std::regex(std::string("ERREUR EN NORME ") + norm +
-                                                              ".*ERREUR RELATIVE = ([-0-9.e+]+)")));
+            ASSERT_TRUE(std::regex_search(
+                mess, m, std::regex(std::string("ERREUR EN NORME ") + norm + ".*ERREUR RELATIVE = ([-0-9.e+]+)")));
             EXPECT_LT(std::stod(m[1]), 1e-10) << norm;
         }
         const auto results = ma::med::readResults((out / "out/e.rmed").string());
@@ -293,7 +297,8 @@ TEST(MpiRuns, RefinedSsnv511eSameFieldOnTwoAndFourProcesses) {
     for (size_t k = 1; k < fields.size(); ++k) {
         ASSERT_EQ(fields[k].size(), fields[0].size());
         double difference = 0.0;
-        for (size_t i = 0; i < fields[0].size(); ++i) difference = std::max(difference, std::abs(fields[k][i] - fields[0][i]));
+        for (size_t i = 0; i < fields[0].size(); ++i)
+            difference = std::max(difference, std::abs(fields[k][i] - fields[0][i]));
         EXPECT_LT(difference, 1e-10 * largest) << "K = " << (k == 1 ? 2 : 4) << ": " << difference / largest;
         std::printf("refined ssnv511e N=101, K=%d: max |u_K - u_1| / max |u_1| = %.3e\n", k == 1 ? 2 : 4,
                     difference / largest);

@@ -79,7 +79,8 @@ std::vector<double> testedValues(const std::string& resu) {
     while (std::getline(in, line)) {
         std::istringstream words(line);
         std::string status, kind, legend, reference, computed;
-        if (!(words >> status >> kind >> legend >> reference >> computed) || (status != "OK" && status != "NOOK")) continue;
+        if (!(words >> status >> kind >> legend >> reference >> computed) || (status != "OK" && status != "NOOK"))
+            continue;
         out.push_back(std::stod(computed));
     }
     return out;
@@ -95,7 +96,8 @@ double fieldDifference(const std::vector<std::vector<double>>& a, const std::vec
         for (int j = 0; j < dim; ++j) {
             diff = std::max(diff, std::abs(a[n][size_t(j)] - b[n][size_t(j)]));
             std::vector<double> ha, hb;
-            for (size_t k = 1; k <= slots; ++k) ha.push_back(a[n][k * size_t(dim) + size_t(j)]), hb.push_back(b[n][k * size_t(dim) + size_t(j)]);
+            for (size_t k = 1; k <= slots; ++k)
+                ha.push_back(a[n][k * size_t(dim) + size_t(j)]), hb.push_back(b[n][k * size_t(dim) + size_t(j)]);
             std::sort(ha.begin(), ha.end());
             std::sort(hb.begin(), hb.end());
             for (size_t k = 0; k < ha.size(); ++k) diff = std::max(diff, std::abs(ha[k] - hb[k]));
@@ -150,7 +152,8 @@ TEST_P(OrientationInvariance, SameFieldsWithHalfTheCellsReversed) {
     for (const auto& row : fields[0])
         for (double v : row) scale = std::max(scale, std::abs(v));
     EXPECT_GT(scale, 0.1);
-    EXPECT_LE(fieldDifference(fields[0], fields[1], c.dim), 1e-11 * scale) << c.comm << ": " << reversed << " cells reversed";
+    EXPECT_LE(fieldDifference(fields[0], fields[1], c.dim), 1e-11 * scale)
+        << c.comm << ": " << reversed << " cells reversed";
     ASSERT_EQ(tested[0].size(), tested[1].size());
     EXPECT_GE(tested[0].size(), 18u);
     for (size_t t = 0; t < tested[0].size(); ++t)
@@ -161,9 +164,11 @@ TEST_P(OrientationInvariance, SameFieldsWithHalfTheCellsReversed) {
 
 INSTANTIATE_TEST_SUITE_P(Ssnv511, OrientationInvariance,
                          ::testing::Values(Case{Kind::Quad4, 2, "ssnv511a.comm"}, Case{Kind::Tria3, 2, "ssnv511b.comm"},
-                                           Case{Kind::Hexa8, 3, "ssnv511c.comm"}, Case{Kind::Tetra4, 3, "ssnv511d.comm"},
+                                           Case{Kind::Hexa8, 3, "ssnv511c.comm"},
+                                           Case{Kind::Tetra4, 3, "ssnv511d.comm"},
                                            Case{Kind::Quad4, 2, "ssnv511e.comm"}, Case{Kind::Tria3, 2, "ssnv511f.comm"},
-                                           Case{Kind::Hexa8, 3, "ssnv511g.comm"}, Case{Kind::Tetra4, 3, "ssnv511h.comm"}),
+                                           Case{Kind::Hexa8, 3, "ssnv511g.comm"},
+                                           Case{Kind::Tetra4, 3, "ssnv511h.comm"}),
                          [](const auto& testInfo) { return std::string(testInfo.param.comm).substr(0, 8); });
 
 }  // namespace

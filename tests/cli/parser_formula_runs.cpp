@@ -44,12 +44,13 @@ FIN()
     EXPECT_NE(r.output.find("\nF5 14.0\n"), std::string::npos);
     EXPECT_NE(r.output.find("\nF6 5.0\n"), std::string::npos);
     EXPECT_NE(r.output.find("\nF7 -0.75\n"), std::string::npos);  // pre-2018: depx not passed
-    EXPECT_NE(r.output.find("\nF8 3.5\n"), std::string::npos);     // true division
+    EXPECT_NE(r.output.find("\nF8 3.5\n"), std::string::npos);    // true division
     EXPECT_NE(r.output.find("--- DIAGNOSTIC JOB : OK"), std::string::npos);
 }
 
 TEST(ParserFormula, WrongNumberOfArgumentsIsAPythonError) {
     auto r = runComm("DEBUT()\nF = FORMULE(VALE='X', NOM_PARA=('X', 'Y'))\nv = F(1.)\n");
-    ma::test::expectError(r, "<F> <ERROR> (t.comm, line 3): error in the Python code of the command file: TypeError: "
-                             "F() takes 2 argument(s) (X, Y), got 1");
+    ma::test::expectError(r,
+                          "<F> <ERROR> (t.comm, line 3): error in the Python code of the command file: TypeError: "
+                          "F() takes 2 argument(s) (X, Y), got 1");
 }

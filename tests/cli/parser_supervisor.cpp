@@ -61,9 +61,10 @@ FIN()
 
 TEST(ParserSupervisor, ReuseIsHonouredForReentrantCommands) {
     // Validation only: CALC_TABLE is reentrant; the result must be assigned to the reused object.
-    auto ok = runComm("DEBUT()\nL = DEFI_LIST_REEL(VALE=(0., 1.))\n"
-                      "R = STAT_NON_LINE(MODELE=None, CHAM_MATER=None, INCREMENT=_F(LIST_INST=L))\n",
-                      "--check-syntax");
+    auto ok = runComm(
+        "DEBUT()\nL = DEFI_LIST_REEL(VALE=(0., 1.))\n"
+        "R = STAT_NON_LINE(MODELE=None, CHAM_MATER=None, INCREMENT=_F(LIST_INST=L))\n",
+        "--check-syntax");
     EXPECT_EQ(ok.status, 1);  // MODELE=None is an absent mandatory keyword
     EXPECT_NE(ok.output.find("mandatory keyword MODELE is missing"), std::string::npos) << ok.output;
 
@@ -73,18 +74,23 @@ F = FORMULE(VALE='X', NOM_PARA='X')
 L = DEFI_LIST_REEL(VALE=(0., 1.))
 M = LIRE_MAILLAGE()
 M2 = DEFI_GROUP(reuse=M, MAILLAGE=M, CREA_GROUP_NO=_F(GROUP_MA='A'))
-)", "--check-syntax");
-    expectError(mismatch, "<F> <ERROR> DEFI_GROUP (t.comm, line 6): reuse=M but the result is assigned to M2: a "
-                          "reentrant command modifies the object given by reuse=, assign the result to it");
+)",
+                            "--check-syntax");
+    expectError(mismatch,
+                "<F> <ERROR> DEFI_GROUP (t.comm, line 6): reuse=M but the result is assigned to M2: a "
+                "reentrant command modifies the object given by reuse=, assign the result to it");
 
-    auto noReuse = runComm("DEBUT()\nM = LIRE_MAILLAGE()\nM2 = DEFI_GROUP(MAILLAGE=M, CREA_GROUP_NO=_F(GROUP_MA='A'))\n",
-                           "--check-syntax");
-    expectError(noReuse, "<F> <ERROR> DEFI_GROUP (t.comm, line 3): DEFI_GROUP modifies its input in place: reuse= is "
-                         "mandatory (write X = DEFI_GROUP(reuse=X, ...) with the object it modifies)");
+    auto noReuse =
+        runComm("DEBUT()\nM = LIRE_MAILLAGE()\nM2 = DEFI_GROUP(MAILLAGE=M, CREA_GROUP_NO=_F(GROUP_MA='A'))\n",
+                "--check-syntax");
+    expectError(noReuse,
+                "<F> <ERROR> DEFI_GROUP (t.comm, line 3): DEFI_GROUP modifies its input in place: reuse= is "
+                "mandatory (write X = DEFI_GROUP(reuse=X, ...) with the object it modifies)");
 
-    auto good = runComm("DEBUT()\nM = LIRE_MAILLAGE()\nM = DEFI_GROUP(reuse=M, MAILLAGE=M, "
-                        "CREA_GROUP_NO=_F(GROUP_MA='A'))\nFIN()\n",
-                        "--check-syntax");
+    auto good = runComm(
+        "DEBUT()\nM = LIRE_MAILLAGE()\nM = DEFI_GROUP(reuse=M, MAILLAGE=M, "
+        "CREA_GROUP_NO=_F(GROUP_MA='A'))\nFIN()\n",
+        "--check-syntax");
     EXPECT_EQ(good.status, 0) << good.output;
     EXPECT_NE(good.output.find("M = DEFI_GROUP("), std::string::npos);
 }
@@ -101,14 +107,15 @@ TEST(ParserSupervisor, MissingFinAndDebutAreAlarms) {
 TEST(ParserSupervisor, MallocPagesAreGlibcsUnlessTheUserSetsThem) {
     // glibc's default pages (src/core/MallocHugePages.hpp says why); the binary does not re-execute
     // itself with a tunable of its own, and a user's GLIBC_TUNABLES reaches the run as given.
-    const auto r = runComm("import os\nprint('TUNABLES=' + os.environ.get('GLIBC_TUNABLES', ''))\nDEBUT()\nFIN()\n",
-                           "", "GLIBC_TUNABLES=");
+    const auto r = runComm("import os\nprint('TUNABLES=' + os.environ.get('GLIBC_TUNABLES', ''))\nDEBUT()\nFIN()\n", "",
+                           "GLIBC_TUNABLES=");
     EXPECT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("  memory      : 4 KB pages (glibc's default)\n"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("TUNABLES=\n"), std::string::npos) << r.output;
     const auto on = runComm("import os\nprint('TUNABLES=' + os.environ['GLIBC_TUNABLES'])\nDEBUT()\nFIN()\n", "",
                             "GLIBC_TUNABLES=glibc.malloc.arena_max=2:glibc.malloc.hugetlb=1");
-    EXPECT_NE(on.output.find("  memory      : glibc.malloc.hugetlb=1 from GLIBC_TUNABLES"), std::string::npos) << on.output;
+    EXPECT_NE(on.output.find("  memory      : glibc.malloc.hugetlb=1 from GLIBC_TUNABLES"), std::string::npos)
+        << on.output;
     EXPECT_NE(on.output.find("TUNABLES=glibc.malloc.arena_max=2:glibc.malloc.hugetlb=1\n"), std::string::npos)
         << on.output;
 }
@@ -151,15 +158,18 @@ TEST(ParserSupervisor, ErrorLeavesTheResultOfAnEarlierRunAsItWas) {
     writeText(dir / "t.comm", "DEBUT()\nx = 1/0\n");
     auto second = runMiniaster(dir, "t.comm");
     EXPECT_EQ(second.status, 1);
-    const std::string paragraph = "<F> <ERROR> (t.comm, line 2): error in the Python code of the command file: "
-                                  "ZeroDivisionError: division by zero";
+    const std::string paragraph =
+        "<F> <ERROR> (t.comm, line 2): error in the Python code of the command file: "
+        "ZeroDivisionError: division by zero";
     EXPECT_NE(second.file("out/t.mess").find(paragraph), std::string::npos) << second.output;
     EXPECT_EQ(second.file("out/t.resu"), earlier);
     EXPECT_NE(second.file("out/t.mess").find("is not from this run and is left as it was"), std::string::npos);
 }
 
 TEST(ParserSupervisor, Latin1CommandFileIsRead) {
-    auto r = runComm("DEBUT()\n# d\xe9placement impos\xe9\nL = DEFI_LIST_REEL(VALE=(0., 1.), TITRE='d\xe9" "but')\nFIN()\n");
+    auto r = runComm(
+        "DEBUT()\n# d\xe9placement impos\xe9\nL = DEFI_LIST_REEL(VALE=(0., 1.), TITRE='d\xe9"
+        "but')\nFIN()\n");
     EXPECT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("<A> <SUPERVIS_3>"), std::string::npos) << r.output;
 }
@@ -178,8 +188,9 @@ TEST(ParserSupervisor, ExportUnitsReachTheCommands) {
     // D 20 is what LIRE_MAILLAGE reads, R 80 is where IMPR_RESU writes (relative to --out-dir).
     auto dir = freshDir();
     const std::string mesh = std::string(MINIASTER_SHARED_DIR) + "/astest/ssnv511a.mmed";
-    writeText(dir / "u.comm", "DEBUT()\nMA = LIRE_MAILLAGE(FORMAT='MED')\nIMPR_RESU(FORMAT='MED', UNITE=80, "
-                              "RESU=_F(MAILLAGE=MA))\nFIN()\n");
+    writeText(dir / "u.comm",
+              "DEBUT()\nMA = LIRE_MAILLAGE(FORMAT='MED')\nIMPR_RESU(FORMAT='MED', UNITE=80, "
+              "RESU=_F(MAILLAGE=MA))\nFIN()\n");
     writeText(dir / "u.export", "F comm u.comm D 1\nF mmed " + mesh + " D 20\nF rmed u.rmed R 80\n");
     auto r = runMiniaster(dir, "u.export");
     EXPECT_EQ(r.status, 0) << r.output;
@@ -203,8 +214,10 @@ TEST(ParserSupervisor, SubcellQuadratureOption) {
                                  ", not code_aster's catalogue rules)\n";
         EXPECT_NE(r.file("out/t.mess").find(line), std::string::npos) << r.output;
     }
-    const std::vector<std::string> bads{"0", std::to_string(ma::xfem::kMaxSubcellDegree + 1), "seven", "2.5", "02",
-                                        "-1", "CATALOGUE", "''"};
+    const std::vector<std::string> bads{"0",         std::to_string(ma::xfem::kMaxSubcellDegree + 1),
+                                        "seven",     "2.5",
+                                        "02",        "-1",
+                                        "CATALOGUE", "''"};
     for (const std::string& bad : bads) {
         r = runComm(comm, "--subcell-quadrature " + bad);
         EXPECT_EQ(r.status, 1) << bad << "\n" << r.output;

@@ -17,9 +17,7 @@ namespace {
 
 const std::string kMesh = std::string("--mesh '") + MINIASTER_SHARED_DIR + "/astest/ssnv511a.mmed'";
 
-std::string head(const std::string& ln1) {
-    return ssnv511Preamble({.ln1 = ln1, .prefix = "FISS", .interfaces = 1});
-}
+std::string head(const std::string& ln1) { return ssnv511Preamble({.ln1 = ln1, .prefix = "FISS", .interfaces = 1}); }
 
 }  // namespace
 
@@ -30,7 +28,8 @@ TEST(XfemCommands, CountsInTheLog) {
                                "FIN()\n",
                            kMesh);
     EXPECT_EQ(r.status, 0) << r.output;
-    EXPECT_NE(r.output.find("interface (FISS1): 7 cut cells, 12 Heaviside-enriched nodes"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("interface (FISS1): 7 cut cells, 12 Heaviside-enriched nodes"), std::string::npos)
+        << r.output;
     EXPECT_NE(r.output.find("interface (FISS2): 7 cut cells, 8 Heaviside-enriched nodes"), std::string::npos);
     EXPECT_NE(r.output.find("junction on FISS1: the interface exists where -1 * LSN(FISS1) < 0"), std::string::npos);
     EXPECT_NE(r.output.find("21 X-FEM elements (84 sub-cells), 20 enriched nodes (4 with several Heaviside"),
@@ -82,10 +81,9 @@ TEST(XfemCommands, OutsideAndUnsupported) {
 // The .mess of MODI_MODELE_XFEM tells which rule each kind of sub-cell uses and whether it comes
 // from the catalogue or from `--subcell-quadrature` (the skin keeps the catalogue's rule).
 TEST(XfemCommands, SubcellQuadratureInTheLog) {
-    const std::string comm =
-        ssnv511Preamble({.groups = "('SURF', 'LH', 'LD')", .prefix = "FISS"}) +
-        "MX = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(FISS1, FISS2, FISS3))\n"
-        "FIN()\n";
+    const std::string comm = ssnv511Preamble({.groups = "('SURF', 'LH', 'LD')", .prefix = "FISS"}) +
+                             "MX = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(FISS1, FISS2, FISS3))\n"
+                             "FIN()\n";
     // Sub-cells per kind, read from the catalogue run and checked against the rule sizes.
     const std::regex line(R"(      (volume|skin) sub-cells, (one interface|several interfaces): (SEG2|TRIA3) (FPG\d+) )"
                           R"(\(degree (\d), ([^)]*)\), (\d+) sub-cells, (\d+) points)");
@@ -121,9 +119,10 @@ TEST(XfemCommands, SubcellQuadratureInTheLog) {
     const int skinPoints = k0.at("skin, one interface").points;
     EXPECT_EQ(skinPoints, 4 * k0.at("skin, one interface").subcells);
     // 21 volume X-FEM elements (XfemCommands.CountsInTheLog), 6 skin ones (27 X-FEM elements in all)
-    EXPECT_NE(mess.find(fmt::format("    sub-cell integration points: {} (volume {} in 21 elements, skin {} in 6) on 92 "
-                                    "sub-cells\n",
-                                    mono.points + multi.points + skinPoints, mono.points + multi.points, skinPoints)),
+    EXPECT_NE(mess.find(
+                  fmt::format("    sub-cell integration points: {} (volume {} in 21 elements, skin {} in 6) on 92 "
+                              "sub-cells\n",
+                              mono.points + multi.points + skinPoints, mono.points + multi.points, skinPoints)),
               std::string::npos)
         << mess;
 
@@ -179,20 +178,24 @@ TEST(XfemCommands, Hexa8AtDegreeOneIsAlarmed) {
 TEST(XfemCommands, JonctionPointMissingCoordinatesAreZero) {
     const std::string mesh = std::string("--mesh '") + MINIASTER_SHARED_DIR + "/astest/ssnv511g.mmed'";
     auto run = [&](const std::string& point) {
-        return runComm("DEBUT()\n"
-                       "MA = LIRE_MAILLAGE(FORMAT='MED')\n"
-                       "LN1 = FORMULE(VALE='Y', NOM_PARA=['X', 'Y', 'Z'])\n"
-                       "LN2 = FORMULE(VALE='X', NOM_PARA=['X', 'Y', 'Z'])\n"
-                       "FISS1 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN1))\n"
-                       "FISS2 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2),"
-                       " JONCTION=_F(FISSURE=FISS1, POINT=" + point + "))\n"
-                       "FIN()\n",
-                       mesh);
+        return runComm(
+            "DEBUT()\n"
+            "MA = LIRE_MAILLAGE(FORMAT='MED')\n"
+            "LN1 = FORMULE(VALE='Y', NOM_PARA=['X', 'Y', 'Z'])\n"
+            "LN2 = FORMULE(VALE='X', NOM_PARA=['X', 'Y', 'Z'])\n"
+            "FISS1 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN1))\n"
+            "FISS2 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2),"
+            " JONCTION=_F(FISSURE=FISS1, POINT=" +
+                point +
+                "))\n"
+                "FIN()\n",
+            mesh);
     };
     const auto two = run("(0, 5)"), three = run("(0, 5, 0)");
     ASSERT_EQ(two.status, 0) << two.output;
     ASSERT_EQ(three.status, 0) << three.output;
-    EXPECT_NE(two.output.find("JONCTION[1]/POINT: 2 coordinate(s) given on a mesh of dimension 3; the missing ones are 0"),
+    EXPECT_NE(two.output.find(
+                  "JONCTION[1]/POINT: 2 coordinate(s) given on a mesh of dimension 3; the missing ones are 0"),
               std::string::npos)
         << two.output;
     const std::regex counts("interface \\(FISS2\\): [^\\n]*");

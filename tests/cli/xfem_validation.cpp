@@ -51,7 +51,8 @@ int runQuad4(const std::string& dir, int n, const std::string& lipsCheck = "", c
     std::string comm = readFile(fs::path(MINIASTER_SOURCE_DIR) / "astest/xfem_quad4.comm");
     if (!lipsCheck.empty()) comm = replaced(comm, "CRITERE='RELATIF', PRECISION=1.e-13)", lipsCheck + ")");
     if (!l2Precision.empty())
-        comm = replaced(comm, "CRITERE='ABSOLU', PRECISION=1.e-13)", "CRITERE='ABSOLU', PRECISION=" + l2Precision + ")");
+        comm =
+            replaced(comm, "CRITERE='ABSOLU', PRECISION=1.e-13)", "CRITERE='ABSOLU', PRECISION=" + l2Precision + ")");
     std::ofstream(dir + "/case.comm") << comm;
     std::ofstream(dir + "/case.export") << "P time_limit 120\nF comm case.comm D 1\nF mmed mesh.med D 20\n"
                                            "F rmed case.rmed R 80\n";

@@ -31,7 +31,8 @@ inline Scene scene(CellType type, int n, ContactAlgorithm algo, bool bilateral =
     s.model = std::make_shared<Model>(xfemtest::model(mesh));
     const auto j = xfemtest::ssnv511Cracks(mesh);
     s.model->enrichment =
-        std::make_shared<xfem::XfemModel>(*s.model, std::vector<std::shared_ptr<const xfem::Crack>>{j.fiss1, j.fiss2, j.fiss3},
+        std::make_shared<xfem::XfemModel>(*s.model,
+                                          std::vector<std::shared_ptr<const xfem::Crack>>{j.fiss1, j.fiss2, j.fiss3},
                                           xfem::XfemContact::Standard);
     auto mat = std::make_shared<Material>();
     mat->E = 1.0e8;

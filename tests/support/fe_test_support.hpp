@@ -96,7 +96,8 @@ inline std::shared_ptr<Mesh> planeMesh(int nx, int ny, bool triangles, double L 
             }
         }
     for (int i = 0; i < nx; ++i) bottom.push_back(m->addCell(CellType::SEG2, std::vector<int>{id(i, 0), id(i + 1, 0)}));
-    for (int j = 0; j < ny; ++j) right.push_back(m->addCell(CellType::SEG2, std::vector<int>{id(nx, j), id(nx, j + 1)}));
+    for (int j = 0; j < ny; ++j)
+        right.push_back(m->addCell(CellType::SEG2, std::vector<int>{id(nx, j), id(nx, j + 1)}));
     for (int i = nx; i > 0; --i) top.push_back(m->addCell(CellType::SEG2, std::vector<int>{id(i, ny), id(i - 1, ny)}));
     for (int j = ny; j > 0; --j) left.push_back(m->addCell(CellType::SEG2, std::vector<int>{id(0, j), id(0, j - 1)}));
     m->cellGroups.set("ALL", all);
@@ -137,20 +138,21 @@ inline std::shared_ptr<Mesh> boxMesh(int n, bool tetras, double L = 2.0) {
         const auto &a = m->coords[t[0]], &b = m->coords[t[1]], &c = m->coords[t[2]], &d = m->coords[t[3]];
         const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]},
                      w[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
-        return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0]);
+        return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+               u[2] * (v[0] * w[1] - v[1] * w[0]);
     };
     for (int k = 0; k < n; ++k)
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) {
-                const int h[8] = {id(i, j, k),         id(i + 1, j, k),         id(i + 1, j + 1, k),
-                                  id(i, j + 1, k),     id(i, j, k + 1),         id(i + 1, j, k + 1),
-                                  id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)};
+                const int h[8] = {id(i, j, k),     id(i + 1, j, k),     id(i + 1, j + 1, k),     id(i, j + 1, k),
+                                  id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)};
                 if (!tetras) {
                     all.push_back(m->addCell(CellType::HEXA8, std::span<const int>(h, 8)));
                     continue;
                 }
                 // Six tetrahedra around the diagonal 0-6.
-                const int tets[6][4] = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6}, {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}};
+                const int tets[6][4] = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6},
+                                        {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}};
                 for (const auto& t : tets) {
                     std::array<int, 4> c{h[t[0]], h[t[1]], h[t[2]], h[t[3]]};
                     if (signedVolume(c) < 0) std::swap(c[1], c[2]);
@@ -174,12 +176,24 @@ inline std::shared_ptr<Mesh> boxMesh(int n, bool tetras, double L = 2.0) {
             }
         m->cellGroups.set(name, cells);
     };
-    addFaces("XMIN", [&](int a, int b) { return std::array<int, 4>{id(0, a, b), id(0, a, b + 1), id(0, a + 1, b + 1), id(0, a + 1, b)}; });
-    addFaces("XMAX", [&](int a, int b) { return std::array<int, 4>{id(n, a, b), id(n, a + 1, b), id(n, a + 1, b + 1), id(n, a, b + 1)}; });
-    addFaces("YMIN", [&](int a, int b) { return std::array<int, 4>{id(a, 0, b), id(a + 1, 0, b), id(a + 1, 0, b + 1), id(a, 0, b + 1)}; });
-    addFaces("YMAX", [&](int a, int b) { return std::array<int, 4>{id(a, n, b), id(a, n, b + 1), id(a + 1, n, b + 1), id(a + 1, n, b)}; });
-    addFaces("ZMIN", [&](int a, int b) { return std::array<int, 4>{id(a, b, 0), id(a, b + 1, 0), id(a + 1, b + 1, 0), id(a + 1, b, 0)}; });
-    addFaces("ZMAX", [&](int a, int b) { return std::array<int, 4>{id(a, b, n), id(a + 1, b, n), id(a + 1, b + 1, n), id(a, b + 1, n)}; });
+    addFaces("XMIN", [&](int a, int b) {
+        return std::array<int, 4>{id(0, a, b), id(0, a, b + 1), id(0, a + 1, b + 1), id(0, a + 1, b)};
+    });
+    addFaces("XMAX", [&](int a, int b) {
+        return std::array<int, 4>{id(n, a, b), id(n, a + 1, b), id(n, a + 1, b + 1), id(n, a, b + 1)};
+    });
+    addFaces("YMIN", [&](int a, int b) {
+        return std::array<int, 4>{id(a, 0, b), id(a + 1, 0, b), id(a + 1, 0, b + 1), id(a, 0, b + 1)};
+    });
+    addFaces("YMAX", [&](int a, int b) {
+        return std::array<int, 4>{id(a, n, b), id(a, n, b + 1), id(a + 1, n, b + 1), id(a + 1, n, b)};
+    });
+    addFaces("ZMIN", [&](int a, int b) {
+        return std::array<int, 4>{id(a, b, 0), id(a, b + 1, 0), id(a + 1, b + 1, 0), id(a + 1, b, 0)};
+    });
+    addFaces("ZMAX", [&](int a, int b) {
+        return std::array<int, 4>{id(a, b, n), id(a + 1, b, n), id(a + 1, b + 1, n), id(a, b + 1, n)};
+    });
     std::vector<int> boundary;
     for (int node = 0; node < m->nodeCount(); ++node) {
         const auto& x = m->coords[node];

@@ -38,8 +38,8 @@ inline std::string scratchDir(const std::string& name) {
 
 struct ProbeMesh {
     std::vector<std::array<double, 3>> nodes;
-    std::vector<int> cellType;                 // MED code
-    std::vector<std::vector<int>> cells;       // MED node order, 0-based
+    std::vector<int> cellType;            // MED code
+    std::vector<std::vector<int>> cells;  // MED node order, 0-based
     std::map<std::string, std::vector<int>> cellGroups, nodeGroups;
 };
 

@@ -29,7 +29,8 @@ struct RunResult {
     // Every file of the output folder (to check that nothing else is left behind).
     std::vector<std::string> files() const {
         std::vector<std::string> out;
-        for (const auto& e : std::filesystem::directory_iterator(dir / "out")) out.push_back(e.path().filename().string());
+        for (const auto& e : std::filesystem::directory_iterator(dir / "out"))
+            out.push_back(e.path().filename().string());
         return out;
     }
 };
@@ -53,8 +54,8 @@ inline RunResult runMiniaster(const std::filesystem::path& dir, const std::strin
                               const std::string& env = "") {
     RunResult r;
     r.dir = dir;
-    const std::string cmd = "cd '" + dir.string() + "' && " + env + " '" + std::string(MINIASTER_BINARY) + "' run '" + input +
-                            "' --out-dir out " + extra + " 2>&1";
+    const std::string cmd = "cd '" + dir.string() + "' && " + env + " '" + std::string(MINIASTER_BINARY) + "' run '" +
+                            input + "' --out-dir out " + extra + " 2>&1";
     FILE* pipe = popen(cmd.c_str(), "r");
     if (!pipe) return r;
     std::array<char, 4096> buffer{};
@@ -75,8 +76,9 @@ inline RunResult runComm(const std::string& comm, const std::string& extra = "",
 // The run failed with exactly this error paragraph: exit 1, diagnostic in the .mess, no .resu.
 inline void expectError(const RunResult& r, const std::string& paragraph, const std::string& diag = "<F>_ERROR") {
     EXPECT_EQ(r.status, 1) << r.output;
-    EXPECT_NE(r.output.find("\n" + paragraph + "\n"), std::string::npos)
-        << "expected:\n" << paragraph << "\ngot:\n" << r.output;
+    EXPECT_NE(r.output.find("\n" + paragraph + "\n"), std::string::npos) << "expected:\n"
+                                                                         << paragraph << "\ngot:\n"
+                                                                         << r.output;
     EXPECT_NE(r.output.find("--- DIAGNOSTIC JOB : " + diag + "\n"), std::string::npos) << r.output;
     EXPECT_FALSE(r.exists("out/t.resu")) << "no result file after an error";
     const std::string mess = r.file("out/t.mess");

@@ -19,17 +19,24 @@ inline std::string ssnv511Preamble(const Ssnv511Scene& s = {}) {
     const std::string para = s.threeD ? "['X', 'Y', 'Z']" : "['X', 'Y']";
     const std::string z = s.threeD ? ", 0" : "";
     const std::string f = s.prefix;
-    std::string comm = "DEBUT()\n"
-                       "MA = LIRE_MAILLAGE(FORMAT='MED')\n"
-                       "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(GROUP_MA=" + s.groups +
-                       ", PHENOMENE='MECANIQUE', MODELISATION='" + (s.threeD ? "3D" : "D_PLAN") + "'))\n"
-                       "LN1 = FORMULE(VALE='" + s.ln1 + "', NOM_PARA=" + para + ")\n"
-                       "LN2 = FORMULE(VALE='X', NOM_PARA=" + para + ")\n" +
-                       f + "1 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN1))\n";
+    std::string comm =
+        "DEBUT()\n"
+        "MA = LIRE_MAILLAGE(FORMAT='MED')\n"
+        "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(GROUP_MA=" +
+        s.groups + ", PHENOMENE='MECANIQUE', MODELISATION='" + (s.threeD ? "3D" : "D_PLAN") +
+        "'))\n"
+        "LN1 = FORMULE(VALE='" +
+        s.ln1 + "', NOM_PARA=" + para +
+        ")\n"
+        "LN2 = FORMULE(VALE='X', NOM_PARA=" +
+        para + ")\n" + f +
+        "1 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN1))\n";
     if (s.interfaces == 3)
         for (const char* branch : {"2", "3"})
-            comm += f + branch + " = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2), "
-                    "JONCTION=_F(FISSURE=" + f + "1, POINT=(0, " + (branch[0] == '2' ? "5" : "-5") + z + ")))\n";
+            comm += f + branch +
+                    " = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2), "
+                    "JONCTION=_F(FISSURE=" +
+                    f + "1, POINT=(0, " + (branch[0] == '2' ? "5" : "-5") + z + ")))\n";
     return comm;
 }
 

@@ -77,7 +77,8 @@ inline std::shared_ptr<ma::Mesh> slab(int n, ma::CellType kind) {
                 volu.push_back(m->addCell(kind, std::vector<int>(h.begin(), h.end())));
             } else {
                 // Six tetrahedra around the diagonal 0-6 (positive orientation).
-                const int t[6][4] = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6}, {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}};
+                const int t[6][4] = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6},
+                                     {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}};
                 for (const auto& tt : t)
                     volu.push_back(m->addCell(kind, std::vector<int>{h[tt[0]], h[tt[1]], h[tt[2]], h[tt[3]]}));
             }

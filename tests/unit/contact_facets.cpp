@@ -49,7 +49,8 @@ void checkFacets(const Case& k) {
             EXPECT_GT(side->blockMeasure, 0.0);
         }
         // Normal from - to +: +e_y for FISS1, +e_x for the branches (level sets Y and X).
-        const std::array<double, 3> expected = f.crack == 0 ? std::array<double, 3>{0, 1, 0} : std::array<double, 3>{1, 0, 0};
+        const std::array<double, 3> expected =
+            f.crack == 0 ? std::array<double, 3>{0, 1, 0} : std::array<double, 3>{1, 0, 0};
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(f.normal[c], expected[c], 1e-12);
         // On the interface, never across the junction line of the other interface.
         for (const auto& v : f.vertices) EXPECT_NEAR(f.crack == 0 ? v[1] - k.y0 : v[0] - k.x0, 0.0, 1e-12);
@@ -76,15 +77,17 @@ void checkFacets(const Case& k) {
 }
 
 TEST(ContactFacets, CoverTheInterfacesAndSplitAtTheJunction) {
-    for (const Case& k : {Case{CellType::QUAD4, 5, 0, 0}, Case{CellType::TRIA3, 5, 0, 0}, Case{CellType::QUAD4, 7, 0.3, -0.2},
-                          Case{CellType::TRIA3, 6, 0.25, 0.35}, Case{CellType::HEXA8, 5, 0, 0}, Case{CellType::TETRA4, 5, 0, 0},
-                          Case{CellType::HEXA8, 4, 0.3, -0.4}})
+    for (const Case& k :
+         {Case{CellType::QUAD4, 5, 0, 0}, Case{CellType::TRIA3, 5, 0, 0}, Case{CellType::QUAD4, 7, 0.3, -0.2},
+          Case{CellType::TRIA3, 6, 0.25, 0.35}, Case{CellType::HEXA8, 5, 0, 0}, Case{CellType::TETRA4, 5, 0, 0},
+          Case{CellType::HEXA8, 4, 0.3, -0.4}})
         checkFacets(k);
 }
 
 TEST(ContactFacets, InterfacesAlongMeshEdgesAreMatchedAcrossParentCells) {
     // n even: x = 0 and y = 0 are node rows, the junction is a node.
-    for (const Case& k : {Case{CellType::QUAD4, 6, 0, 0}, Case{CellType::TRIA3, 6, 0, 0}, Case{CellType::HEXA8, 4, 0, 0}}) {
+    for (const Case& k :
+         {Case{CellType::QUAD4, 6, 0, 0}, Case{CellType::TRIA3, 6, 0, 0}, Case{CellType::HEXA8, 4, 0, 0}}) {
         checkFacets(k);
         const bool threeD = k.type == CellType::HEXA8;
         auto mesh = threeD ? xfemtest::slab(k.n, k.type) : xfemtest::square(k.n, k.type);
@@ -177,7 +180,8 @@ TEST(ContactFacets, SliverPiecesIn3DKeepEveryFacet) {
                     ASSERT_NE(cut, nullptr);
                     const auto it = std::find(cut->cracks.begin(), cut->cracks.end(), f.crack);
                     ASSERT_NE(it, cut->cracks.end());
-                    EXPECT_EQ(cut->subcells[side->subcell].heaviside[it - cut->cracks.begin()], side == &f.minus ? -1 : 1);
+                    EXPECT_EQ(cut->subcells[side->subcell].heaviside[it - cut->cracks.begin()],
+                              side == &f.minus ? -1 : 1);
                     ASSERT_EQ(side->ref.size(), 3u);
                 }
                 // both sides see the same physical points (the block across may be in another cell)
@@ -227,7 +231,8 @@ TEST(ContactFacets, SingleBranchJunctionKeepsEveryFacet) {
                     ASSERT_NE(cut, nullptr);
                     const auto it = std::find(cut->cracks.begin(), cut->cracks.end(), f.crack);
                     ASSERT_NE(it, cut->cracks.end());
-                    EXPECT_EQ(cut->subcells[side->subcell].heaviside[it - cut->cracks.begin()], side == &f.minus ? -1 : 1);
+                    EXPECT_EQ(cut->subcells[side->subcell].heaviside[it - cut->cracks.begin()],
+                              side == &f.minus ? -1 : 1);
                 }
                 if (f.crack == 1) {
                     for (const auto& v : f.vertices) EXPECT_GT(v[1] - y0, -1e-14);  // FISS2 above FISS1 only

@@ -33,12 +33,12 @@ struct Expected {
 // bibfor/elements/xminte.F90 for INTEG = 10 ORDRE_INT + (1 NOEUD, 2 GAUSS, 3 SIMPSON, 4 NCOTES), and
 // the X-FEM contact elements' TR3 'GAUSS' = FPG12.
 const Expected kTable[] = {
-    {"NOEUD", 0, "NOEU", "NOEU"},    {"GAUSS", 1, "FPG2", "FPG3"},    {"GAUSS", 2, "FPG2", "FPG3"},
-    {"GAUSS", 3, "FPG3", "FPG4"},    {"GAUSS", 4, "FPG4", "FPG6"},    {"GAUSS", 5, "FPG4", "FPG7"},
-    {"GAUSS", 6, "FPG4", "FPG12"},   {"SIMPSON", 1, "SIMP", "SIMP"},  {"SIMPSON", 2, "SIMP1", ""},
-    {"SIMPSON", 3, "SIMP1", ""},     {"SIMPSON", 4, "SIMP1", ""},     {"NCOTES", 3, "COTES", ""},
-    {"NCOTES", 4, "COTES1", ""},     {"NCOTES", 5, "COTES1", ""},     {"NCOTES", 6, "COTES2", ""},
-    {"NCOTES", 7, "COTES2", ""},     {"NCOTES", 8, "COTES2", ""},
+    {"NOEUD", 0, "NOEU", "NOEU"},  {"GAUSS", 1, "FPG2", "FPG3"},   {"GAUSS", 2, "FPG2", "FPG3"},
+    {"GAUSS", 3, "FPG3", "FPG4"},  {"GAUSS", 4, "FPG4", "FPG6"},   {"GAUSS", 5, "FPG4", "FPG7"},
+    {"GAUSS", 6, "FPG4", "FPG12"}, {"SIMPSON", 1, "SIMP", "SIMP"}, {"SIMPSON", 2, "SIMP1", ""},
+    {"SIMPSON", 3, "SIMP1", ""},   {"SIMPSON", 4, "SIMP1", ""},    {"NCOTES", 3, "COTES", ""},
+    {"NCOTES", 4, "COTES1", ""},   {"NCOTES", 5, "COTES1", ""},    {"NCOTES", 6, "COTES2", ""},
+    {"NCOTES", 7, "COTES2", ""},   {"NCOTES", 8, "COTES2", ""},
 };
 
 double factorial(int n) { return n <= 1 ? 1.0 : n * factorial(n - 1); }
@@ -78,8 +78,9 @@ void expectFacetRule(const contacttest::Scene& s, const QuadratureRule& rule, co
                     q += terms.points()[p].weight * std::pow(l[0], i) * std::pow(l[1], j);
                 }
                 // Segment: L i! / (i + 1)!; triangle: 2 A i! j! / (i + j + 2)!.
-                const double exact = dim == 2 ? facet.measure / (i + 1)
-                                              : 2.0 * facet.measure * factorial(i) * factorial(j) / factorial(i + j + 2);
+                const double exact = dim == 2
+                                         ? facet.measure / (i + 1)
+                                         : 2.0 * facet.measure * factorial(i) * factorial(j) / factorial(i + j + 2);
                 EXPECT_NEAR(q, exact, 1e-12 * facet.measure) << what << " l1^" << i << " l2^" << j;
             }
         if (rule.family == "NOEU") {
@@ -209,9 +210,9 @@ TEST(ContactIntegration, TraceDegreeOfTheParentShapeFunctions) {
     using P = std::vector<Vec>;
     EXPECT_EQ(facetTraceDegree(CellType::TRIA3, P{{0.1, 0.2, 0}, {0.7, 0.3, 0}}), 1);
     EXPECT_EQ(facetTraceDegree(CellType::TETRA4, P{{0.1, 0.2, 0.1}, {0.7, 0.1, 0.2}, {0.1, 0.1, 0.6}}), 1);
-    EXPECT_EQ(facetTraceDegree(CellType::QUAD4, P{{-1, 0.2, 0}, {1, 0.2, 0}}), 1);       // along eta = 0.2
-    EXPECT_EQ(facetTraceDegree(CellType::QUAD4, P{{-1, -1, 0}, {1, 1, 0}}), 2);          // slanted: xi eta
-    EXPECT_EQ(facetTraceDegree(CellType::QUAD4, P{{-1, 0.2, 0}, {1, 0.2 + 1e-12, 0}}), 1);  // round-off
+    EXPECT_EQ(facetTraceDegree(CellType::QUAD4, P{{-1, 0.2, 0}, {1, 0.2, 0}}), 1);                 // along eta = 0.2
+    EXPECT_EQ(facetTraceDegree(CellType::QUAD4, P{{-1, -1, 0}, {1, 1, 0}}), 2);                    // slanted: xi eta
+    EXPECT_EQ(facetTraceDegree(CellType::QUAD4, P{{-1, 0.2, 0}, {1, 0.2 + 1e-12, 0}}), 1);         // round-off
     EXPECT_EQ(facetTraceDegree(CellType::HEXA8, P{{0.3, -1, -1}, {0.3, 1, -1}, {0.3, 1, 1}}), 2);  // eta zeta
     EXPECT_EQ(facetTraceDegree(CellType::HEXA8, P{{1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}), 3);
     EXPECT_EQ(gaussOrderFor(2, 2), 1);  // SE2 FPG2, degree 3

@@ -12,9 +12,7 @@ namespace {
 std::string errorOf(double bytes) {
     try {
         ma::checkAllocation(bytes, "the list");
-    } catch (const ma::UserError& e) {
-        return e.what();
-    }
+    } catch (const ma::UserError& e) { return e.what(); }
     return "(no error)";
 }
 

@@ -87,14 +87,16 @@ TEST(Messages, AlarmBoxFramesEveryLine) {
     msg().alarm(TEST0_11);
     msg().alarm(SOUSTRUC_37, "G1");
     const std::string bar = "   !" + std::string(70, '-') + "!\n";
-    const std::string tail = "   ! Ceci est une alarme. Si vous ne comprenez pas le sens de cette\n"
-                             "   ! alarme, vous pouvez obtenir des resultats inattendus !\n";
+    const std::string tail =
+        "   ! Ceci est une alarme. Si vous ne comprenez pas le sens de cette\n"
+        "   ! alarme, vous pouvez obtenir des resultats inattendus !\n";
     EXPECT_EQ(msg().messText(),
-              bar + "   ! <A> <TEST0_11>\n"
-                    "   ! A non-regression test with a null VALE_CALC is meaningless: the check is skipped.\n"
-                    "   ! Give ORDRE_GRANDEUR (with CRITERE='ABSOLU') or a reference value.\n" +
-                  tail + bar + bar + "   ! <A> <SOUSTRUC_37>\n   ! node group 'G1' already exists: it is kept as it is\n" +
-                  tail + bar);
+              bar +
+                  "   ! <A> <TEST0_11>\n"
+                  "   ! A non-regression test with a null VALE_CALC is meaningless: the check is skipped.\n"
+                  "   ! Give ORDRE_GRANDEUR (with CRITERE='ABSOLU') or a reference value.\n" +
+                  tail + bar + bar +
+                  "   ! <A> <SOUSTRUC_37>\n   ! node group 'G1' already exists: it is kept as it is\n" + tail + bar);
     EXPECT_EQ(msg().alarmCount(), 2);
     msg().reset();
 }

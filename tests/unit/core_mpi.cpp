@@ -51,9 +51,7 @@ TEST(Mpi, AFailureOnTheLastProcessIsThrownOnEveryProcess) {
             if (mpi::rank() > 0 || mpi::size() == 1) throw UserError("rank " + std::to_string(mpi::rank()));
         });
         FAIL() << "no exception on rank " << mpi::rank();
-    } catch (const UserError& e) {
-        EXPECT_EQ(std::string(e.what()), mpi::size() == 1 ? "rank 0" : "rank 1");
-    }
+    } catch (const UserError& e) { EXPECT_EQ(std::string(e.what()), mpi::size() == 1 ? "rank 0" : "rank 1"); }
     EXPECT_NO_THROW(mpi::collectively([] {}));
     EXPECT_FALSE(mpi::agree(std::nullopt).has_value());
 }

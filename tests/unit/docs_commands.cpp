@@ -88,10 +88,10 @@ TEST(CommandMap, NamesOnlyFilesThatExist) {
         const std::string line = std::string((*it)[0]).substr(1);
         for (std::sregex_iterator p(line.begin(), line.end(), path); p != end; ++p, ++files) {
             const std::string name = (*p)[1];
-            const bool exists = (*p)[3].matched
-                                    ? std::filesystem::exists(root / name) || std::filesystem::exists(root / "tests" / name)
-                                    : std::filesystem::exists(root / "src" / (name + ".hpp")) ||
-                                          std::filesystem::exists(root / (name + ".hpp"));
+            const bool exists =
+                (*p)[3].matched ? std::filesystem::exists(root / name) || std::filesystem::exists(root / "tests" / name)
+                                : std::filesystem::exists(root / "src" / (name + ".hpp")) ||
+                                      std::filesystem::exists(root / (name + ".hpp"));
             EXPECT_TRUE(exists) << name << " in the row " << line.substr(0, line.find(" |", 2)) << " |";
         }
     }
@@ -111,8 +111,9 @@ TEST(CommandMap, CatalogHasOneFilePerCommand) {
         file.add(one);
         ASSERT_EQ(one.commands().size(), 1u) << "parser/catalog/" << file.command << ".cpp adds several commands";
         EXPECT_EQ(one.commands().begin()->first, file.command) << "parser/catalog/" << file.command << ".cpp";
-        EXPECT_NE(fileText(folder / (std::string(file.command) + ".cpp")).find(std::string("cmd(\"") + file.command + "\""),
-                  std::string::npos)
+        EXPECT_NE(
+            fileText(folder / (std::string(file.command) + ".cpp")).find(std::string("cmd(\"") + file.command + "\""),
+            std::string::npos)
             << file.command << " is not defined in its own file";
     }
     EXPECT_EQ(files, listed) << "parser/catalog/*.cpp and parser/catalog/Commands.hpp differ";
@@ -128,10 +129,8 @@ TEST(CommandMap, CatalogColumnIsTheCommandsFile) {
     for (const auto& [name, cells] : commandRows()) {
         ASSERT_GE(cells.size(), 4u) << name;
         ++rows;
-        if (catalog.find(name))
-            EXPECT_EQ(cells[0], "`parser/catalog/" + name + ".cpp`") << name;
-        else
-            EXPECT_EQ(cells[0].rfind("—", 0), 0u) << name << " is not catalogued: its catalog entry is a dash";
+        if (catalog.find(name)) EXPECT_EQ(cells[0], "`parser/catalog/" + name + ".cpp`") << name;
+        else EXPECT_EQ(cells[0].rfind("—", 0), 0u) << name << " is not catalogued: its catalog entry is a dash";
     }
     EXPECT_EQ(rows, static_cast<int>(everyCommand().size()));
 }
@@ -158,7 +157,8 @@ TEST(CommandMap, ListedTestsCallTheCommand) {
         for (std::sregex_iterator it(listed.begin(), listed.end(), testFile), end; it != end; ++it, ++checked) {
             std::set<std::string> seen;
             const std::string text = testSources(tests / (*it)[1].str(), seen);
-            EXPECT_TRUE(std::regex_search(text, word)) << (*it)[1] << " is listed for " << name << " but does not call it";
+            EXPECT_TRUE(std::regex_search(text, word))
+                << (*it)[1] << " is listed for " << name << " but does not call it";
         }
     }
     EXPECT_GT(checked, 100);

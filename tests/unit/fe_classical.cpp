@@ -65,9 +65,7 @@ void expectSameBits(const Ref& ref, CellType type) {
 std::string errorOf(const std::function<void()>& f) {
     try {
         f();
-    } catch (const NumericalError& e) {
-        return e.what();
-    }
+    } catch (const NumericalError& e) { return e.what(); }
     return "no error";
 }
 
@@ -88,9 +86,9 @@ TEST(FeClassical, DispatchCoversTheModelDimensionsOnly) {
     EXPECT_TRUE(classical::dispatch(CellType::HEXA8, 3, count));
     EXPECT_TRUE(classical::dispatch(CellType::TETRA4, 3, count));
     EXPECT_EQ(seen, 4 + 1 + 8 + 1);
-    EXPECT_FALSE(classical::dispatch(CellType::QUAD4, 3, count));   // a face in a 3D model
-    EXPECT_FALSE(classical::dispatch(CellType::SEG2, 2, count));    // a skin cell
-    EXPECT_FALSE(classical::dispatch(CellType::QUAD8, 2, count));   // no element for it
+    EXPECT_FALSE(classical::dispatch(CellType::QUAD4, 3, count));  // a face in a 3D model
+    EXPECT_FALSE(classical::dispatch(CellType::SEG2, 2, count));   // a skin cell
+    EXPECT_FALSE(classical::dispatch(CellType::QUAD8, 2, count));  // no element for it
     EXPECT_EQ(seen, 14);
 }
 
@@ -125,7 +123,8 @@ TEST(FeClassical, ClockwiseCellIsTheSameElement) {
     for (int p = 0; p < 4; ++p) {
         int q = -1;
         for (int k = 0; k < 4; ++k)
-            if (std::abs(g[1].xyz[k][0] - g[0].xyz[p][0]) < 1e-14 && std::abs(g[1].xyz[k][1] - g[0].xyz[p][1]) < 1e-14) q = k;
+            if (std::abs(g[1].xyz[k][0] - g[0].xyz[p][0]) < 1e-14 && std::abs(g[1].xyz[k][1] - g[0].xyz[p][1]) < 1e-14)
+                q = k;
         ASSERT_GE(q, 0);
         EXPECT_NEAR(g[0].weight[p], g[1].weight[q], 1e-15);
         for (int a = 0; a < 4; ++a)
@@ -141,7 +140,8 @@ TEST(FeClassical, ClockwiseCellIsTheSameElement) {
 TEST(FeClassical, DegenerateCellIsReportedAsByTheGeneralPath) {
     Mesh mesh;
     mesh.dim = 2;
-    for (const auto& x : {std::array<double, 3>{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {1, 1e-20, 0}, {0, 1e-9, 0}, {1, 1e-9, 0}})
+    for (const auto& x :
+         {std::array<double, 3>{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {1, 1e-20, 0}, {0, 1e-9, 0}, {1, 1e-9, 0}})
         mesh.addNode(x);
     mesh.addCell(CellType::QUAD4, std::vector<int>{0, 1, 2, 3});  // flat: aligned nodes
     mesh.addCell(CellType::QUAD4, std::vector<int>{0, 1, 5, 4});  // 1 x 1e-9: thin, not degenerate
@@ -173,10 +173,12 @@ TEST(FeClassical, ThreadsDoNotChangeABit) {
     set(d, "DY", ConceptPtr(std::make_shared<LambdaFunction>([](double, double y, double) { return 1e-3 * y * y; })));
     auto& p = kw.addOccurrence("PRES_REP");
     setTexts(p, "GROUP_MA", {"RIGHT", "TOP"});
-    set(p, "PRES", ConceptPtr(std::make_shared<LambdaFunction>([](double x, double y, double) { return 10.0 * y - x; })));
+    set(p, "PRES",
+        ConceptPtr(std::make_shared<LambdaFunction>([](double x, double y, double) { return 10.0 * y - x; })));
     auto& f = kw.addOccurrence("FORCE_INTERNE");
     set(f, "TOUT", std::string("OUI"));
-    set(f, "FX", ConceptPtr(std::make_shared<LambdaFunction>([](double x, double y, double) { return std::sin(x * y); })));
+    set(f, "FX",
+        ConceptPtr(std::make_shared<LambdaFunction>([](double x, double y, double) { return std::sin(x * y); })));
     set(f, "FY", ConceptPtr(std::make_shared<LambdaFunction>([](double, double, double) { return -2.0; })));
     auto load = std::dynamic_pointer_cast<MechanicalLoad>(run("AFFE_CHAR_MECA_F", kw, "CHAR"));
     SolverOptions eigen;
@@ -211,7 +213,7 @@ TEST(FeClassical, ThreadedLoopsReportTheFirstBadElement) {
     using namespace fetest;
     msg().setEcho(false);
     auto mesh = planeMesh(100, 100, false);  // 10000 QUAD4: two workers when 2 threads are allowed
-    for (int cell : {7000, 5000}) {  // collapse two cells onto their first edge: zero Jacobians
+    for (int cell : {7000, 5000}) {          // collapse two cells onto their first edge: zero Jacobians
         auto* nodes = mesh->connectivity.data() + mesh->cellOffsets[cell];
         nodes[2] = nodes[1], nodes[3] = nodes[0];
     }

@@ -18,7 +18,8 @@ namespace {
 
 class TestEnrichment : public Enrichment {
 public:
-    TestEnrichment(std::shared_ptr<const Mesh> mesh, std::vector<int> cells) : mesh_(std::move(mesh)), cells_(std::move(cells)) {
+    TestEnrichment(std::shared_ptr<const Mesh> mesh, std::vector<int> cells)
+        : mesh_(std::move(mesh)), cells_(std::move(cells)) {
         enrichedNode_.assign(mesh_->nodeCount(), 0);
         for (int c : cells_)
             for (int n : mesh_->cellNodes(c)) enrichedNode_[n] = 1;
@@ -101,9 +102,7 @@ TEST(FeEnrichment, GenericKernelMatchesClassicalAndUnusedSlotsAreNeutralised) {
     for (int n = 0; n < mesh->nodeCount(); ++n) {
         for (int c = 0; c < 2; ++c) EXPECT_NEAR(u[0]->at(n, c), u[1]->at(n, c), 1e-12 * scale);
         EXPECT_EQ(u[1]->has(n, hx), numbering.slots(n) == 2);
-        if (u[1]->has(n, hx)) {
-            EXPECT_EQ(u[1]->at(n, hx), 0.0);
-        }
+        if (u[1]->has(n, hx)) { EXPECT_EQ(u[1]->at(n, hx), 0.0); }
     }
     ASSERT_EQ(s[0]->values.size(), s[1]->values.size());
     double smax = 0;
@@ -183,7 +182,8 @@ TEST(FeAdditionalTerms, SpringsJoinMatrixAndResidual) {
     // Both problems get it; in the pinned one the grounded spring sits on an imposed dof.
     const auto& right = mesh->cellGroups.get("RIGHT");
     const int n1 = mesh->cellNodes(right.front())[0], n2 = mesh->cellNodes(right.back())[1];
-    auto springs = std::make_shared<Springs>(dy, sprung.numbering().dof(n1, 0, 0), sprung.numbering().dof(n2, 0, 0), 1.0e4);
+    auto springs =
+        std::make_shared<Springs>(dy, sprung.numbering().dof(n1, 0, 0), sprung.numbering().dof(n2, 0, 0), 1.0e4);
     sprung.setAdditionalTerms(springs);
     pinned.setAdditionalTerms(springs);
     pinned.solveIncrement(0.0, ConvergenceOptions{});
@@ -194,5 +194,6 @@ TEST(FeAdditionalTerms, SpringsJoinMatrixAndResidual) {
     double scale = 0;
     for (double v : pinned.state()) scale = std::max(scale, std::abs(v));
     ASSERT_GT(scale, 0.0);
-    for (size_t i = 0; i < pinned.state().size(); ++i) EXPECT_NEAR(pinned.state()[i], sprung.state()[i], 1e-11 * scale) << i;
+    for (size_t i = 0; i < pinned.state().size(); ++i)
+        EXPECT_NEAR(pinned.state()[i], sprung.state()[i], 1e-11 * scale) << i;
 }

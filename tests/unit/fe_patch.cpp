@@ -102,8 +102,9 @@ void checkExact(const Result& res, const Model& model, const Linear& f, Modelisa
     const auto s = stressOf(f, model.dim, mod);
     double sscale = 0;
     for (double v : s) sscale = std::max(sscale, std::abs(v));
-    const std::vector<std::string> comps = model.dim == 2 ? std::vector<std::string>{"SIXX", "SIYY", "SIZZ", "SIXY"}
-                                                          : std::vector<std::string>{"SIXX", "SIYY", "SIZZ", "SIXY", "SIXZ", "SIYZ"};
+    const std::vector<std::string> comps =
+        model.dim == 2 ? std::vector<std::string>{"SIXX", "SIYY", "SIZZ", "SIXY"}
+                       : std::vector<std::string>{"SIXX", "SIYY", "SIZZ", "SIXY", "SIXZ", "SIYZ"};
     ASSERT_EQ(sief->components, comps);
     const size_t nc = comps.size();
     for (int p = 0; p < sief->pointCount(); ++p)
@@ -371,7 +372,8 @@ TEST(FeRelations, TwoTermRelationIsImposedExactly) {
         auto load = std::dynamic_pointer_cast<MechanicalLoad>(run("AFFE_CHAR_MECA", kw, "CHAR"));
         const double v0 = 1e-3;
         const int bl = mesh->nodeGroups.get("CORNER")[0], tl = mesh->nodeGroups.get("CORNER_TL")[0];
-        std::const_pointer_cast<MechanicalLoad>(load)->relations.push_back({{{bl, "DY", 1.0}, {tl, "DY", 1.0}}, 2 * v0});
+        std::const_pointer_cast<MechanicalLoad>(load)->relations.push_back(
+            {{{bl, "DY", 1.0}, {tl, "DY", 1.0}}, 2 * v0});
         auto res = mecaStatique(model, mat, {load}, method);
         const double sxx = 50.0;
         Linear f{};

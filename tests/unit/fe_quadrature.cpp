@@ -39,19 +39,39 @@ struct Case {
 
 TEST(FeQuadrature, RulesAreExactForTheirDegree) {
     const Case cases[] = {
-        {CellType::SEG2, "FPG1", 1, 1},    {CellType::SEG2, "FPG2", 3, 2},    {CellType::SEG2, "FPG3", 5, 3},
-        {CellType::SEG2, "FPG4", 7, 4},    {CellType::TRIA3, "FPG1", 1, 1},   {CellType::TRIA3, "FPG3", 2, 3},
-        {CellType::TRIA3, "FPG4", 3, 4},   {CellType::TRIA3, "FPG6", 4, 6},   {CellType::TRIA3, "FPG7", 5, 7},
-        {CellType::TRIA3, "FPG12", 6, 12}, {CellType::QUAD4, "FPG1", 1, 1},   {CellType::QUAD4, "FPG4", 3, 4},
-        {CellType::QUAD4, "FPG9", 5, 9},   {CellType::TETRA4, "FPG1", 1, 1},  {CellType::TETRA4, "FPG4", 2, 4},
-        {CellType::TETRA4, "FPG5", 3, 5},  {CellType::TETRA4, "FPG15", 5, 15}, {CellType::TETRA4, "FPG24", 6, 24},
+        {CellType::SEG2, "FPG1", 1, 1},
+        {CellType::SEG2, "FPG2", 3, 2},
+        {CellType::SEG2, "FPG3", 5, 3},
+        {CellType::SEG2, "FPG4", 7, 4},
+        {CellType::TRIA3, "FPG1", 1, 1},
+        {CellType::TRIA3, "FPG3", 2, 3},
+        {CellType::TRIA3, "FPG4", 3, 4},
+        {CellType::TRIA3, "FPG6", 4, 6},
+        {CellType::TRIA3, "FPG7", 5, 7},
+        {CellType::TRIA3, "FPG12", 6, 12},
+        {CellType::QUAD4, "FPG1", 1, 1},
+        {CellType::QUAD4, "FPG4", 3, 4},
+        {CellType::QUAD4, "FPG9", 5, 9},
+        {CellType::TETRA4, "FPG1", 1, 1},
+        {CellType::TETRA4, "FPG4", 2, 4},
+        {CellType::TETRA4, "FPG5", 3, 5},
+        {CellType::TETRA4, "FPG15", 5, 15},
+        {CellType::TETRA4, "FPG24", 6, 24},
         {CellType::HEXA8, "FPG1", 1, 1},
-        {CellType::HEXA8, "FPG8", 3, 8},   {CellType::HEXA8, "FPG27", 5, 27},
+        {CellType::HEXA8, "FPG8", 3, 8},
+        {CellType::HEXA8, "FPG27", 5, 27},
         // code_aster's other families (elraga): vertices, and the X-FEM contact facets' Newton-Cotes.
-        {CellType::SEG2, "NOEU", 1, 2},    {CellType::TRIA3, "NOEU", 1, 3},   {CellType::QUAD4, "NOEU", 1, 4},
-        {CellType::TETRA4, "NOEU", 1, 4},  {CellType::HEXA8, "NOEU", 1, 8},   {CellType::SEG2, "SIMP", 3, 3},
-        {CellType::SEG2, "SIMP1", 3, 5},   {CellType::SEG2, "COTES", 3, 4},   {CellType::SEG2, "COTES1", 5, 5},
-        {CellType::SEG2, "COTES2", 3, 10}, {CellType::TRIA3, "SIMP", 1, 6},
+        {CellType::SEG2, "NOEU", 1, 2},
+        {CellType::TRIA3, "NOEU", 1, 3},
+        {CellType::QUAD4, "NOEU", 1, 4},
+        {CellType::TETRA4, "NOEU", 1, 4},
+        {CellType::HEXA8, "NOEU", 1, 8},
+        {CellType::SEG2, "SIMP", 3, 3},
+        {CellType::SEG2, "SIMP1", 3, 5},
+        {CellType::SEG2, "COTES", 3, 4},
+        {CellType::SEG2, "COTES1", 5, 5},
+        {CellType::SEG2, "COTES2", 3, 10},
+        {CellType::TRIA3, "SIMP", 1, 6},
     };
     for (const auto& c : cases) {
         const auto& rule = quadratureRule(c.cell, c.family);
@@ -97,8 +117,8 @@ TEST(FeQuadrature, NamedFamiliesStopAtTheirDegree) {
     // The Newton-Cotes rules are exact one degree above their odd node count's polynomial only
     // (symmetry); the next even monomial is not integrated exactly, nor is TRIA3 SIMP's x^2 (1/10
     // instead of 1/12: elraga's weights 1/30, 4/30 make it a degree-1 rule).
-    const std::pair<const char*, int> seg[] = {{"SIMP", 4}, {"SIMP1", 4}, {"COTES", 4}, {"COTES1", 6}, {"COTES2", 4},
-                                               {"NOEU", 2}};
+    const std::pair<const char*, int> seg[] = {{"SIMP", 4},   {"SIMP1", 4},  {"COTES", 4},
+                                               {"COTES1", 6}, {"COTES2", 4}, {"NOEU", 2}};
     for (const auto& [family, power] : seg) {
         const auto& rule = quadratureRule(CellType::SEG2, family);
         double sum = 0;
@@ -111,12 +131,14 @@ TEST(FeQuadrature, NamedFamiliesStopAtTheirDegree) {
         for (int p = 0; p < rule.size(); ++p) sum += rule.weights[p] * rule.points[p][0] * rule.points[p][0];
         EXPECT_GT(std::abs(sum - exactMoment(CellType::TRIA3, 2, 0, 0)), 1e-3) << family;
     }
-    EXPECT_NEAR([] {
-        const auto& rule = quadratureRule(CellType::TRIA3, "SIMP");
-        double sum = 0;
-        for (int p = 0; p < rule.size(); ++p) sum += rule.weights[p] * rule.points[p][0] * rule.points[p][0];
-        return sum;
-    }(), 0.1, 1e-15);
+    EXPECT_NEAR(
+        [] {
+            const auto& rule = quadratureRule(CellType::TRIA3, "SIMP");
+            double sum = 0;
+            for (int p = 0; p < rule.size(); ++p) sum += rule.weights[p] * rule.points[p][0] * rule.points[p][0];
+            return sum;
+        }(),
+        0.1, 1e-15);
 }
 
 TEST(FeQuadrature, NoeuPointsAreTheVertices) {
@@ -185,7 +207,8 @@ TEST(FeShapeFunctions, InverseMapOfADistortedQuadAndHexa) {
     EXPECT_NEAR(back[1], xi[1], 1e-13);
 
     std::vector<std::array<double, 3>> hexa;
-    for (auto p : referenceNodes(CellType::HEXA8)) hexa.push_back({p[0] + 0.1 * p[1] * p[2], p[1] * 1.3, p[2] + 0.05 * p[0]});
+    for (auto p : referenceNodes(CellType::HEXA8))
+        hexa.push_back({p[0] + 0.1 * p[1] * p[2], p[1] * 1.3, p[2] + 0.05 * p[0]});
     const std::array<double, 3> eta{-0.4, 0.7, 0.2};
     x = mapToPhysical(CellType::HEXA8, hexa, eta);
     ASSERT_TRUE(mapToReference(CellType::HEXA8, hexa, x, back));

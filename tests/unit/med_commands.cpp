@@ -95,7 +95,8 @@ std::string mdumpBody(const std::string& path, bool numbering = true) {
     bool skipNext = false;
     while (std::getline(in, line)) {
         if (line.find("DUMP DU FICHIER") != std::string::npos || line.find("En-tete du fichier") != std::string::npos ||
-            line.find("Description associee") != std::string::npos || line.find("Nom du maillage") != std::string::npos ||
+            line.find("Description associee") != std::string::npos ||
+            line.find("Nom du maillage") != std::string::npos ||
             line.find("MAILLAGE DE CALCUL |") != std::string::npos || line.find("(**") == 0)
             continue;
         if (!numbering) {
@@ -104,7 +105,8 @@ std::string mdumpBody(const std::string& path, bool numbering = true) {
                 continue;
             }
             if (line.find("- Numeros :") != std::string::npos || line.find("ros de familles") != std::string::npos ||
-                line.find("Numeros des familles") != std::string::npos || line.find("Unites des coordonnees") != std::string::npos)
+                line.find("Numeros des familles") != std::string::npos ||
+                line.find("Unites des coordonnees") != std::string::npos)
                 skipNext = true;
             const auto at = line.find(" et de numero ");
             if (at != std::string::npos) line = line.substr(0, at);
@@ -138,16 +140,15 @@ std::shared_ptr<Result> makeResult(const std::shared_ptr<Mesh>& mesh, const std:
 std::string errorOf(const std::function<void()>& f) {
     try {
         f();
-    } catch (const UserError& e) {
-        return e.what();
-    }
+    } catch (const UserError& e) { return e.what(); }
     return "(no error)";
 }
 
 // The mesh as a .mail text in IMPR_RESU(FORMAT='ASTER')'s layout: 1PE21.14 coordinates, one
 // block per run of cells of one type, 7 nodes or members per line.
 std::string asMailText(const Mesh& m) {
-    std::string out = "TITRE\n written by the miniaster tests\nFINSF\n" + std::string(m.dim == 2 ? "COOR_2D" : "COOR_3D") + "\n";
+    std::string out =
+        "TITRE\n written by the miniaster tests\nFINSF\n" + std::string(m.dim == 2 ? "COOR_2D" : "COOR_3D") + "\n";
     for (int i = 0; i < m.nodeCount(); ++i) {
         out += fmt::format(" {}", m.nodeNames[size_t(i)]);
         for (int d = 0; d < m.dim; ++d) out += fmt::format(" {:.16E}", m.coords[size_t(i)][size_t(d)]);
@@ -170,7 +171,8 @@ std::string asMailText(const Mesh& m) {
     for (const auto* groups : {&m.nodeGroups, &m.cellGroups})
         for (const auto& g : groups->names()) {
             std::vector<std::string> members;
-            for (int e : groups->get(g)) members.push_back(groups == &m.nodeGroups ? m.nodeNames[size_t(e)] : m.cellNames[size_t(e)]);
+            for (int e : groups->get(g))
+                members.push_back(groups == &m.nodeGroups ? m.nodeNames[size_t(e)] : m.cellNames[size_t(e)]);
             out += std::string(groups == &m.nodeGroups ? "GROUP_NO" : "GROUP_MA") + "\n " + g + "\n";
             wrapped("", members);
             out += "FINSF\n";
@@ -201,8 +203,8 @@ TEST_F(MedCommands, LireMaillageLogsCountsAndGroups) {
 }
 
 TEST_F(MedCommands, RoundTripGivesTheSameFileForMdump4AndMeshio) {
-    for (const char* file : {"ssnv511a.mmed", "ssnv511b.mmed", "ssnv511c.mmed", "ssnv511d.mmed", "ssnv511g.mmed",
-                             "ssnv511h.mmed"}) {
+    for (const char* file :
+         {"ssnv511a.mmed", "ssnv511b.mmed", "ssnv511c.mmed", "ssnv511d.mmed", "ssnv511g.mmed", "ssnv511h.mmed"}) {
         const std::string original = test::astest(file);
         auto m = lire(original);
         KeywordSet kw;
@@ -403,7 +405,8 @@ TEST_F(MedCommands, FailedAppendLeavesTheFileAsItWas) {
               "the MED file already holds a mesh named 'MAILLAG' with 36 nodes, not the 72 nodes of the mesh to print");
     EXPECT_EQ(mdumpBody(path), before);
     size_t files = 0;
-    for (const auto& e : std::filesystem::directory_iterator(dir)) files += e.path().filename().string().rfind("fort.83", 0) == 0;
+    for (const auto& e : std::filesystem::directory_iterator(dir))
+        files += e.path().filename().string().rfind("fort.83", 0) == 0;
     EXPECT_EQ(files, 1u);  // no temporary file left
 }
 

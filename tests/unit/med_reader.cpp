@@ -56,15 +56,14 @@ double signedVolumeTetra(const Mesh& m, int c) {
     double u[3], v[3], w[3];
     for (int i = 0; i < 3; ++i) u[i] = b[i] - a[i], v[i] = cc[i] - a[i], w[i] = d[i] - a[i];
     return (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-            u[2] * (v[0] * w[1] - v[1] * w[0])) / 6.0;
+            u[2] * (v[0] * w[1] - v[1] * w[0])) /
+           6.0;
 }
 
 std::string errorOf(const std::function<void()>& f) {
     try {
         f();
-    } catch (const UserError& e) {
-        return e.what();
-    } catch (const NotImplemented& e) {
+    } catch (const UserError& e) { return e.what(); } catch (const NotImplemented& e) {
         return std::string("NotImplemented: ") + e.what();
     }
     return "(no error)";
@@ -145,9 +144,7 @@ TEST(MedReader, AstestTetra4MeshesArePositive) {
         EXPECT_FALSE(m->nodeGroups.has("SD"));  // ssnv511d creates GROUP_NO SD/SG itself
         expectSameAsProbe(*m, path);
         for (int c = 0; c < m->cellCount(); ++c)
-            if (m->cellTypes[c] == CellType::TETRA4) {
-                EXPECT_GT(signedVolumeTetra(*m, c), 0.0) << file << c;
-            }
+            if (m->cellTypes[c] == CellType::TETRA4) { EXPECT_GT(signedVolumeTetra(*m, c), 0.0) << file << c; }
     }
     auto h = med::readMesh(test::astest("ssnv511h.mmed"));
     EXPECT_EQ(countType(*h, CellType::TRIA3), 216);
@@ -206,9 +203,9 @@ TEST(MedReader, QuadraticCellsAndMultiGroupFamiliesFromAnotherWriter) {
 }
 
 TEST(MedCellOrder, TablesArePermutationsAndRoundTrip) {
-    for (CellType t : {CellType::TETRA4, CellType::TETRA10, CellType::PYRA5, CellType::PYRA13,
-                       CellType::PENTA6, CellType::PENTA15, CellType::PENTA18, CellType::HEXA8,
-                       CellType::HEXA20, CellType::HEXA27, CellType::QUAD9, CellType::SEG3}) {
+    for (CellType t :
+         {CellType::TETRA4, CellType::TETRA10, CellType::PYRA5, CellType::PYRA13, CellType::PENTA6, CellType::PENTA15,
+          CellType::PENTA18, CellType::HEXA8, CellType::HEXA20, CellType::HEXA27, CellType::QUAD9, CellType::SEG3}) {
         const int n = nodeCount(t);
         std::vector<int> med(n), internal(n), back(n);
         for (int i = 0; i < n; ++i) med[i] = 100 + i;
@@ -237,8 +234,7 @@ TEST(MedReader, BadInputIsAClearUserError) {
 
     auto text = dir + "/text.med";
     std::ofstream(text) << "this is not a MED file\n";
-    EXPECT_EQ(errorOf([&] { med::readMesh(text); }),
-              "file '" + text + "' is not a MED file: it is not in HDF5 format");
+    EXPECT_EQ(errorOf([&] { med::readMesh(text); }), "file '" + text + "' is not a MED file: it is not in HDF5 format");
 
     auto truncated = dir + "/truncated.med";
     std::filesystem::copy_file(test::astest("ssnv511g.mmed"), truncated);
@@ -257,8 +253,9 @@ TEST(MedReader, BadInputIsAClearUserError) {
     test::runCommand("/usr/bin/python3 -c \"import h5py; f = h5py.File('" + damaged +
                      "', 'r+'); del f['/ENS_MAA/MA/-0000000000000000001-0000000000000000001/MAI/QU4/NOD']\"");
     EXPECT_EQ(errorOf([&] { med::readMesh(damaged); }),
-              "MED file '" + damaged + "' is damaged or truncated: cannot read the connectivity of the QUAD4 cells "
-              "of mesh 'MA'");
+              "MED file '" + damaged +
+                  "' is damaged or truncated: cannot read the connectivity of the QUAD4 cells "
+                  "of mesh 'MA'");
 
     auto empty = dir + "/empty.med";
     {

@@ -9,19 +9,19 @@
 
 #include "med_io/MedReader.hpp"
 #include "med_io/MedWriter.hpp"
-#include "mesh/MeshQueries.hpp"
 #include "med_test_support.hpp"
+#include "mesh/MeshQueries.hpp"
 
 using namespace ma;
 
 namespace {
 
-using Edges = std::vector<std::pair<int, int>>;       // 1-based vertex pairs
-using Faces = std::vector<std::vector<int>>;          // 1-based vertex lists
+using Edges = std::vector<std::pair<int, int>>;  // 1-based vertex pairs
+using Faces = std::vector<std::vector<int>>;     // 1-based vertex lists
 
 // Builds a cell from its vertices plus the centres of `edges`, `faces` and optionally the cell.
-int addCell(Mesh& m, CellType t, const std::vector<Vec3>& vertices, const Edges& edges, const Faces& faces,
-            bool centre, const std::string& group) {
+int addCell(Mesh& m, CellType t, const std::vector<Vec3>& vertices, const Edges& edges, const Faces& faces, bool centre,
+            const std::string& group) {
     std::vector<int> nodes;
     for (const auto& v : vertices) nodes.push_back(m.addNode(v));
     auto mean = [&](const std::vector<int>& ids) {
@@ -46,7 +46,8 @@ int addCell(Mesh& m, CellType t, const std::vector<Vec3>& vertices, const Edges&
 Vec3 shift(Vec3 v, double dx) { return {v[0] + dx, v[1], v[2]}; }
 
 std::vector<std::vector<int>> rawConnectivity(const std::string& path, const std::string& medType) {
-    std::istringstream in(test::runCommand("/usr/bin/python3 " + test::probeScript() + " rawconn '" + path + "' " + medType));
+    std::istringstream in(
+        test::runCommand("/usr/bin/python3 " + test::probeScript() + " rawconn '" + path + "' " + medType));
     std::vector<std::vector<int>> rows;
     std::string line;
     while (std::getline(in, line)) {
@@ -76,7 +77,8 @@ TEST(MedWriter, VolumeNodeOrdersFollowTheMedNumbering) {
     Mesh m;
     m.dim = 3;
     m.name = "CELLS";
-    const Edges hexEdges{{1, 2}, {2, 3}, {3, 4}, {4, 1}, {1, 5}, {2, 6}, {3, 7}, {4, 8}, {5, 6}, {6, 7}, {7, 8}, {8, 5}};
+    const Edges hexEdges{{1, 2}, {2, 3}, {3, 4}, {4, 1}, {1, 5}, {2, 6},
+                         {3, 7}, {4, 8}, {5, 6}, {6, 7}, {7, 8}, {8, 5}};
     const Faces hexFaces{{1, 2, 3, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 4, 8, 7}, {4, 1, 5, 8}, {5, 6, 7, 8}};
     const std::vector<Vec3> hex{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
     const Edges penEdges{{1, 2}, {2, 3}, {3, 1}, {1, 4}, {2, 5}, {3, 6}, {4, 5}, {5, 6}, {6, 4}};
@@ -111,7 +113,8 @@ TEST(MedWriter, VolumeNodeOrdersFollowTheMedNumbering) {
     }
 
     // MED numbering, from the MED-fichier reference element descriptions.
-    const Edges medHexEdges{{1, 2}, {2, 3}, {3, 4}, {4, 1}, {5, 6}, {6, 7}, {7, 8}, {8, 5}, {1, 5}, {2, 6}, {3, 7}, {4, 8}};
+    const Edges medHexEdges{{1, 2}, {2, 3}, {3, 4}, {4, 1}, {5, 6}, {6, 7},
+                            {7, 8}, {8, 5}, {1, 5}, {2, 6}, {3, 7}, {4, 8}};
     const Faces medHexFaces{{1, 2, 3, 4}, {1, 5, 6, 2}, {2, 6, 7, 3}, {3, 7, 8, 4}, {4, 8, 5, 1}, {5, 8, 7, 6}};
     const Edges medPenEdges{{1, 2}, {2, 3}, {3, 1}, {4, 5}, {5, 6}, {6, 4}, {1, 4}, {2, 5}, {3, 6}};
     const Faces medPenFaces{{1, 2, 5, 4}, {2, 3, 6, 5}, {3, 1, 4, 6}};
@@ -163,7 +166,8 @@ TEST(MedWriter, VolumeNodeOrdersFollowTheMedNumbering) {
     for (int c = 0; c < m.cellCount(); ++c) {
         const int b = back->cellGroups.get(m.cellGroups.names()[c])[0];  // one group per cell
         auto x = m.cellNodes(c), y = back->cellNodes(b);
-        EXPECT_EQ(std::vector<int>(x.begin(), x.end()), std::vector<int>(y.begin(), y.end())) << cellTypeName(m.cellTypes[c]);
+        EXPECT_EQ(std::vector<int>(x.begin(), x.end()), std::vector<int>(y.begin(), y.end()))
+            << cellTypeName(m.cellTypes[c]);
     }
     std::filesystem::remove_all(dir);
 }

@@ -27,9 +27,7 @@ std::shared_ptr<Mesh> parse(const std::string& text, AsterMeshReport* report = n
 std::string errorOf(const std::string& text) {
     try {
         parse(text);
-    } catch (const UserError& e) {
-        return e.what();
-    }
+    } catch (const UserError& e) { return e.what(); }
     return "(no error)";
 }
 
@@ -57,8 +55,13 @@ std::vector<ReferenceCell> referenceCells() {
     const std::vector<std::vector<int>> hexEdges{{1, 2}, {2, 3}, {3, 4}, {4, 1}, {1, 5}, {2, 6},
                                                  {3, 7}, {4, 8}, {5, 6}, {6, 7}, {7, 8}, {8, 5}};
     auto hex27 = hexEdges;
-    for (std::vector<int> f : {std::vector<int>{1, 2, 3, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 4, 8, 7}, {4, 1, 5, 8},
-                               {5, 6, 7, 8}, {1, 2, 3, 4, 5, 6, 7, 8}})
+    for (std::vector<int> f : {std::vector<int>{1, 2, 3, 4},
+                               {1, 2, 6, 5},
+                               {2, 3, 7, 6},
+                               {3, 4, 8, 7},
+                               {4, 1, 5, 8},
+                               {5, 6, 7, 8},
+                               {1, 2, 3, 4, 5, 6, 7, 8}})
         hex27.push_back(f);
     const std::vector<Vec> tet{{0, 1, 0}, {0, 0, 1}, {0, 0, 0}, {1, 0, 0}};
     const std::vector<Vec> tri{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
@@ -94,7 +97,8 @@ std::string meshioReadable(const Mesh& m, const std::string& path) {
     copy.coords = m.coords;
     copy.nodeNames = m.nodeNames;
     for (int c = 0; c < m.cellCount(); ++c)
-        if (meshioReads(m.cellTypes[size_t(c)])) copy.addCell(m.cellTypes[size_t(c)], m.cellNodes(c), m.cellNames[size_t(c)]);
+        if (meshioReads(m.cellTypes[size_t(c)]))
+            copy.addCell(m.cellTypes[size_t(c)], m.cellNodes(c), m.cellNames[size_t(c)]);
     med::MedWriter w(path, false);
     w.writeMesh(copy, "CELLS");
     w.commit();
@@ -183,7 +187,8 @@ TEST(AsterMeshReader, MedConversionReadsBackTheSameMesh) {
         std::vector<int> row;
         if (!meshioReads(t)) {
             const std::string medName = t == CellType::QUAD9 ? "QU9" : "H27";
-            std::istringstream in(test::runCommand("/usr/bin/python3 " + test::probeScript() + " rawconn '" + path + "' " + medName));
+            std::istringstream in(
+                test::runCommand("/usr/bin/python3 " + test::probeScript() + " rawconn '" + path + "' " + medName));
             for (int v; in >> v;) row.push_back(v - 1);
         } else {
             EXPECT_EQ(probe.cellType[probed], int(t));
@@ -199,33 +204,34 @@ TEST(AsterMeshReader, MedConversionReadsBackTheSameMesh) {
 
 TEST(AsterMeshReader, FreeLayoutOfCodeAsterLexer) {
     AsterMeshReport report;
-    auto m = parse("% a comment line\n"
-                   "\n"
-                   " COOR_2D  % keyword after blanks\n"
-                   "A1 0 0\n"
-                   "A2 1.D+00, 0.      % D exponent, comma separator\n"
-                   "A3 10.D-1\n"    // record wrapped onto the next line
-                   "   2.E 0\n"     // blank between the exponent letter and its digits
-                   "A4 -.5 + 2.0e0\n"  // lone '+' is a separator
-                   "FINSF\n"
-                   "FINSF\n"        // a stray FINSF between blocks
-                   "TRIA3 NOM=IGNORED\n"
-                   "T_1 A1 A2\n"
-                   "    A3\n"
-                   "t2 A1 A3 A4\n"  // case kept
-                   "FINSF\n"
-                   "GROUP_MA NOM=ALL\n"
-                   "T_1 t2 T_1\n"   // repeated member: alarm, dropped
-                   "FINSF\n"
-                   "GROUP_NO\n"
-                   "corners A1 A2\n"
-                   " A3\n"
-                   "FINSF\n"
-                   "GROUP_NO NOM=NOTHING\n"  // empty group: alarm, not created
-                   "FINSF\n"
-                   "FIN\n"
-                   "after FIN: anything 1E5 #",
-                   &report);
+    auto m = parse(
+        "% a comment line\n"
+        "\n"
+        " COOR_2D  % keyword after blanks\n"
+        "A1 0 0\n"
+        "A2 1.D+00, 0.      % D exponent, comma separator\n"
+        "A3 10.D-1\n"       // record wrapped onto the next line
+        "   2.E 0\n"        // blank between the exponent letter and its digits
+        "A4 -.5 + 2.0e0\n"  // lone '+' is a separator
+        "FINSF\n"
+        "FINSF\n"  // a stray FINSF between blocks
+        "TRIA3 NOM=IGNORED\n"
+        "T_1 A1 A2\n"
+        "    A3\n"
+        "t2 A1 A3 A4\n"  // case kept
+        "FINSF\n"
+        "GROUP_MA NOM=ALL\n"
+        "T_1 t2 T_1\n"  // repeated member: alarm, dropped
+        "FINSF\n"
+        "GROUP_NO\n"
+        "corners A1 A2\n"
+        " A3\n"
+        "FINSF\n"
+        "GROUP_NO NOM=NOTHING\n"  // empty group: alarm, not created
+        "FINSF\n"
+        "FIN\n"
+        "after FIN: anything 1E5 #",
+        &report);
     EXPECT_EQ(m->dim, 2);
     ASSERT_EQ(m->nodeCount(), 4);
     EXPECT_EQ(m->coords[1], (Vec{1, 0, 0}));
@@ -240,24 +246,26 @@ TEST(AsterMeshReader, FreeLayoutOfCodeAsterLexer) {
     EXPECT_EQ(report.alarms[0].id, "MODELISA4_80");
     EXPECT_EQ(report.alarms[0].text, "mesh t.mail, line 23: GROUP_NO 'NOTHING' is empty and is not created");
     EXPECT_EQ(report.alarms[1].id, "MODELISA5_8");
-    EXPECT_EQ(report.alarms[1].text, "mesh t.mail, line 17: 'T_1' is repeated in GROUP_MA 'ALL'; the repeat is dropped");
+    EXPECT_EQ(report.alarms[1].text,
+              "mesh t.mail, line 17: 'T_1' is repeated in GROUP_MA 'ALL'; the repeat is dropped");
 }
 
 TEST(AsterMeshReader, NbligeHeaderLinesAndTitleLinesAreNotParsed) {
     AsterMeshReport report;
-    auto m = parse("TITRE ignored on the keyword line\n"
-                   " % kept verbatim, with 1E5 and #\n"
-                   "\n"
-                   "FINSF\n"
-                   "COOR_3D NOM=INDEFINI NBOBJ=1 NBLIGE=3\n"
-                   " 1E5 # header lines: skipped\n"
-                   " @ 2\n"
-                   "N1 1 2 3\n"
-                   "FINSF\n"
-                   "POI1\n"
-                   "P N1\n"
-                   "FIN\n",
-                   &report);
+    auto m = parse(
+        "TITRE ignored on the keyword line\n"
+        " % kept verbatim, with 1E5 and #\n"
+        "\n"
+        "FINSF\n"
+        "COOR_3D NOM=INDEFINI NBOBJ=1 NBLIGE=3\n"
+        " 1E5 # header lines: skipped\n"
+        " @ 2\n"
+        "N1 1 2 3\n"
+        "FINSF\n"
+        "POI1\n"
+        "P N1\n"
+        "FIN\n",
+        &report);
     EXPECT_EQ(report.title, (std::vector<std::string>{" % kept verbatim, with 1E5 and #", ""}));
     EXPECT_EQ(m->coords, (std::vector<Vec>{{1, 2, 3}}));
     EXPECT_EQ(m->cellTypes, std::vector<CellType>{CellType::POI1});
@@ -270,17 +278,20 @@ TEST(AsterMeshReader, DefectsAreReportedWithTheirLine) {
         EXPECT_EQ(errorOf(nodes + body), "mesh file 't.mail', " + message) << body;
     };
     // truncated files
-    expectError("TRIA3\nM1 N1 N2 N3\n", "line 7: end of file inside the TRIA3 block begun at line 6 (no FINSF, no FIN): "
-                                       "the file is truncated");
+    expectError("TRIA3\nM1 N1 N2 N3\n",
+                "line 7: end of file inside the TRIA3 block begun at line 6 (no FINSF, no FIN): "
+                "the file is truncated");
     expectError("TRIA3\nM1 N1 N2 N3\nFINSF\n", "line 8: end of file before the FIN line: the file is truncated");
     expectError("TRIA3\nM1 N1 N2\nFINSF\nFIN\n",
                 "line 8: the record of 'M1' begun at line 7 ends before its node 3 of 3 (TRIA3) (FINSF found)");
-    expectError("TRIA3\nM1 N1\n", "line 7: the record of 'M1' begun at line 7 ends before its node 2 of 3 (TRIA3) "
-                                  "(end of file found)");
+    expectError("TRIA3\nM1 N1\n",
+                "line 7: the record of 'M1' begun at line 7 ends before its node 2 of 3 (TRIA3) "
+                "(end of file found)");
     // unknown cell type, lower-case keyword
-    expectError("TRIA4\nM1 N1 N2 N3 N1\nFINSF\nFIN\n",
-                "line 6: 'TRIA4' is not a block keyword of a code_aster mesh file (TITRE, COOR_2D, COOR_3D, a cell type "
-                "such as QUAD4 or HEXA20, GROUP_NO, GROUP_MA, FINSF, FIN; in upper case)");
+    expectError(
+        "TRIA4\nM1 N1 N2 N3 N1\nFINSF\nFIN\n",
+        "line 6: 'TRIA4' is not a block keyword of a code_aster mesh file (TITRE, COOR_2D, COOR_3D, a cell type "
+        "such as QUAD4 or HEXA20, GROUP_NO, GROUP_MA, FINSF, FIN; in upper case)");
     EXPECT_NE(errorOf(nodes + "tria3\nM1 N1 N2 N3\nFINSF\nFIN\n").find("line 6: 'tria3' is not a block keyword"),
               std::string::npos);
     // a node missing, a group naming an unknown cell or node
@@ -296,12 +307,15 @@ TEST(AsterMeshReader, DefectsAreReportedWithTheirLine) {
     expectError("TRIA3\nM1 N1 N2 N3\nFINSF\nGROUP_MA\nG M1\nFINSF\nGROUP_MA NOM=G\nM1\nFINSF\nFIN\n",
                 "line 12: GROUP_MA 'G' is defined twice");
     // records
-    expectError("TRIA3\nM1 N1 N2 N3 N1\nFINSF\nFIN\n",
-                "line 7: 'N1' follows a complete record of the TRIA3 block (one record per line, each one starting its line)");
-    expectError("TRIA3\nM1 N1 N2 3\nFINSF\nFIN\n", "line 7: '3' where node 3 of 3 (TRIA3) of cell M1 is expected (a node name)");
+    expectError(
+        "TRIA3\nM1 N1 N2 N3 N1\nFINSF\nFIN\n",
+        "line 7: 'N1' follows a complete record of the TRIA3 block (one record per line, each one starting its line)");
+    expectError("TRIA3\nM1 N1 N2 3\nFINSF\nFIN\n",
+                "line 7: '3' where node 3 of 3 (TRIA3) of cell M1 is expected (a node name)");
     expectError("TRIA3\nCELL_NAME N1 N2 N3\nFINSF\nFIN\n",
                 "line 7: cell name 'CELL_NAME' has 9 characters: code_aster's node and cell names have at most 8");
-    expectError("COOR_3D\nN9 0 0 0\nFINSF\nFIN\n", "line 6: COOR_3D after a COOR_2D block (line 1): a mesh has one space dimension");
+    expectError("COOR_3D\nN9 0 0 0\nFINSF\nFIN\n",
+                "line 6: COOR_3D after a COOR_2D block (line 1): a mesh has one space dimension");
     expectError("GROUP_MA\nFINSF\nFIN\n", "line 6: GROUP_MA block without a group name");
     // lexer
     expectError("COOR_2D\nN4 1E5 0\nFINSF\nFIN\n",
@@ -325,9 +339,8 @@ TEST(AsterMeshReader, AMedFileIsNotReadAsText) {
     std::string what = "(no error)";
     try {
         readAsterMesh(med);
-    } catch (const UserError& e) {
-        what = e.what();
-    }
-    EXPECT_EQ(what, "mesh file '" + med + "' is a MED (HDF5) file, not a code_aster text mesh: read it with "
-                    "LIRE_MAILLAGE(FORMAT='MED')");
+    } catch (const UserError& e) { what = e.what(); }
+    EXPECT_EQ(what, "mesh file '" + med +
+                        "' is a MED (HDF5) file, not a code_aster text mesh: read it with "
+                        "LIRE_MAILLAGE(FORMAT='MED')");
 }

@@ -8,9 +8,9 @@
 #include "core/Messages.hpp"
 #include "core/Units.hpp"
 #include "med_io/MedReader.hpp"
+#include "med_test_support.hpp"
 #include "mesh/MeshQueries.hpp"
 #include "mesh/SkinOrientation.hpp"
-#include "med_test_support.hpp"
 #include "parser/Catalog.hpp"
 #include "parser/CommandRegistry.hpp"
 
@@ -51,7 +51,8 @@ std::vector<std::string> nodeNames(const Mesh& m, const std::string& group) {
 }
 std::vector<std::string> seq(const char* prefix, int from, int to, int step = 1) {
     std::vector<std::string> out;
-    for (int i = from; step > 0 ? i <= to : i >= to; i += step) out.push_back(std::string(prefix).append(std::to_string(i)));
+    for (int i = from; step > 0 ? i <= to : i >= to; i += step)
+        out.push_back(std::string(prefix).append(std::to_string(i)));
     return out;
 }
 
@@ -110,9 +111,7 @@ bool outward(const Mesh& m, int face, int bodyDim) {
 std::string errorOf(const std::function<void()>& f) {
     try {
         f();
-    } catch (const UserError& e) {
-        return e.what();
-    }
+    } catch (const UserError& e) { return e.what(); }
     return "(no error)";
 }
 
@@ -193,13 +192,16 @@ TEST_F(MeshCommands, OriePeau3dThenFaceNormaleOnSsnv511g) {
     KeywordSet kw = withMesh(m);
     kw.addOccurrence("ORIE_PEAU_3D").setValues("GROUP_MA", {std::string("ENV"), std::string("SD"), std::string("SG")});
     call("MODI_MAILLAGE", kw, m);
-    EXPECT_NE(msg().messText().find("NOMBRE DE MAILLES REORIENTEES : " + std::to_string(inward) + "\n"), std::string::npos)
+    EXPECT_NE(msg().messText().find("NOMBRE DE MAILLES REORIENTEES : " + std::to_string(inward) + "\n"),
+              std::string::npos)
         << msg().messText();
     for (int c : m->cellGroups.get("ENV")) EXPECT_TRUE(outward(*m, c, 3)) << m->cellNames[c];
 
     KeywordSet dg = withMesh(m);
-    const std::vector<std::pair<std::string, std::vector<double>>> wanted{
-        {"FACE", {0, 0, -1}}, {"SH", {0, 1, 0}}, {"SB", {0, -1, 0}}, {"TOP", {0, 0, 1}}};
+    const std::vector<std::pair<std::string, std::vector<double>>> wanted{{"FACE", {0, 0, -1}},
+                                                                          {"SH", {0, 1, 0}},
+                                                                          {"SB", {0, -1, 0}},
+                                                                          {"TOP", {0, 0, 1}}};
     for (const auto& [name, v] : wanted) {
         auto& occ = dg.addOccurrence("CREA_GROUP_MA");
         occ.setValues("NOM", {name});
@@ -298,8 +300,8 @@ TEST_F(MeshCommands, OriePeau2dTurnsEdgesOutward) {
     reverse(*m, 12);
     EXPECT_FALSE(outward(*m, 0, 2));
     KeywordSet kw = withMesh(m);
-    kw.addOccurrence("ORIE_PEAU_2D").setValues(
-        "GROUP_MA", {std::string("LB"), std::string("LD"), std::string("LH"), std::string("LG")});
+    kw.addOccurrence("ORIE_PEAU_2D")
+        .setValues("GROUP_MA", {std::string("LB"), std::string("LD"), std::string("LH"), std::string("LG")});
     call("MODI_MAILLAGE", kw, m);
     for (int c = 0; c < 20; ++c) EXPECT_TRUE(outward(*m, c, 2)) << c;
     EXPECT_NE(msg().messText().find("NOMBRE DE MAILLES REORIENTEES : 2"), std::string::npos);

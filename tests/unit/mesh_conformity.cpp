@@ -58,8 +58,8 @@ TEST(MeshConformity, QuadrangleSplitAlongTwoDiagonalsIsFound) {
 TEST(MeshConformity, HangingNodeIn2DIsFound) {
     Mesh m;
     m.dim = 2;
-    for (auto [x, y] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {2.0, 0.0}, {0.0, 0.5}, {1.0, 0.5}, {0.0, 1.0}, {1.0, 1.0},
-                        {2.0, 1.0}})
+    for (auto [x, y] :
+         {std::pair{0.0, 0.0}, {1.0, 0.0}, {2.0, 0.0}, {0.0, 0.5}, {1.0, 0.5}, {0.0, 1.0}, {1.0, 1.0}, {2.0, 1.0}})
         addNode(m, x, y, 0.0);
     addCell(m, CellType::QUAD4, {0, 1, 4, 3});
     addCell(m, CellType::QUAD4, {3, 4, 6, 5});
@@ -67,7 +67,7 @@ TEST(MeshConformity, HangingNodeIn2DIsFound) {
     addCell(m, CellType::SEG2, {0, 1});         // cells of lower dimension are not examined
     const auto r = meshConformity(m);
     EXPECT_EQ(r.dimension, 2);
-    EXPECT_EQ(r.unsharedFaces, 10);  // 12 edges, 3-4 shared
+    EXPECT_EQ(r.unsharedFaces, 10);    // 12 edges, 3-4 shared
     EXPECT_EQ(r.overlappingFaces, 3);  // 1-4, 4-6 against 6-1
     EXPECT_EQ(r.faultCells, (std::vector<int>{0, 1, 2}));
 }

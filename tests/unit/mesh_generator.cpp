@@ -13,9 +13,9 @@
 #include "core/Error.hpp"
 #include "med_io/MedReader.hpp"
 #include "med_io/MedWriter.hpp"
+#include "med_test_support.hpp"
 #include "mesh/MeshQueries.hpp"
 #include "scenes/Ssnv511Mesh.hpp"
-#include "med_test_support.hpp"
 
 using namespace ma;
 using Kind = Ssnv511MeshOptions::Kind;
@@ -56,7 +56,8 @@ double measure(const Mesh& m, int c) {
             double v = 0;
             const int tets[6][4] = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6}, {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}};
             for (const auto& t : tets) {
-                const double part = dot(cross(sub(X(t[1]), X(t[0])), sub(X(t[2]), X(t[0]))), sub(X(t[3]), X(t[0]))) / 6.0;
+                const double part =
+                    dot(cross(sub(X(t[1]), X(t[0])), sub(X(t[2]), X(t[0]))), sub(X(t[3]), X(t[0]))) / 6.0;
                 if (!(part > 0)) return -1.0;
                 v += part;
             }
@@ -121,7 +122,10 @@ TEST(Ssnv511Mesh, TwoDimensionalCountsGroupsAreaOrientation) {
             }
             EXPECT_NEAR(area, 100.0, 1e-11);
             // Edges: the right side, counter-clockwise (outward normal), covering the boundary.
-            const std::pair<const char*, Vec3> sides[] = {{"LB", {0, -1, 0}}, {"LD", {1, 0, 0}}, {"LH", {0, 1, 0}}, {"LG", {-1, 0, 0}}};
+            const std::pair<const char*, Vec3> sides[] = {{"LB", {0, -1, 0}},
+                                                          {"LD", {1, 0, 0}},
+                                                          {"LH", {0, 1, 0}},
+                                                          {"LG", {-1, 0, 0}}};
             for (const auto& [g, out] : sides) {
                 double length = 0;
                 for (int c : m->cellGroups.get(g)) {
@@ -206,7 +210,8 @@ std::vector<std::array<double, 3>> geometricCell(const Mesh& m, int c) {
     return x;
 }
 
-std::multiset<std::pair<int, std::vector<std::array<double, 3>>>> geometricCells(const Mesh& m, const std::vector<int>& cells) {
+std::multiset<std::pair<int, std::vector<std::array<double, 3>>>> geometricCells(const Mesh& m,
+                                                                                 const std::vector<int>& cells) {
     std::multiset<std::pair<int, std::vector<std::array<double, 3>>>> out;
     for (int c : cells) out.emplace(int(m.cellTypes[c]), geometricCell(m, c));
     return out;

@@ -21,7 +21,9 @@ private:
     std::string type_;
 };
 
-ConceptPtr fake(const std::string& type, const std::string& name = "OBJ") { return std::make_shared<FakeConcept>(type, name); }
+ConceptPtr fake(const std::string& type, const std::string& name = "OBJ") {
+    return std::make_shared<FakeConcept>(type, name);
+}
 
 KeywordSet validate(const std::string& command, const CallArguments& args) {
     const auto* c = Catalog::instance().find(command);
@@ -35,12 +37,12 @@ using V = CallValue;
 
 TEST(ParserCatalog, ScalarBecomesAListAndOneTupleIsUnwrapped) {
     // GROUP_MA (max > 1) given as a scalar, TOUT (max 1) given as a 1-tuple, MATER max 30.
-    auto kw = validate("AFFE_MATERIAU",
-                       {{"MAILLAGE", V::of(fake("maillage_sdaster"))},
-                        {"AFFE", V::list({V::factor({{"TOUT", V::list({V::of("OUI")})},
-                                                     {"MATER", V::of(fake("mater_sdaster"))}}),
-                                          V::factor({{"GROUP_MA", V::of("SURF")},
-                                                     {"MATER", V::of(fake("mater_sdaster"))}})})}});
+    auto kw =
+        validate("AFFE_MATERIAU",
+                 {{"MAILLAGE", V::of(fake("maillage_sdaster"))},
+                  {"AFFE",
+                   V::list({V::factor({{"TOUT", V::list({V::of("OUI")})}, {"MATER", V::of(fake("mater_sdaster"))}}),
+                            V::factor({{"GROUP_MA", V::of("SURF")}, {"MATER", V::of(fake("mater_sdaster"))}})})}});
     ASSERT_EQ(kw.factor("AFFE").size(), 2u);
     EXPECT_EQ(kw.factor("AFFE")[0].text("TOUT"), "OUI");
     EXPECT_EQ(kw.factor("AFFE")[1].texts("GROUP_MA"), std::vector<std::string>{"SURF"});
@@ -49,7 +51,8 @@ TEST(ParserCatalog, ScalarBecomesAListAndOneTupleIsUnwrapped) {
 
 TEST(ParserCatalog, TwoValuesForASingleValueKeywordIsAnError) {
     try {
-        validate("DEFI_FONCTION", {{"NOM_PARA", V::list({V::of("INST"), V::of("X")})}, {"VALE", V::list({V::of(0.0), V::of(1.0)})}});
+        validate("DEFI_FONCTION",
+                 {{"NOM_PARA", V::list({V::of("INST"), V::of("X")})}, {"VALE", V::list({V::of(0.0), V::of(1.0)})}});
         FAIL();
     } catch (const UserError& e) {
         EXPECT_STREQ(e.what(), "keyword NOM_PARA accepts at most 1 value, got 2: ('INST', 'X')");
@@ -98,14 +101,15 @@ TEST(ParserCatalog, DefaultOccurrenceOfAFactorKeyword) {
 TEST(ParserCatalog, BlocksFollowTheValueOfTheirKeyword) {
     auto table = V::of(fake("table_sdaster", "DEP"));
     // FILTRE with the default CRIT_COMP='EQ': CRITERE / PRECISION defaults; REGEXP: VALE_K only.
-    auto kw = validate("CALC_TABLE", {{"TABLE", table},
-                                      {"ACTION", V::list({V::factor({{"OPERATION", V::of("FILTRE")},
-                                                                     {"NOM_PARA", V::of("COOR_X")},
-                                                                     {"VALE", V::of(0.02)}}),
-                                                          V::factor({{"OPERATION", V::of("FILTRE")},
-                                                                     {"NOM_PARA", V::of("NOEUD")},
-                                                                     {"CRIT_COMP", V::of("REGEXP")},
-                                                                     {"VALE_K", V::of("NP")}})})}});
+    auto kw = validate(
+        "CALC_TABLE",
+        {{"TABLE", table},
+         {"ACTION",
+          V::list({V::factor({{"OPERATION", V::of("FILTRE")}, {"NOM_PARA", V::of("COOR_X")}, {"VALE", V::of(0.02)}}),
+                   V::factor({{"OPERATION", V::of("FILTRE")},
+                              {"NOM_PARA", V::of("NOEUD")},
+                              {"CRIT_COMP", V::of("REGEXP")},
+                              {"VALE_K", V::of("NP")}})})}});
     const auto& a = kw.factor("ACTION");
     EXPECT_EQ(a[0].text("CRIT_COMP"), "EQ");
     EXPECT_EQ(a[0].text("CRITERE"), "RELATIF");
@@ -115,18 +119,23 @@ TEST(ParserCatalog, BlocksFollowTheValueOfTheirKeyword) {
     // A keyword of another block is refused with the condition that would allow it.
     try {
         validate("CALC_TABLE", {{"TABLE", table},
-                                {"ACTION", V::factor({{"OPERATION", V::of("EXTR")}, {"NOM_PARA", V::of("DX")},
+                                {"ACTION", V::factor({{"OPERATION", V::of("EXTR")},
+                                                      {"NOM_PARA", V::of("DX")},
                                                       {"FORMULE", V::of(fake("formule"))}})}});
         FAIL();
     } catch (const UserError& e) {
-        EXPECT_STREQ(e.what(), "keyword ACTION[1]/FORMULE is not allowed here: it is only accepted when OPERATION='OPER'");
+        EXPECT_STREQ(e.what(),
+                     "keyword ACTION[1]/FORMULE is not allowed here: it is only accepted when OPERATION='OPER'");
     }
 }
 
 TEST(ParserCatalog, TestTableReferenceBlockAndLegacyVale) {
     auto table = V::of(fake("table_sdaster", "T"));
-    auto kw = validate("TEST_TABLE", {{"TABLE", table}, {"NOM_PARA", V::of("DX")}, {"VALE_CALC", V::of(1LL)},
-                                      {"VALE_REFE", V::of(1LL)}, {"REFERENCE", V::of("ANALYTIQUE")}});
+    auto kw = validate("TEST_TABLE", {{"TABLE", table},
+                                      {"NOM_PARA", V::of("DX")},
+                                      {"VALE_CALC", V::of(1LL)},
+                                      {"VALE_REFE", V::of(1LL)},
+                                      {"REFERENCE", V::of("ANALYTIQUE")}});
     EXPECT_DOUBLE_EQ(kw.real("PRECISION"), 1e-3);
     EXPECT_DOUBLE_EQ(kw.real("TOLE_MACHINE"), 1e-6);
     EXPECT_EQ(kw.text("CRITERE"), "RELATIF");
@@ -134,16 +143,18 @@ TEST(ParserCatalog, TestTableReferenceBlockAndLegacyVale) {
     auto nr = validate("TEST_TABLE", {{"TABLE", table}, {"NOM_PARA", V::of("DX")}, {"VALE_CALC", V::of(1.0)}});
     EXPECT_FALSE(nr.has("PRECISION"));
     // Legacy VALE= with PRECISION and no REFERENCE (files up to 2012).
-    auto legacy = validate("TEST_TABLE", {{"TABLE", table}, {"NOM_PARA", V::of("DX")}, {"VALE", V::of(0LL)},
-                                          {"PRECISION", V::of(1e-4)}});
+    auto legacy =
+        validate("TEST_TABLE",
+                 {{"TABLE", table}, {"NOM_PARA", V::of("DX")}, {"VALE", V::of(0LL)}, {"PRECISION", V::of(1e-4)}});
     EXPECT_DOUBLE_EQ(legacy.real("PRECISION"), 1e-4);
     EXPECT_DOUBLE_EQ(legacy.reals("VALE")[0], 0.0);
     try {
         validate("TEST_TABLE", {{"TABLE", table}, {"NOM_PARA", V::of("DX")}});
         FAIL();
     } catch (const UserError& e) {
-        EXPECT_STREQ(e.what(), "exactly one of VALE_CALC, VALE_CALC_I, VALE_CALC_K, VALE, VALE_I must be given (rule "
-                               "UN_PARMI), got none");
+        EXPECT_STREQ(e.what(),
+                     "exactly one of VALE_CALC, VALE_CALC_I, VALE_CALC_K, VALE, VALE_I must be given (rule "
+                     "UN_PARMI), got none");
     }
 }
 
@@ -159,7 +170,8 @@ TEST(ParserCatalog, LegacySyntaxesAreMappedToTheCurrentOnes) {
     // COMP_ELAS (≤ 2013) is read as COMPORTEMENT; both together are refused.
     CallArguments snl{{"MODELE", V::of(fake("modele_sdaster"))},
                       {"CHAM_MATER", V::of(fake("cham_mater"))},
-                      {"EXCIT", V::factor({{"CHARGE", V::of(fake("char_meca"))}, {"FONC_MULT", V::of(fake("fonction_sdaster"))}})},
+                      {"EXCIT", V::factor({{"CHARGE", V::of(fake("char_meca"))},
+                                           {"FONC_MULT", V::of(fake("fonction_sdaster"))}})},
                       {"COMP_ELAS", V::factor({{"RELATION", V::of("ELAS")}})},
                       {"INCREMENT", V::factor({{"LIST_INST", V::of(fake("listr8_sdaster"))}})},
                       {"CONVERGENCE", V::factor({{"ARRET", V::of("NON")}, {"ITER_GLOB_MAXI", V::of(20LL)}})},
@@ -182,23 +194,26 @@ TEST(ParserCatalog, UnsupportedIsDistinctFromUnknown) {
     auto model = V::of(fake("modele_sdaster"));
     auto crack = V::of(fake("fiss_xfem"));
     try {
-        validate("DEFI_CONTACT", {{"MODELE", model}, {"FORMULATION", V::of("XFEM")},
+        validate("DEFI_CONTACT", {{"MODELE", model},
+                                  {"FORMULATION", V::of("XFEM")},
                                   {"ZONE", V::factor({{"FISS_MAIT", crack}, {"COEF_FROT", V::of(0.3)}})}});
         FAIL();
     } catch (const NotImplemented& e) {
-        EXPECT_STREQ(e.what(), "keyword ZONE[1]/COEF_FROT is not supported by miniaster (friction is not modelled "
-                               "(frictionless contact only))");
+        EXPECT_STREQ(e.what(),
+                     "keyword ZONE[1]/COEF_FROT is not supported by miniaster (friction is not modelled "
+                     "(frictionless contact only))");
     }
     try {
-        validate("DEFI_CONTACT", {{"MODELE", model}, {"FORMULATION", V::of("XFEM")},
+        validate("DEFI_CONTACT", {{"MODELE", model},
+                                  {"FORMULATION", V::of("XFEM")},
                                   {"ZONE", V::factor({{"FISS_MAIT", crack}, {"COEF_FROTT", V::of(0.3)}})}});
         FAIL();
     } catch (const UserError& e) {
         EXPECT_NE(std::string(e.what()).find("unknown keyword ZONE[1]/COEF_FROTT for DEFI_CONTACT"), std::string::npos);
     }
     try {
-        validate("DEFI_CONTACT", {{"MODELE", model}, {"FORMULATION", V::of("CONTINUE")},
-                                  {"ZONE", V::factor({{"FISS_MAIT", crack}})}});
+        validate("DEFI_CONTACT",
+                 {{"MODELE", model}, {"FORMULATION", V::of("CONTINUE")}, {"ZONE", V::factor({{"FISS_MAIT", crack}})}});
         FAIL();
     } catch (const NotImplemented& e) {
         EXPECT_STREQ(e.what(), "keyword FORMULATION: value 'CONTINUE' is not supported by miniaster");
@@ -208,7 +223,8 @@ TEST(ParserCatalog, UnsupportedIsDistinctFromUnknown) {
 TEST(ParserCatalog, ContextKeywordsOfFormule) {
     CallArguments context;
     const auto* c = Catalog::instance().find("FORMULE");
-    auto kw = validateCall(*c, {{"VALE", V::of("depx(X, Y)")}, {"depx", V::of(1LL)}, {"NOM_PARA", V::of("X")}}, &context);
+    auto kw =
+        validateCall(*c, {{"VALE", V::of("depx(X, Y)")}, {"depx", V::of(1LL)}, {"NOM_PARA", V::of("X")}}, &context);
     EXPECT_EQ(kw.texts("NOM_PARA"), std::vector<std::string>{"X"});
     ASSERT_EQ(context.size(), 1u);
     EXPECT_EQ(context[0].first, "depx");
@@ -217,8 +233,8 @@ TEST(ParserCatalog, ContextKeywordsOfFormule) {
 // Every entry is consistent: rules name keywords of their level, defaults satisfy `into`,
 // names are unique per level (outside blocks), reentrant commands are the documented ones.
 namespace {
-void checkLevel(const std::string& where, const std::vector<cata::Keyword>& content, const std::vector<cata::Rule>& rules,
-                std::set<std::string> names) {
+void checkLevel(const std::string& where, const std::vector<cata::Keyword>& content,
+                const std::vector<cata::Rule>& rules, std::set<std::string> names) {
     std::set<std::string> unconditional;
     for (const auto& k : content) {
         if (k.kind == cata::Keyword::Kind::Block) continue;
@@ -236,7 +252,8 @@ void checkLevel(const std::string& where, const std::vector<cata::Keyword>& cont
         if (k.kind == cata::Keyword::Kind::Factor) checkLevel(where + "/" + k.name, k.content, k.rulesList, {});
         for (const auto& d : k.defaultValues) {
             if (std::holds_alternative<std::string>(d) && !k.intoTexts.empty()) {
-                EXPECT_NE(std::find(k.intoTexts.begin(), k.intoTexts.end(), std::get<std::string>(d)), k.intoTexts.end())
+                EXPECT_NE(std::find(k.intoTexts.begin(), k.intoTexts.end(), std::get<std::string>(d)),
+                          k.intoTexts.end())
                     << where << "/" << k.name << ": default not in the allowed values";
             }
             if (std::holds_alternative<long long>(d) && !k.intoInts.empty()) {
@@ -263,6 +280,7 @@ TEST(ParserCatalog, EveryEntryIsConsistent) {
         checkLevel(name, c.content, c.rulesList, top);
         if (c.reentrant != cata::Reuse::No) reentrant.insert(name);
     }
-    EXPECT_EQ(reentrant, (std::set<std::string>{"CALC_TABLE", "DEFI_GROUP", "MECA_STATIQUE", "MODI_MAILLAGE", "STAT_NON_LINE"}));
+    EXPECT_EQ(reentrant,
+              (std::set<std::string>{"CALC_TABLE", "DEFI_GROUP", "MECA_STATIQUE", "MODI_MAILLAGE", "STAT_NON_LINE"}));
     EXPECT_GE(Catalog::instance().commands().size(), 28u);
 }

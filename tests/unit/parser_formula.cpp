@@ -18,7 +18,10 @@ namespace py = pybind11;
 namespace {
 // One interpreter for the whole test program, never finalised: like the real run (numpy and the
 // formula support module cannot survive an interpreter restart).
-void ensurePython() { static auto* interpreter = new py::scoped_interpreter(); (void)interpreter; }
+void ensurePython() {
+    static auto* interpreter = new py::scoped_interpreter();
+    (void)interpreter;
+}
 }  // namespace
 
 // Batch evaluation in-process: one entry into Python for all points, values and failures.
@@ -52,8 +55,9 @@ TEST(ParserFormula, EvaluateManyInOneBatch) {
         g.evaluateMany(xs, 4);
         FAIL();
     } catch (const ma::UserError& e) {
-        EXPECT_STREQ(e.what(), "formula G = '1.0/(X - 2.0)' (FORMULE defined in x.comm, line 7) failed for X=2: "
-                               "ZeroDivisionError: float division by zero");
+        EXPECT_STREQ(e.what(),
+                     "formula G = '1.0/(X - 2.0)' (FORMULE defined in x.comm, line 7) failed for X=2: "
+                     "ZeroDivisionError: float division by zero");
     }
     ma::Formula h("log(X)", {"X"}, py::dict(), py::dict(), "/tmp/x.comm", 8);
     h.name = "H";
@@ -94,8 +98,9 @@ TEST(ParserFormula, VectorisedBatchesAgreeWithThePointLoop) {
         g.evaluateMany(xs, xs.size());
         FAIL();
     } catch (const ma::UserError& e) {
-        EXPECT_STREQ(e.what(), "formula G = '1.0/(X - 2.0)' (FORMULE defined in x.comm, line 7) failed for X=2: "
-                               "ZeroDivisionError: float division by zero");
+        EXPECT_STREQ(e.what(),
+                     "formula G = '1.0/(X - 2.0)' (FORMULE defined in x.comm, line 7) failed for X=2: "
+                     "ZeroDivisionError: float division by zero");
     }
 }
 
@@ -119,25 +124,32 @@ def ux(x, y):
     return eps(-1., y) * 5. + eps(x, y) * x
 def clipped(x, y):
     return max(min(x, 1.), -1.) + (y if y > 0 else 0)
-)", globals);
+)",
+             globals);
     const size_t n = 4000;
     std::vector<double> args(2 * n);
     for (size_t i = 0; i < n; ++i) {
         args[2 * i] = -5.0 + 10.0 * double(i) / n;
         args[2 * i + 1] = 5.0 - 10.0 * double((i * 7919) % n) / n;
     }
-    struct Case { const char* expression; int branches; };
+    struct Case {
+        const char* expression;
+        int branches;
+    };
     for (const auto& c : {Case{"ux(X, Y)", 4}, Case{"clipped(X, Y)", 4}}) {
         ma::Formula f(c.expression, {"X", "Y"}, py::dict(), globals, "/tmp/x.comm", 3);
         f.name = "F";
         const auto batch = f.evaluateMany(args, n);
         for (size_t i = 0; i < n; ++i)
-            ASSERT_EQ(batch[i], f.evaluate(std::span<const double>(args).subspan(2 * i, 2))) << c.expression << " " << i;
-        EXPECT_NE(ma::msg().messText().rfind(fmt::format("FORMULE F: evaluated on numpy arrays, 4000 points per batch (its "
-                                                         "conditions split the points into {} branches",
-                                                         c.branches)),
+            ASSERT_EQ(batch[i], f.evaluate(std::span<const double>(args).subspan(2 * i, 2)))
+                << c.expression << " " << i;
+        EXPECT_NE(ma::msg().messText().rfind(
+                      fmt::format("FORMULE F: evaluated on numpy arrays, 4000 points per batch (its "
+                                  "conditions split the points into {} branches",
+                                  c.branches)),
                   std::string::npos)
-            << c.expression << "\n" << ma::msg().messText();
+            << c.expression << "\n"
+            << ma::msg().messText();
     }
 }
 
@@ -157,7 +169,8 @@ def stepped(x):
     if isinstance(x, float):
         calls[0] += 1
     return math.floor(x) * 0.5
-)", globals);
+)",
+             globals);
     const size_t n = 3000;
     std::vector<double> xs(n);
     for (size_t i = 0; i < n; ++i) xs[i] = double(i % 100) * 0.25;  // 100 distinct points
@@ -168,8 +181,9 @@ def stepped(x):
     const auto values = stepped.evaluateMany(xs, n);
     for (size_t i = 0; i < n; ++i) ASSERT_EQ(values[i], std::floor(xs[i]) * 0.5);
     EXPECT_EQ(globals["calls"].cast<py::list>()[0].cast<int>(), 100);
-    EXPECT_NE(ma::msg().messText().rfind("FORMULE STEP: numpy arrays do not go through its expression: Python is called "
-                                         "once per distinct point (100 of 3000 points in the first batch)"),
+    EXPECT_NE(ma::msg().messText().rfind(
+                  "FORMULE STEP: numpy arrays do not go through its expression: Python is called "
+                  "once per distinct point (100 of 3000 points in the first batch)"),
               std::string::npos)
         << ma::msg().messText();
 }

@@ -11,8 +11,8 @@
 #include "core/Units.hpp"
 #include "parser/Catalog.hpp"
 #include "parser/CommandRegistry.hpp"
-#include "post/TablePrinter.hpp"
 #include "post/TableOperations.hpp"
+#include "post/TablePrinter.hpp"
 
 using namespace ma;
 
@@ -236,8 +236,7 @@ TEST_F(CalcTableTest, CombWithKeysMergesUniqueKeys) {
 TEST_F(CalcTableTest, OperEvaluatesInOneBatch) {
     auto t = depTable();
     t->set(4, "DX", Cell{});  // no value: the new cell stays empty
-    LambdaFunction f({"DX", "COOR_X", "COOR_Y"},
-                     [](std::span<const double> a) { return a[0] - (0.1 * a[1] + a[2]); });
+    LambdaFunction f({"DX", "COOR_X", "COOR_Y"}, [](std::span<const double> a) { return a[0] - (0.1 * a[1] + a[2]); });
     f.name = "depl_x1";
     addFormulaColumn(*t, f, "DX-DX", {});
     EXPECT_EQ(f.batches, 1);
@@ -251,9 +250,9 @@ TEST_F(CalcTableTest, OperEvaluatesInOneBatch) {
     LambdaFunction g({"A", "B"}, [](std::span<const double> a) { return a[0] * a[1]; });
     addFormulaColumn(*t, g, "P", {"COOR_X", "DY"});
     EXPECT_DOUBLE_EQ(std::get<double>(t->column("P").cells[4]), 0.0);
-    EXPECT_THROW(addFormulaColumn(*t, g, "P", {"COOR_X", "DY"}), UserError);  // exists
-    EXPECT_THROW(addFormulaColumn(*t, g, "Q", {"COOR_X"}), UserError);        // count
-    EXPECT_THROW(addFormulaColumn(*t, g, "Q", {"COOR_X", "DZ"}), UserError);  // missing column
+    EXPECT_THROW(addFormulaColumn(*t, g, "P", {"COOR_X", "DY"}), UserError);       // exists
+    EXPECT_THROW(addFormulaColumn(*t, g, "Q", {"COOR_X"}), UserError);             // count
+    EXPECT_THROW(addFormulaColumn(*t, g, "Q", {"COOR_X", "DZ"}), UserError);       // missing column
     EXPECT_THROW(addFormulaColumn(*t, f, "Q", {"NOEUD", "DX", "DY"}), UserError);  // text argument
 }
 

@@ -37,10 +37,17 @@ ma::Mesh oneCell(CellType type) {
         v = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
         edges = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 5}, {2, 6}, {3, 7}, {4, 5}, {5, 6}, {6, 7}, {7, 4}};
         if (type == CellType::HEXA27)
-            faces = {{0, 1, 2, 3}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}, {4, 5, 6, 7}, {0, 1, 2, 3, 4, 5, 6, 7}};
+            faces = {{0, 1, 2, 3},
+                     {0, 1, 5, 4},
+                     {1, 2, 6, 5},
+                     {2, 3, 7, 6},
+                     {3, 0, 4, 7},
+                     {4, 5, 6, 7},
+                     {0, 1, 2, 3, 4, 5, 6, 7}};
     }
     auto points = v;
-    for (auto [a, b] : edges) points.push_back({(v[a][0] + v[b][0]) / 2, (v[a][1] + v[b][1]) / 2, (v[a][2] + v[b][2]) / 2});
+    for (auto [a, b] : edges)
+        points.push_back({(v[a][0] + v[b][0]) / 2, (v[a][1] + v[b][1]) / 2, (v[a][2] + v[b][2]) / 2});
     for (const auto& f : faces) {
         std::array<double, 3> c{0, 0, 0};
         for (int i : f)
@@ -60,7 +67,7 @@ double tetraVolume(const std::string& view, int* count) {
     for (int i = 0; i < 2; ++i) std::getline(in, line);  // $View, name
     std::array<int, 24> counts{};
     for (auto& c : counts) in >> c;
-    *count = counts[12];  // the tetrahedron line: 5th of the 8 count lines, scalar column
+    *count = counts[12];                     // the tetrahedron line: 5th of the 8 count lines, scalar column
     for (int i = 0; i < 4; ++i) in >> line;  // text counts
     double time;
     in >> time;
@@ -110,7 +117,8 @@ TEST(GmshWriter, HeaderAndCountLines) {
                   "       0        0        0 \n       0        1        0 \n       0        0        0 \n",
                   0),
               0u);
-    EXPECT_NE(ma::gmsh::view(m, v, 1).find("       0        2        0 \n       0        0        0 \n 1.00000000E+00\n"),
+    EXPECT_NE(ma::gmsh::view(m, v, 1).find(
+                  "       0        2        0 \n       0        0        0 \n 1.00000000E+00\n"),
               std::string::npos);
 }
 

@@ -35,7 +35,8 @@ private:
     std::function<double(std::span<const double>)> f_;
 };
 using FunctionPtr = std::shared_ptr<LambdaFunction>;
-FunctionPtr formula(const char* name, std::vector<std::string> params, std::function<double(std::span<const double>)> f) {
+FunctionPtr formula(const char* name, std::vector<std::string> params,
+                    std::function<double(std::span<const double>)> f) {
     return std::make_shared<LambdaFunction>(name, std::move(params), std::move(f));
 }
 
@@ -75,7 +76,8 @@ std::shared_ptr<Model> planeModel(const std::shared_ptr<Mesh>& mesh, Modelisatio
     return model;
 }
 
-std::shared_ptr<NodalField> nodalField(const std::shared_ptr<Mesh>& mesh, std::function<std::array<double, 2>(double, double)> u) {
+std::shared_ptr<NodalField> nodalField(const std::shared_ptr<Mesh>& mesh,
+                                       std::function<std::array<double, 2>(double, double)> u) {
     auto f = std::make_shared<NodalField>();
     f->name = "UCAL";
     f->resize(mesh, {"DX", "DY"});
@@ -123,7 +125,9 @@ std::shared_ptr<MaterialField> steel(const std::shared_ptr<Mesh>& mesh) {
     return field;
 }
 
-double real(const Table& t, size_t row, const std::string& col) { return std::get<double>(t.cell(row, size_t(t.columnIndex(col)))); }
+double real(const Table& t, size_t row, const std::string& col) {
+    return std::get<double>(t.cell(row, size_t(t.columnIndex(col))));
+}
 
 ConceptPtr runCommand(const char* name, const KeywordSet& kw, const std::string& resultName = "") {
     CommandContext ctx;
@@ -163,7 +167,8 @@ TEST_F(PostTest, EnergyReferenceDPlanSsnv511e) {
     ref.formulas[1] = {formula("SYY", {"X", "Y"}, [](auto a) { return -pressure(a[0]); })};
     ref.formulas[2] = {formula("SZZ", {"X", "Y"}, [&](auto a) { return -nu * (pressure(a[0]) + pressure(a[1])); })};
     auto table = energyErrorTable(*model, *sigma, *steel(mesh), {"SURF"}, ref);
-    ASSERT_EQ(table->columnNames(), (std::vector<std::string>{"GROUP_MA", "DIFFERENCE", "REFERENCE", "ERREUR RELATIVE"}));
+    ASSERT_EQ(table->columnNames(),
+              (std::vector<std::string>{"GROUP_MA", "DIFFERENCE", "REFERENCE", "ERREUR RELATIVE"}));
     ASSERT_EQ(table->rowCount(), 2u);
     EXPECT_EQ(std::get<std::string>(table->cell(1, 0)), "TOTAL");
     EXPECT_NEAR(real(*table, 1, "REFERENCE"), 1397500.0, 1e-9 * 1397500.0);
@@ -276,7 +281,7 @@ TEST_F(PostTest, PostErreurCommand) {
 // POST_RELEVE_T: columns and rows in code_aster's order, restriction to nodes carrying the
 // components, cumulative ABSC_CURV.
 TEST_F(PostTest, ReleveExtractionColumnsAndRows) {
-    auto mesh = squareMesh(2);  // 9 nodes, N1..N9
+    auto mesh = squareMesh(2);                      // 9 nodes, N1..N9
     mesh->nodeGroups.set("LINE", {6, 7, 8, 4, 7});  // top row then the centre; N8 repeated
     auto depl = std::make_shared<NodalField>();
     depl->resize(mesh, {"DX", "DY", "H1X"});

@@ -67,17 +67,24 @@ KeywordSet keywords(std::initializer_list<std::pair<const char*, KeywordValue>> 
 // §1.5.6, the requested example, byte for byte (trailing blanks included).
 TEST_F(TestTableFixture, ReconstructedExampleExact) {
     auto t = realTable("DEPZON_1", "DX", {-0.25, 0.5, -0.1});
-    run(t, keywords({{"NOM_PARA", std::string("DX")}, {"TYPE_TEST", std::string("MIN")}, {"VALE_CALC", -0.25},
-                     {"VALE_REFE", -0.25}, {"CRITERE", std::string("RELATIF")}, {"PRECISION", 1e-13},
+    run(t, keywords({{"NOM_PARA", std::string("DX")},
+                     {"TYPE_TEST", std::string("MIN")},
+                     {"VALE_CALC", -0.25},
+                     {"VALE_REFE", -0.25},
+                     {"CRITERE", std::string("RELATIF")},
+                     {"PRECISION", 1e-13},
                      {"REFERENCE", std::string("ANALYTIQUE")}}));
     const std::string expected =
         "\n"
         "--------------------------------------------------------------------------------\n"
         " ---- TABLE            NOM_PARA         TYPE_TEST\n"
         "      DEPZON_1         DX               MIN\n"
-        "      REFERENCE        LEGENDE          VALE_REFE          VALE_CALC          ERREUR           TOLE            \n"
-        " OK   NON_REGRESSION   XXXX             -0.25              -0.25              0.0%             9.999999999999999E-05%\n"
-        " OK   ANALYTIQUE       XXXX             -0.25              -0.25              0.0%             1.0000000000000001E-11%\n"
+        "      REFERENCE        LEGENDE          VALE_REFE          VALE_CALC          ERREUR           TOLE           "
+        " \n"
+        " OK   NON_REGRESSION   XXXX             -0.25              -0.25              0.0%             "
+        "9.999999999999999E-05%\n"
+        " OK   ANALYTIQUE       XXXX             -0.25              -0.25              0.0%             "
+        "1.0000000000000001E-11%\n"
         "  \n";
     EXPECT_EQ(msg().resuText(), expected);
     ASSERT_EQ(testReport().lines().size(), 2u);
@@ -91,9 +98,13 @@ TEST_F(TestTableFixture, ReconstructedExampleExact) {
 // §1.5.6 (a): ABSOLU, the reference error longer than 15 characters goes through %13.6E.
 TEST_F(TestTableFixture, AbsoluteWithLongError) {
     auto t = realTable("DEPZON_1", "DY", {2.6562953225895E-17, -1.0347625534202E-15, 0.0});
-    run(t, keywords({{"NOM_PARA", std::string("DY")}, {"TYPE_TEST", std::string("MIN")},
-                     {"VALE_CALC", -1.0347625534202E-15}, {"VALE_REFE", 0.0}, {"CRITERE", std::string("ABSOLU")},
-                     {"PRECISION", 1e-13}, {"REFERENCE", std::string("ANALYTIQUE")}}));
+    run(t, keywords({{"NOM_PARA", std::string("DY")},
+                     {"TYPE_TEST", std::string("MIN")},
+                     {"VALE_CALC", -1.0347625534202E-15},
+                     {"VALE_REFE", 0.0},
+                     {"CRITERE", std::string("ABSOLU")},
+                     {"PRECISION", 1e-13},
+                     {"REFERENCE", std::string("ANALYTIQUE")}}));
     const std::string expected =
         "\n"
         "--------------------------------------------------------------------------------\n"
@@ -111,9 +122,13 @@ TEST_F(TestTableFixture, AbsoluteWithLongError) {
 // label line; the reference line is still evaluated.
 TEST_F(TestTableFixture, SkipNearZeroWithAlarm) {
     auto t = realTable("DEPZON_1", "DY", {2.6562953225895E-17, -1.0347625534202E-15});
-    run(t, keywords({{"NOM_PARA", std::string("DY")}, {"TYPE_TEST", std::string("MAX")},
-                     {"VALE_CALC", 2.6562953225895E-17}, {"VALE_REFE", 0.0}, {"CRITERE", std::string("ABSOLU")},
-                     {"PRECISION", 1e-13}, {"REFERENCE", std::string("ANALYTIQUE")}}));
+    run(t, keywords({{"NOM_PARA", std::string("DY")},
+                     {"TYPE_TEST", std::string("MAX")},
+                     {"VALE_CALC", 2.6562953225895E-17},
+                     {"VALE_REFE", 0.0},
+                     {"CRITERE", std::string("ABSOLU")},
+                     {"PRECISION", 1e-13},
+                     {"REFERENCE", std::string("ANALYTIQUE")}}));
     const std::string expected =
         "\n"
         "--------------------------------------------------------------------------------\n"
@@ -150,8 +165,11 @@ TEST_F(TestTableFixture, FilterZeroReferenceExactZeroPasses) {
         t->set(r, 1, 1.0);
         t->set(r, 2, 0.0);
     }
-    KeywordSet kw = keywords({{"NOM_PARA", std::string("REFERENCE")}, {"VALE_CALC", 0.0}, {"VALE_REFE", 0.0},
-                              {"CRITERE", std::string("RELATIF")}, {"REFERENCE", std::string("ANALYTIQUE")}});
+    KeywordSet kw = keywords({{"NOM_PARA", std::string("REFERENCE")},
+                              {"VALE_CALC", 0.0},
+                              {"VALE_REFE", 0.0},
+                              {"CRITERE", std::string("RELATIF")},
+                              {"REFERENCE", std::string("ANALYTIQUE")}});
     KeywordSet& f = kw.addOccurrence("FILTRE");
     f.setValues("NOM_PARA", {std::string("GROUP_MA")});
     f.setValues("VALE_K", {std::string("TOTAL")});
@@ -260,11 +278,15 @@ TEST_F(TestTableFixture, SkipThresholdIsDblEpsilon) {
 // ORDRE_GRANDEUR with a null VALE_CALC: the check is made (ABSOLU, tolerance TOLE_MACHINE * og).
 TEST_F(TestTableFixture, OrderOfMagnitudeMakesNullValueTestable) {
     auto t = realTable("T", "V", {3e-7});
-    run(t, keywords({{"NOM_PARA", std::string("V")}, {"VALE_CALC", 0.0}, {"ORDRE_GRANDEUR", 1.0},
+    run(t, keywords({{"NOM_PARA", std::string("V")},
+                     {"VALE_CALC", 0.0},
+                     {"ORDRE_GRANDEUR", 1.0},
                      {"CRITERE", std::string("ABSOLU")}}));
     EXPECT_EQ(testReport().lines().back().status, TestLine::Status::Ok);
     EXPECT_EQ(msg().alarmCount(), 0);
-    run(t, keywords({{"NOM_PARA", std::string("V")}, {"VALE_CALC", 0.0}, {"ORDRE_GRANDEUR", 0.1},
+    run(t, keywords({{"NOM_PARA", std::string("V")},
+                     {"VALE_CALC", 0.0},
+                     {"ORDRE_GRANDEUR", 0.1},
                      {"CRITERE", std::string("ABSOLU")}}));
     EXPECT_EQ(testReport().lines().back().status, TestLine::Status::Nook);
     EXPECT_NE(msg().resuText().find("      ORDRE DE GRANDEUR : 0.1             \n"), std::string::npos);
@@ -283,8 +305,11 @@ TEST_F(TestTableFixture, ValeAbs) {
 // Legacy VALE= (§1.8): one line labelled REFERENCE, tolerance PRECISION, label line before it.
 TEST_F(TestTableFixture, LegacyValeSingleReferenceLine) {
     auto t = realTable("DEPZON_1", "DX", {-0.25, -0.2500001});
-    run(t, keywords({{"NOM_PARA", std::string("DX")}, {"TYPE_TEST", std::string("MIN")}, {"VALE", -0.25},
-                     {"PRECISION", 1e-3}, {"REFERENCE", std::string("ANALYTIQUE")}}));
+    run(t, keywords({{"NOM_PARA", std::string("DX")},
+                     {"TYPE_TEST", std::string("MIN")},
+                     {"VALE", -0.25},
+                     {"PRECISION", 1e-3},
+                     {"REFERENCE", std::string("ANALYTIQUE")}}));
     ASSERT_EQ(testReport().lines().size(), 1u);
     EXPECT_EQ(testReport().lines()[0].kind, "ANALYTIQUE");
     EXPECT_EQ(testReport().lines()[0].status, TestLine::Status::Ok);
@@ -331,7 +356,8 @@ TEST_F(TestTableFixture, IntegerAndTextValues) {
     t->set(r, 1, std::string("N12"));
     run(t, keywords({{"NOM_PARA", std::string("NUME_ORDRE")}, {"VALE_CALC_I", 3LL}}));
     EXPECT_EQ(testReport().lines().back().status, TestLine::Status::Ok);
-    EXPECT_NE(msg().resuText().find(" OK   NON_REGRESSION   XXXX             3                  3                  0.0%"),
+    EXPECT_NE(msg().resuText().find(
+                  " OK   NON_REGRESSION   XXXX             3                  3                  0.0%"),
               std::string::npos);
     run(t, keywords({{"NOM_PARA", std::string("NOEUD")}, {"VALE_CALC_K", std::string("N12")}}));
     EXPECT_EQ(testReport().lines().back().status, TestLine::Status::Ok);
@@ -393,12 +419,12 @@ TEST_F(TestTableFixture, FortranFilters) {
 TEST_F(TestTableFixture, Errors) {
     auto t = realTable("T", "V", {1.0, 2.0});
     // missing column
-    EXPECT_THROW(run(t, keywords({{"NOM_PARA", std::string("W")}, {"TYPE_TEST", std::string("MAX")},
-                                  {"VALE_CALC", 1.0}})),
+    EXPECT_THROW(run(t,
+                     keywords({{"NOM_PARA", std::string("W")}, {"TYPE_TEST", std::string("MAX")}, {"VALE_CALC", 1.0}})),
                  UserError);
     // type mismatch: integer expected value on a real column
-    EXPECT_THROW(run(t, keywords({{"NOM_PARA", std::string("V")}, {"TYPE_TEST", std::string("MAX")},
-                                  {"VALE_CALC_I", 2LL}})),
+    EXPECT_THROW(run(t, keywords(
+                            {{"NOM_PARA", std::string("V")}, {"TYPE_TEST", std::string("MAX")}, {"VALE_CALC_I", 2LL}})),
                  UserError);
     // several rows without TYPE_TEST
     EXPECT_THROW(run(t, keywords({{"NOM_PARA", std::string("V")}, {"VALE_CALC", 1.0}})), UserError);
@@ -408,8 +434,10 @@ TEST_F(TestTableFixture, Errors) {
     empty->set(empty->addRow(), 1, std::string("A"));
     EXPECT_THROW(run(empty, keywords({{"NOM_PARA", std::string("V")}, {"VALE_CALC", 1.0}})), UserError);
     // REFERENCE without VALE_REFE
-    EXPECT_THROW(run(t, keywords({{"NOM_PARA", std::string("V")}, {"TYPE_TEST", std::string("MAX")},
-                                  {"VALE_CALC", 2.0}, {"REFERENCE", std::string("ANALYTIQUE")}})),
+    EXPECT_THROW(run(t, keywords({{"NOM_PARA", std::string("V")},
+                                  {"TYPE_TEST", std::string("MAX")},
+                                  {"VALE_CALC", 2.0},
+                                  {"REFERENCE", std::string("ANALYTIQUE")}})),
                  UserError);
 }
 
@@ -422,8 +450,12 @@ TEST_F(TestTableFixture, SeveralExpectedValuesQuirk) {
 
 TEST_F(TestTableFixture, NookIsRecordedWithDescription) {
     auto t = realTable("DEPZON_1", "DX", {-0.25});
-    run(t, keywords({{"NOM_PARA", std::string("DX")}, {"TYPE_TEST", std::string("MIN")}, {"VALE_CALC", -0.25},
-                     {"VALE_REFE", -0.2501}, {"PRECISION", 1e-6}, {"REFERENCE", std::string("ANALYTIQUE")}}));
+    run(t, keywords({{"NOM_PARA", std::string("DX")},
+                     {"TYPE_TEST", std::string("MIN")},
+                     {"VALE_CALC", -0.25},
+                     {"VALE_REFE", -0.2501},
+                     {"PRECISION", 1e-6},
+                     {"REFERENCE", std::string("ANALYTIQUE")}}));
     ASSERT_EQ(testReport().nookCount(), 1);
     const TestLine& l = testReport().lines()[1];
     EXPECT_EQ(l.kind, "ANALYTIQUE");

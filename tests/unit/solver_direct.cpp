@@ -34,7 +34,8 @@ CsrMatrix saddle(int n) {
     A.rows = n + 1;
     A.rowStart.assign(1, 0);
     for (int i = 0; i < n; ++i) {
-        for (long long k = L.rowStart[i]; k < L.rowStart[i + 1]; ++k) A.cols.push_back(L.cols[k]), A.values.push_back(L.values[k]);
+        for (long long k = L.rowStart[i]; k < L.rowStart[i + 1]; ++k)
+            A.cols.push_back(L.cols[k]), A.values.push_back(L.values[k]);
         if (i == 0 || i == n - 1) A.cols.push_back(n), A.values.push_back(1.0);
         A.rowStart.push_back(static_cast<long long>(A.cols.size()));
     }
@@ -53,7 +54,10 @@ TEST(SolverDirect, SpdSystemAllMethodsAndOrderings) {
     std::vector<double> x(n), b(n);
     for (int i = 0; i < n; ++i) x[i] = std::sin(0.3 * i) + 0.1 * i;
     A.multiply(x, b);
-    struct Case { const char* method; const char* renum; };
+    struct Case {
+        const char* method;
+        const char* renum;
+    };
     for (const auto& c : {Case{"MUMPS", "AUTO"}, Case{"MUMPS", "AMD"}, Case{"MUMPS", "AMF"}, Case{"MUMPS", "QAMD"},
                           Case{"MUMPS", "PORD"}, Case{"MUMPS", "SCOTCH"}, Case{"MUMPS", "METIS"},
                           Case{"MULT_FRONT", "AUTO"}, Case{"LDLT", "AUTO"}}) {

@@ -11,8 +11,8 @@
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
-#include "solver/LinearSolver.hpp"
 #include "solver/CoordinateOrdering.hpp"
+#include "solver/LinearSolver.hpp"
 #include "solver/MetisOrdering.hpp"
 
 using namespace ma;
@@ -119,8 +119,10 @@ TEST(SolverOrdering, AutoIsMetisAndBeatsMinimumDegreeOnAGrid) {
     EXPECT_LT(metis, 0.9 * amd);
     EXPECT_LT(metis, 1.3 * 158.0 * 80 * 80 * 80);
     for (const char* renum : {"AMF", "SCOTCH", "PORD", "QAMD", "PTSCOTCH", "PARMETIS"}) factoriseAndSolve(A, renum);
-    EXPECT_NE(msg().messText().rfind("RENUM='PARMETIS': MUMPS's analysis runs on the host alone, ordered by the sequential counterpart METIS"),
-              std::string::npos);
+    EXPECT_NE(
+        msg().messText().rfind(
+            "RENUM='PARMETIS': MUMPS's analysis runs on the host alone, ordered by the sequential counterpart METIS"),
+        std::string::npos);
 }
 
 TEST(SolverOrdering, CoordinateBisectionIsAReproduciblePermutationKeepingNodesTogether) {
@@ -131,7 +133,8 @@ TEST(SolverOrdering, CoordinateBisectionIsAReproduciblePermutationKeepingNodesTo
     EXPECT_EQ(o.vertices, 900);
     EXPECT_EQ(o.graphEdges, 2 * 29 * 30 + 2 * 29 * 29);
     EXPECT_EQ(coordinateNestedDissection(A, points).pivotRank, o.pivotRank);
-    for (int threads : {2, 4}) EXPECT_EQ(coordinateNestedDissection(A, points, threads).pivotRank, o.pivotRank) << threads;
+    for (int threads : {2, 4})
+        EXPECT_EQ(coordinateNestedDissection(A, points, threads).pivotRank, o.pivotRank) << threads;
 }
 
 // With a point per row, AUTO bisects by coordinates: on a grid it meets George's

@@ -30,7 +30,8 @@ CsrMatrix saddlePoint(int k) {
             if (i + 1 < k) add(a, a + k, -1.0), add(a + k, a, -1.0);
         }
     for (int r = 0; 2 * r + 1 < n; ++r)
-        for (auto [node, c] : {std::pair{2 * r, 1.0}, std::pair{2 * r + 1, -1.0}}) add(n + r, node, c), add(node, n + r, c);
+        for (auto [node, c] : {std::pair{2 * r, 1.0}, std::pair{2 * r + 1, -1.0}})
+            add(n + r, node, c), add(node, n + r, c);
     CsrMatrix A;
     A.rows = int(rows.size());
     A.rowStart.assign(1, 0);
@@ -74,7 +75,8 @@ TEST(SolverWorkspace, TooSmallWorkspaceRefactorisesWithTheAnalysisKept) {
     EXPECT_NE(mess.find("MUMPS workspace too small (INFOG(1)=-9"), std::string::npos) << mess;
     EXPECT_NE(mess.find("factorisation again (JOB=2, the analysis kept) with ICNTL(14)="), std::string::npos) << mess;
     EXPECT_EQ(occurrences(mess, "MUMPS analysis "), 1u) << mess;
-    EXPECT_NE(mess.find("MUMPS: 200 negative pivots (expected: one per Lagrange multiplier)"), std::string::npos) << mess;
+    EXPECT_NE(mess.find("MUMPS: 200 negative pivots (expected: one per Lagrange multiplier)"), std::string::npos)
+        << mess;
     EXPECT_LT(error, 1e-13);
     // With code_aster's default relaxation (20 %) the first factorisation fits: the same answer.
     const auto [defaultError, defaultMess] = solveWithRelaxation(A, 20);

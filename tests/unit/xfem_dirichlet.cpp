@@ -54,7 +54,8 @@ std::vector<int> groupNodes(const Mesh& m, const std::vector<std::string>& group
 // Value of the single-term relation on (node, component), NaN when absent.
 double single(const std::vector<LinearRelation>& rel, int node, const std::string& comp) {
     for (const auto& r : rel)
-        if (r.terms.size() == 1 && r.terms[0].node == node && r.terms[0].component == comp) return r.value / r.terms[0].coef;
+        if (r.terms.size() == 1 && r.terms[0].node == node && r.terms[0].component == comp)
+            return r.value / r.terms[0].coef;
     return std::nan("");
 }
 
@@ -164,7 +165,8 @@ TEST(XfemSkin, CutBoundaryFaces3D) {
     auto id = [&](int i, int j, int k) { return k * (n + 1) * (n + 1) + j * (n + 1) + i; };
     std::vector<int> sd;
     for (int j = 0; j < n; ++j)
-        sd.push_back(mesh->addCell(CellType::QUAD4, std::vector<int>{id(n, j, 0), id(n, j + 1, 0), id(n, j + 1, 1), id(n, j, 1)}));
+        sd.push_back(mesh->addCell(CellType::QUAD4,
+                                   std::vector<int>{id(n, j, 0), id(n, j + 1, 0), id(n, j + 1, 1), id(n, j, 1)}));
     mesh->cellGroups.set("SD", sd);
     auto j = xfemtest::ssnv511Cracks(mesh);
     XfemModel xm(xfemtest::model(mesh, true), {j.fiss1, j.fiss2, j.fiss3});

@@ -71,7 +71,8 @@ int blockOf(double x, double y, double x0, double y0) { return (x > x0 ? 2 : 0) 
 // integration point of every X-FEM element. Returns the number of points checked.
 int checkRigidBlocks(const XfemModel& xm, double x0, double y0) {
     const Mesh& m = xm.mesh();
-    const std::array<std::array<double, 3>, 4> t{{{-0.25, 0.1, 0.3}, {-0.5, -0.2, 0.7}, {0.75, 0.4, -0.1}, {1.0, -0.6, 0.2}}};
+    const std::array<std::array<double, 3>, 4> t{
+        {{-0.25, 0.1, 0.3}, {-0.5, -0.2, 0.7}, {0.75, 0.4, -0.1}, {1.0, -0.6, 0.2}}};
     // Block of each (node, slot): slot 0 from the node position (+ side when on an interface).
     auto domainBlock = [&](int node, const std::vector<signed char>& key) {
         // Find a sub-cell of that domain in the support and take its centroid.
@@ -84,7 +85,8 @@ int checkRigidBlocks(const XfemModel& xm, double x0, double y0) {
                 if (xm.domainKey(node, *cut, s) != key) continue;
                 std::array<double, 3> bary{0, 0, 0};
                 for (int v = 0; v < cut->vertexCount(); ++v)
-                    for (int j = 0; j < 3; ++j) bary[j] += cut->points[cut->subcells[s].vertices[v]].ref[j] / cut->vertexCount();
+                    for (int j = 0; j < 3; ++j)
+                        bary[j] += cut->points[cut->subcells[s].vertices[v]].ref[j] / cut->vertexCount();
                 std::vector<std::array<double, 3>> xs;
                 for (int n : cn) xs.push_back(m.coords[n]);
                 const auto x = mapToPhysical(m.cellTypes[c], xs, bary);
@@ -142,7 +144,8 @@ void checkTiling(const XfemModel& xm) {
         xm.integration(c, ei);
         double area = 0;
         if (cut->dim == cellDimension(m.cellTypes[c]) && !cut->skin) {
-            for (size_t p = 0; p < ei.refPoints.size(); ++p) area += ei.refWeights[p] * std::abs(detJ(m, c, ei.refPoints[p]));
+            for (size_t p = 0; p < ei.refPoints.size(); ++p)
+                area += ei.refWeights[p] * std::abs(detJ(m, c, ei.refPoints[p]));
             EXPECT_NEAR(area, cellMeasure(m, c), 1e-13 * cellMeasure(m, c)) << "cell " << c;
         }
         for (int s = 0; s < int(cut->subcells.size()); ++s) EXPECT_GT(cut->referenceMeasure(s), 1e-14);
@@ -209,7 +212,8 @@ TEST(XfemCrack, Ssnv511QuadStatusesAndJunction) {
 
 TEST(XfemCrack, Errors) {
     auto mesh = xfemtest::square(5, CellType::QUAD4);
-    EXPECT_THROW(buildCrack(mesh, levelSet(*mesh, [](double, double y, double) { return y - 20; }), nullptr), UserError);
+    EXPECT_THROW(buildCrack(mesh, levelSet(*mesh, [](double, double y, double) { return y - 20; }), nullptr),
+                 UserError);
     auto f1 = buildCrack(mesh, levelSet(*mesh, [](double, double y, double) { return y - 1; }), nullptr);
     JunctionInput in;
     in.masters = {f1};
@@ -229,9 +233,9 @@ TEST(XfemModel, Ssnv511QuadSlotsAndSubcells) {
     EXPECT_EQ(xm.activeSlots(nodeAt(*mesh, -3, 1)), 1);
     EXPECT_EQ(xm.nodeSlots(nodeAt(*mesh, -3, 1)), 4);  // in an XH3 element: H1..H3, two inactive
     EXPECT_EQ(xm.activeSlots(nodeAt(*mesh, -1, 3)), 1);
-    EXPECT_EQ(xm.nodeSlots(nodeAt(*mesh, -1, 5)), 2);   // only in XH elements
-    EXPECT_EQ(xm.nodeSlots(nodeAt(*mesh, -5, 5)), 1);   // corner: classical
-    EXPECT_EQ(xm.nodeSlots(nodeAt(*mesh, -5, 3)), 2);   // in an XH element, inactive H1
+    EXPECT_EQ(xm.nodeSlots(nodeAt(*mesh, -1, 5)), 2);  // only in XH elements
+    EXPECT_EQ(xm.nodeSlots(nodeAt(*mesh, -5, 5)), 1);  // corner: classical
+    EXPECT_EQ(xm.nodeSlots(nodeAt(*mesh, -5, 3)), 2);  // in an XH element, inactive H1
     // Central cell: 3x3 multi-crack block, element types XH3 / XH.
     int central = -1;
     for (int c : xm.xfemCells()) {
@@ -352,7 +356,10 @@ TEST(XfemModel, JunctionNextToANodeIsCutExactly) {
             auto mesh = threeD ? xfemtest::slab(10, type) : xfemtest::square(10, type);  // node rows on the integers
             const auto j = xfemtest::ssnv511Cracks(mesh, -eps, -eps);
             XfemModel xm(xfemtest::model(mesh), {j.fiss1, j.fiss2, j.fiss3});
-            const double parent = type == CellType::QUAD4 ? 4.0 : type == CellType::TRIA3 ? 0.5 : type == CellType::HEXA8 ? 8.0 : 1.0 / 6.0;
+            const double parent = type == CellType::QUAD4   ? 4.0
+                                  : type == CellType::TRIA3 ? 0.5
+                                  : type == CellType::HEXA8 ? 8.0
+                                                            : 1.0 / 6.0;
             double smallest = 1.0;
             int junctionPoints = 0;
             for (int c : xm.xfemCells()) {
@@ -367,13 +374,16 @@ TEST(XfemModel, JunctionNextToANodeIsCutExactly) {
                 std::vector<std::array<double, 3>> nodes;
                 for (int n : mesh->cellNodes(c)) nodes.push_back(mesh->coords[n]);
                 // exact level sets: FISS1 y + eps, FISS2 and FISS3 x + eps (cell's crack order)
-                auto level = [&](int k, const std::array<double, 3>& x) { return cut->cracks[k] == 0 ? x[1] + eps : x[0] + eps; };
+                auto level = [&](int k, const std::array<double, 3>& x) {
+                    return cut->cracks[k] == 0 ? x[1] + eps : x[0] + eps;
+                };
                 for (const auto& sub : cut->subcells)
                     for (int v = 0; v < cut->vertexCount(); ++v) {
                         const auto x = mapToPhysical(cut->type, nodes, cut->points[sub.vertices[v]].ref);
                         for (size_t k = 0; k < cut->cracks.size(); ++k)
                             if (sub.heaviside[k] != 0) {
-                                EXPECT_GE(sub.heaviside[k] * level(int(k), x), -1e-14) << "cell " << c << " crack " << k;
+                                EXPECT_GE(sub.heaviside[k] * level(int(k), x), -1e-14)
+                                    << "cell " << c << " crack " << k;
                             }
                     }
                 for (const auto& p : cut->points)

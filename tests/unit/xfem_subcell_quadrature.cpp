@@ -153,7 +153,8 @@ TEST(XfemSubcellQuadrature, EveryCellOfTheModelUsesTheRuleOfTheDegree) {
                 const SubcellKind k = xm.subcellKind(c);
                 EXPECT_EQ(k.skin, cut->skin);
                 EXPECT_EQ(k.severalCracks, cut->cracks.size() > 1);
-                const std::string expected = d == 0 || cut->skin ? catalogueSubcellRule(k) : lowestRuleOfDegree(simplex, d);
+                const std::string expected =
+                    d == 0 || cut->skin ? catalogueSubcellRule(k) : lowestRuleOfDegree(simplex, d);
                 EXPECT_EQ(xm.subcellRule(c), expected) << cellTypeName(kind) << " degree " << d << " cell " << c;
                 xm.integration(c, ei);
                 const int perSubcell = quadratureRule(subcellType(k), expected).size();
@@ -162,9 +163,7 @@ TEST(XfemSubcellQuadrature, EveryCellOfTheModelUsesTheRuleOfTheDegree) {
             }
             EXPECT_GT(volume, 0);
             // The 2D squares have boundary segments (the 3D test slab has no skin faces).
-            if (cellDimension(kind) == 2) {
-                EXPECT_GT(skin, 0) << "the scene has cut boundary cells";
-            }
+            if (cellDimension(kind) == 2) { EXPECT_GT(skin, 0) << "the scene has cut boundary cells"; }
         }
     }
     EXPECT_THROW(xfemModel(scene(CellType::QUAD4, 5), kMaxSubcellDegree + 1), UserError);

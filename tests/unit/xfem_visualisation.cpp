@@ -167,7 +167,8 @@ TEST(XfemVisualisation, Ssnv511aMeshAndLips) {
             ElementIntegration ei;
             for (const auto& el : model->elements) {
                 sief->cells.push_back(el.cell);
-                const int points = xm->isEnriched(el.cell) ? (xm->integration(el.cell, ei), int(ei.refPoints.size())) : 4;
+                const int points =
+                    xm->isEnriched(el.cell) ? (xm->integration(el.cell, ei), int(ei.refPoints.size())) : 4;
                 for (int p = 0; p < points; ++p) {
                     const bool x = xm->isEnriched(el.cell);
                     sief->pointCoords.push_back({0, 0, 0});
@@ -239,7 +240,8 @@ TEST(XfemVisualisation, SubcellsArePositiveOnCodeAstersLeftHandedMeshes) {
             for (int n : vm.cellNodes(c)) x.push_back(vm.coords[n]);
             if (v.cells[c].original >= 0) {
                 const auto in = mesh->cellNodes(v.cells[c].original);
-                for (size_t k = 0; k < x.size(); ++k) EXPECT_EQ(x[k], mesh->coords[in[k]]) << file << " " << vm.cellNames[c];
+                for (size_t k = 0; k < x.size(); ++k)
+                    EXPECT_EQ(x[k], mesh->coords[in[k]]) << file << " " << vm.cellNames[c];
                 continue;
             }
             ++subcells;

@@ -129,8 +129,10 @@ std::shared_ptr<Mesh> resplitPrismLayer(const Mesh& layer) {
             for (int m : members) copied.push_back(kept[size_t(m)]);
             out->cellGroups.set(name, copied);
         } else {
-            throw UserError(fmt::format("cell group {} is neither every tetrahedron, the whole skin nor 1D cells: "
-                                        "no re-split counterpart", name));
+            throw UserError(
+                fmt::format("cell group {} is neither every tetrahedron, the whole skin nor 1D cells: "
+                            "no re-split counterpart",
+                            name));
         }
     }
     return out;

@@ -46,7 +46,9 @@ struct Builder {
     std::shared_ptr<Mesh> mesh = std::make_shared<Mesh>();
 
     explicit Builder(const Ssnv511MeshOptions& o)
-        : opt(o), n(o.divisions), xs(gridLine(o.xmin, o.xmax, o.divisions, o.offsetX)),
+        : opt(o),
+          n(o.divisions),
+          xs(gridLine(o.xmin, o.xmax, o.divisions, o.offsetX)),
           ys(gridLine(o.ymin, o.ymax, o.divisions, o.offsetY)) {}
 
     int node(int i, int j, int layer = 0) const { return layer * (n + 1) * (n + 1) + j * (n + 1) + i; }
@@ -58,8 +60,7 @@ struct Builder {
         for (int l = 0; l < layers; ++l) {
             const double z = layers == 1 ? 0.0 : (l == 0 ? opt.zmin : opt.zmax);
             for (int j = 0; j <= n; ++j)
-                for (int i = 0; i <= n; ++i)
-                    mesh->coords.push_back({xs[size_t(i)], ys[size_t(j)], z});
+                for (int i = 0; i <= n; ++i) mesh->coords.push_back({xs[size_t(i)], ys[size_t(j)], z});
         }
         for (size_t k = 0; k < total; ++k) mesh->nodeNames.push_back(fmt::format("N{}", k + 1));
     }
@@ -141,9 +142,9 @@ struct Builder {
             env.push_back(cell(CellType::QUAD4, {node(i, 0), node(i + 1, 0), node(i + 1, 0, 1), node(i, 0, 1)}));
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i)
-                volu.push_back(cell(CellType::HEXA8, {node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1),
-                                                      node(i, j, 1), node(i + 1, j, 1), node(i + 1, j + 1, 1),
-                                                      node(i, j + 1, 1)}));
+                volu.push_back(cell(CellType::HEXA8,
+                                    {node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1), node(i, j, 1),
+                                     node(i + 1, j, 1), node(i + 1, j + 1, 1), node(i, j + 1, 1)}));
         mesh->cellGroups.set("ENV", std::move(env));
         mesh->cellGroups.set("SD", std::move(sd));
         mesh->cellGroups.set("SG", std::move(sg));
@@ -185,8 +186,9 @@ struct Builder {
                 for (auto t : squareTriangles(i, j)) {
                     std::sort(t.begin(), t.end());
                     const int v0 = t[0], v1 = t[1], v2 = t[2];
-                    for (auto tet : {std::array<int, 4>{v0, v1, v2, v2 + top}, std::array<int, 4>{v0, v1, v1 + top, v2 + top},
-                                     std::array<int, 4>{v0, v0 + top, v1 + top, v2 + top}}) {
+                    for (auto tet :
+                         {std::array<int, 4>{v0, v1, v2, v2 + top}, std::array<int, 4>{v0, v1, v1 + top, v2 + top},
+                          std::array<int, 4>{v0, v0 + top, v1 + top, v2 + top}}) {
                         if (tetraVolume(*mesh, tet) < 0) std::swap(tet[1], tet[2]);
                         volu.push_back(cell(CellType::TETRA4, {tet[0], tet[1], tet[2], tet[3]}));
                     }
@@ -208,7 +210,8 @@ bool ssnv511KindFromName(const std::string& name, Ssnv511MeshOptions::Kind& kind
 }
 
 std::shared_ptr<Mesh> buildSsnv511Mesh(const Ssnv511MeshOptions& o) {
-    if (o.divisions < 1) throw UserError(fmt::format("the number of divisions must be at least 1 (got {})", o.divisions));
+    if (o.divisions < 1)
+        throw UserError(fmt::format("the number of divisions must be at least 1 (got {})", o.divisions));
     if (!(o.xmax > o.xmin) || !(o.ymax > o.ymin) || !(o.zmax > o.zmin))
         throw UserError("the bounds must satisfy xmin < xmax, ymin < ymax, zmin < zmax");
     if (!(std::abs(o.offsetX) < 1) || !(std::abs(o.offsetY) < 1))
