@@ -9,6 +9,7 @@
 #include "core/Messages.hpp"
 #include "fe/DofNumbering.hpp"
 #include "fe/MechanicalLoad.hpp"
+#include "mesh/ShapeFunctions.hpp"
 #include "xfem/CellGeometry.hpp"
 #include "xfem/XfemMessages.hpp"
 #include "xfem/XfemModel.hpp"
@@ -21,6 +22,26 @@ constexpr double kSideOffset = 1e-6;  // f is sampled 1e-6 (edge fraction) away 
 
 std::array<double, 3> along(const std::array<double, 3>& a, const std::array<double, 3>& b, double t) {
     return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+}
+
+// Sub-cells of `cut` containing the reference point p (on their boundary included).
+std::vector<int> subcellsAt(const CellCut& cut, const std::array<double, 3>& p) {
+    std::vector<int> out;
+    const int nv = cut.vertexCount();
+    for (int s = 0; s < static_cast<int>(cut.subcells.size()); ++s) {
+        std::array<std::array<double, 3>, 4> v{};
+        for (int i = 0; i < nv; ++i) v[i] = cut.points[cut.subcells[s].vertices[i]].ref;
+        const double whole = simplexMeasure(cut.dim, std::span<const std::array<double, 3>>(v.data(), nv));
+        bool inside = whole != 0.0;
+        for (int i = 0; i < nv && inside; ++i) {
+            auto w = v;
+            w[i] = p;
+            const double part = simplexMeasure(cut.dim, std::span<const std::array<double, 3>>(w.data(), nv));
+            inside = part / whole >= -1e-12;
+        }
+        if (inside) out.push_back(s);
+    }
+    return out;
 }
 
 // Relations of one DDL_IMPO request, node by node. Points where the value is needed are evaluated
@@ -57,10 +78,12 @@ private:
 
     void node(int n) {
         if (slot_ > 0) return heavisideComponent(n);
-        const int ref = xm_.referenceCell(n);
-        const CellCut* cut = ref >= 0 ? xm_.cut(ref) : nullptr;
-        if (!cut || cut->cracks.size() != 1 || xm_.activeSlots(n) < 1) return plain(n, at(mesh_.coords[n]));
-        Enriched e{n, *xm_.cracks()[cut->cracks[0]], xm_.node(n)->slotValue[0], fmt::format("H1{}", "XYZ"[c_]), {}};
+        // The interfaces that enrich the node decide, not those its cells see: a node next to a
+        // junction cell sits in cells seeing three interfaces while only one enriches it.
+        const NodeEnrichment* en = xm_.node(n);
+        if (!en || xm_.activeSlots(n) < 1) return plain(n, at(mesh_.coords[n]));
+        if (en->activeCracks.size() != 1) return severalInterfaces(n, *en);
+        Enriched e{n, *xm_.cracks()[en->activeCracks[0]], en->slotValue[0], fmt::format("H1{}", "XYZ"[c_]), {}};
         // Prescribed nodes connected to n through the X-FEM cells around it.
         for (int cell : xm_.cellsOfNode(n))
             for (int w : mesh_.cellNodes(cell))
@@ -72,6 +95,122 @@ private:
         if (e.crack.lsn[n] != 0.0 && other >= 0) return functionOnCutEdge(e, other);
         if (e.crack.lsn[n] == 0.0) return functionOnInterface(e);
         functionAcross(e);
+    }
+
+    // A node several interfaces enrich (code_aster imposes the classical unknown only there, or
+    // nothing when the node is on one of them: xddlim, nfiss > 1; the other sides of the node are
+    // then free or wrong). One relation per side (domain) of the node that a prescribed neighbour w
+    // reaches: next to n, u_D = U0 + psi_k U_k = f just inside D (the own side, and the sides of an
+    // interface through n), as §4.2 does for one interface. For a function, also across the last
+    // interface crossing of an edge n-w: the side of w gets the value that makes u along the edge
+    // equal to f beyond the crossing, as §4.3's cut edge does for one interface.
+    void severalInterfaces(int n, const NodeEnrichment& en) {
+        std::vector<std::vector<signed char>> done;
+        auto fresh = [&done](const std::vector<signed char>& key) {
+            if (std::find(done.begin(), done.end(), key) != done.end()) return false;
+            done.push_back(key);
+            return true;
+        };
+        for (int cell : xm_.cellsOfNode(n)) {
+            const CellCut* cut = xm_.cut(cell);
+            if (!cut || cut->skin) continue;
+            const auto cn = mesh_.cellNodes(cell);
+            const auto ref = referenceNodes(mesh_.cellTypes[cell]);
+            const auto ln = std::find(cn.begin(), cn.end(), n) - cn.begin();
+            for (size_t lw = 0; lw < cn.size(); ++lw) {
+                const int w = cn[lw];
+                if (w == n || !inGroup_[w]) continue;
+                const auto nearN = sideAt(n, *cut, along(ref[ln], ref[lw], kSideOffset));
+                if (nearN.subcell >= 0 && fresh(nearN.key))
+                    sideRelation(n, en, nearN.key, valueAt(at(insideSubcell(*cut, nearN.subcell, nearN.ref))));
+                const auto nearW = sideAt(n, *cut, along(ref[lw], ref[ln], kSideOffset));
+                const double t = lastCrossing(n, w);
+                if (!request_.function || nearW.subcell < 0 || nearW.key == nearN.key || !isEdge(cell, ln, lw) ||
+                    t <= 0.0)
+                    continue;
+                if (!fresh(nearW.key)) continue;
+                const double tc = std::min(t + kSideOffset, 1.0 - 2 * kSideOffset), tw = 1.0 - kSideOffset;
+                const size_t pc = at(along(mesh_.coords[n], mesh_.coords[w], tc));
+                const size_t pw = at(along(mesh_.coords[n], mesh_.coords[w], tw));
+                sideRelation(n, en, nearW.key, [pc, pw, tc, tw](const std::vector<double>& f) {
+                    return f[pc] - tc * (f[pw] - f[pc]) / (tw - tc);
+                });
+            }
+        }
+        if (done.empty()) {
+            for (size_t k = 0; k <= en.slotDomain.size(); ++k)
+                sideRelation(n, en, k == 0 ? en.own : en.slotDomain[k - 1], valueAt(at(mesh_.coords[n])));
+            bothLipsAlarm_ = true;
+        }
+    }
+
+    static std::function<double(const std::vector<double>&)> valueAt(size_t p) {
+        return [p](const std::vector<double>& f) { return f[p]; };
+    }
+
+    // The side of node n's domains that contains reference point p of `cut` (subcell -1 when p
+    // lies between sub-cells of different sides, on an interface).
+    struct Side {
+        std::vector<signed char> key;
+        int subcell = -1;
+        std::array<double, 3> ref{};
+    };
+    Side sideAt(int n, const CellCut& cut, const std::array<double, 3>& p) const {
+        const auto subs = subcellsAt(cut, p);
+        if (subs.empty()) return {};
+        Side side{xm_.domainKey(n, cut, subs[0]), subs[0], p};
+        for (int s : subs)
+            if (xm_.domainKey(n, cut, s) != side.key) return {};
+        return side;
+    }
+
+    bool isEdge(int cell, long a, long b) const {
+        for (const auto& e : cellEdges(mesh_.cellTypes[cell]))
+            if ((e[0] == a && e[1] == b) || (e[0] == b && e[1] == a)) return true;
+        return false;
+    }
+
+    // Edge fraction from n of the last zero of any interface's level set on the edge n-w (0: none).
+    double lastCrossing(int n, int w) const {
+        double t = 0.0;
+        for (const auto& crack : xm_.cracks()) {
+            const double a = crack->lsn[n], b = crack->lsn[w];
+            if (a * b < 0.0) t = std::max(t, a / (a - b));
+        }
+        return t;
+    }
+
+    // Physical point just inside sub-cell s from its point p (reference coordinates): f is sampled
+    // there, not on p, which may lie on an interface where f jumps (an edge along the interface).
+    std::array<double, 3> insideSubcell(const CellCut& cut, int s, std::array<double, 3> p) const {
+        const int nv = cut.vertexCount();
+        std::array<double, 3> centroid{0, 0, 0};
+        for (int i = 0; i < nv; ++i)
+            for (int k = 0; k < 3; ++k) centroid[k] += cut.points[cut.subcells[s].vertices[i]].ref[k] / nv;
+        p = along(p, centroid, kSideOffset);
+        std::array<double, 8> N{};
+        shapeValues(cut.type, p, N);
+        const auto cn = mesh_.cellNodes(cut.cell);
+        std::array<double, 3> x{0, 0, 0};
+        for (size_t a = 0; a < cn.size(); ++a)
+            for (int k = 0; k < 3; ++k) x[k] += N[a] * mesh_.coords[cn[a]][k];
+        return x;
+    }
+
+    // u of node n in domain `key` equals value(f) (a domain whose slot was dropped: none).
+    void sideRelation(int n, const NodeEnrichment& en, const std::vector<signed char>& key,
+                      std::function<double(const std::vector<double>&)> value) {
+        LinearRelation r{{{n, comp_, 1.0}}, 0.0};
+        if (key != en.own) {
+            const auto it = std::find(en.slotDomain.begin(), en.slotDomain.end(), key);
+            if (it == en.slotDomain.end()) return;
+            const auto k = it - en.slotDomain.begin();
+            r.terms.push_back({n, fmt::format("H{}{}", k + 1, "XYZ"[c_]), en.slotValue[size_t(k)]});
+        }
+        emit_.push_back([this, r, value = std::move(value)](const std::vector<double>& f) {
+            out_.push_back(r);
+            out_.back().value = value(f);
+        });
     }
 
     // An enriched node of a cell cut by one interface: the interface, psi of the node's slot on the

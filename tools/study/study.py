@@ -519,6 +519,7 @@ def stability_points(full):
             pts.append(dict(family="offset", label=f"eps={e:.0e}", element=element, N=n, offset=e))
         pts.append(dict(family="through nodes", label="interfaces on grid lines", element=element, N=n, offset=0.0))
         pts.append(dict(family="cell centres", label="odd N", element=element, N=n + 1, offset=0.0))
+    pts += node_row_points(full)
     for E in [1e-3, 1.0, 1e3, 1e6, 1e9, 1e12]:
         pts.append(dict(family="E", label=f"E={E:.0e}", element="quad4", N=11, E=E))
     pts.append(dict(family="units", label="m, N, Pa (E=2e11 Pa)", element="quad4", N=11, E=2e11, size=1.0))
@@ -535,6 +536,23 @@ def stability_points(full):
                 pts.append(dict(family="offset " + solver, label=f"eps={e:.0e}", element="quad4", N=10, offset=e,
                                 solver=solver))
     return pts + contact_stability_points(full)
+
+
+def node_row_points(full):
+    """The interface X = 0 swept across a node row (grid offset ox of the interior lines, in cells) while
+    Y = 0 runs along a node row or through cells, at N = 4, 5, 6: the junction cell and the prescribed
+    sides' nodes next to it take every placement relative to the nodes (at N = 4 with X = 0 through the
+    cells next to the sides, those nodes sit in cells that see the three interfaces)."""
+    pts = []
+    for element in ["quad4", "tria3", "hexa8"] + (["tetra4"] if full else []):
+        for n in (4, 5, 6):
+            row = 0.0 if n % 2 == 0 else 0.5  # grid offset putting a node row on the interface
+            for oy, where in ((row, "Y on nodes"), (row + 0.5 - (1.0 if row else 0.0), "Y through cells")):
+                for dx in (-0.25, -1e-3, -1e-8, 0.0, 1e-8, 1e-3, 0.25, 0.5):
+                    ox = row + dx if abs(row + dx) < 1 else row + dx - 1.0
+                    pts.append(dict(family="node row", label=f"X {dx:+g} h from a node row, {where}",
+                                    element=element, N=n, offset=ox, offset_y=oy))
+    return pts
 
 
 def contact_stability_points(full):
@@ -618,8 +636,8 @@ def stability_case(ctx, p, tag):
     kw = dict(bounds=(-a, a, -a, a))
     if dim == 3:
         kw["zbounds"] = (0.0, size)
-    if p.get("offset"):
-        kw["offset"] = (p["offset"], p["offset"])
+    if p.get("offset") or p.get("offset_y"):
+        kw["offset"] = (p.get("offset", 0.0), p.get("offset_y", p.get("offset", 0.0)))
     mesh = ctx.mesh(element, p["N"], **kw)
     rec = ctx.run(tag, scenes.rigid_comm(element, E=E, NU=NU, size=size, solver=solver, info=2), mesh)
     rec.update({k: v for k, v in p.items()}, E=E, NU=NU, size=size, solver=solver, offset=p.get("offset", 0.0))
@@ -668,7 +686,9 @@ def study_stability(ctx):
            "ENER_RELA against sigma = 0. Verdict: `kept` when the error is <= 1e-9, `lost, alarm` when it is "
            "larger and the .mess carries an alarm, **LOST SILENTLY** otherwise (a defect). Offsets: the interior "
            "grid lines are moved by eps cell sizes (tools/ssnv511_mesh --offset eps eps), so that the interfaces "
-           "X=0 and Y=0 run eps*h from a row of nodes.\n\n")
+           "X=0 and Y=0 run eps*h from a row of nodes. Family `node row`: X=0 swept across a node row (offsets "
+           "-h/4 ... +h/2) while Y=0 runs along a node row or through cells, N = 4, 5, 6 (the junction and the "
+           "prescribed sides' nodes next to it in every placement; tools/ssnv511_mesh --offset OX OY).\n\n")
     silent = [r for r in records if r["verdict"] == "LOST SILENTLY"]
     rigid = [r for r in records if r.get("scene") != "contact"]
     contact = [r for r in records if r.get("scene") == "contact"]
