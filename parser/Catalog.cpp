@@ -38,15 +38,15 @@ void Catalog::add(cata::Command c) {
 const std::vector<std::string>& unsupportedCommands() {
     // code_aster commands that a user of this class of studies may try; miniaster has none of them.
     static const std::vector<std::string> names{
-        "POURSUITE",      "INCLUDE",          "CALC_CHAMP",  "CALC_CHAM_ELEM",     "TEST_RESU",
-        "TEST_FONCTION",  "DYNA_NON_LINE",    "DYNA_LINE",   "MECA_NON_LINE",      "THER_LINEAIRE",
-        "THER_NON_LINE",  "CALC_G",           "CALC_G_XFEM", "PROPA_FISS",         "DEFI_FISS_XFEM_PROPA",
-        "CREA_MAILLAGE",  "CREA_RESU",        "CREA_TABLE",  "PROJ_CHAMP",         "AFFE_CARA_ELEM",
-        "AFFE_CHAR_CINE", "DEFI_COMPOR",      "DEFI_NAPPE",  "CALC_FONCTION",      "IMPR_FONCTION",
-        "LIRE_RESU",      "EXTR_RESU",        "DETRUIRE",    "MACR_ADAP_MAIL",     "RAFF_XFEM",
-        "POST_K1_K2_K3",  "CALC_MATR_ELEM",   "NUME_DDL",    "ASSE_MATRICE",       "RESOUDRE",
-        "FACTORISER",     "MODE_ITER_SIMULT", "CALC_MODES",  "DEFI_LIST_INST",     "LIRE_TABLE",
-        "IMPR_CO",        "MACRO_ELAS_MULT",  "POST_ELEM",   "STAT_NON_LINE_XFEM",
+        "POURSUITE",       "INCLUDE",          "CALC_CHAMP",         "CALC_CHAM_ELEM", "TEST_RESU",
+        "TEST_FONCTION",   "DYNA_NON_LINE",    "DYNA_LINE",          "MECA_NON_LINE",  "THER_LINEAIRE",
+        "THER_NON_LINE",   "CALC_G",           "CALC_G_XFEM",        "PROPA_FISS",     "DEFI_FISS_XFEM_PROPA",
+        "CREA_MAILLAGE",   "CREA_RESU",        "CREA_TABLE",         "PROJ_CHAMP",     "AFFE_CARA_ELEM",
+        "AFFE_CHAR_CINE",  "DEFI_COMPOR",      "DEFI_NAPPE",         "CALC_FONCTION",  "IMPR_FONCTION",
+        "LIRE_RESU",       "EXTR_RESU",        "DETRUIRE",           "MACR_ADAP_MAIL", "RAFF_XFEM",
+        "POST_K1_K2_K3",   "CALC_MATR_ELEM",   "NUME_DDL",           "ASSE_MATRICE",   "RESOUDRE",
+        "FACTORISER",      "MODE_ITER_SIMULT", "CALC_MODES",         "DEFI_LIST_INST", "LIRE_TABLE",
+        "MACRO_ELAS_MULT", "POST_ELEM",        "STAT_NON_LINE_XFEM",
     };
     return names;
 }
@@ -299,6 +299,9 @@ void checkAllowed(const Keyword& def, const KeywordValue& v, const std::string& 
                                         quotedList(def.intoTexts)));
         if (std::find(def.unsupportedValues.begin(), def.unsupportedValues.end(), s) != def.unsupportedValues.end())
             throw NotImplemented(fmt::format("keyword {}: value '{}' is not supported by miniaster", path, s));
+        if (def.textCheck)
+            if (const std::string why = def.textCheck(s); !why.empty())
+                throw UserError(fmt::format("keyword {}: value '{}' {}", path, s, why));
     }
     if (std::holds_alternative<long long>(v)) {
         const long long i = std::get<long long>(v);
@@ -491,6 +494,14 @@ void validateLevel(const std::vector<Keyword>& content, const std::vector<Rule>&
 }
 
 }  // namespace
+
+std::string literalValueProblem(const cata::Keyword& def, const std::vector<KeywordValue>& values,
+                                const std::string& path) {
+    try {
+        for (const auto& v : values) checkAllowed(def, v, path);
+    } catch (const std::exception& e) { return e.what(); }
+    return "";
+}
 
 KeywordSet validateCall(const cata::Command& command, const CallArguments& args, CallArguments* context) {
     KeywordSet out;

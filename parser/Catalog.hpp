@@ -145,6 +145,9 @@ struct Keyword {
     // read the current syntax. Error messages keep the name the user wrote.
     std::map<std::string, std::string> legacyValues;
     std::string storedAs;
+    // Text values: a check beyond `into`, run by the static check (empty when accepted, else why
+    // not: "is not a Fortran real format ..."), e.g. FORMAT_R.
+    std::function<std::string(const std::string&)> textCheck;
 
     // Factor keyword content, or block content.
     std::vector<Keyword> content;
@@ -207,6 +210,10 @@ struct Keyword {
     }
     Keyword& legacy(std::map<std::string, std::string> values) {
         legacyValues = std::move(values);
+        return *this;
+    }
+    Keyword& checkedBy(std::function<std::string(const std::string&)> check) {
+        textCheck = std::move(check);
         return *this;
     }
     Keyword& storeAs(std::string current) {
@@ -303,6 +310,11 @@ public:
 private:
     std::map<std::string, cata::Command> commands_;
 };
+
+// What the run would refuse in these values of keyword `def`, given literally in the command file
+// (allowed and supported values, range, textCheck), or "" : the static check's value test.
+std::string literalValueProblem(const cata::Keyword& def, const std::vector<KeywordValue>& values,
+                                const std::string& path);
 
 // Commands of code_aster that miniaster does not provide at all (so that calling one gives
 // "not supported by miniaster" instead of an unknown name).

@@ -16,8 +16,8 @@ namespace ma {
 namespace {
 
 // The syntax-tree walk. `catalog`: command -> (level, accepts context keywords); a level maps
-// each keyword name to (supported, sub-level of a factor keyword or None). Returns
-// [(line, command, cause)] in line order.
+// each keyword name to (supported, sub-level of a factor keyword or None, check of its literal
+// values or None). Returns [(line, command, cause)] in line order.
 const char* kChecker = R"PY(
 import ast
 
@@ -48,8 +48,24 @@ def _defined_names(tree):
     return defined, opaque
 
 def _unknown_keyword(path, command, where, level):
-    known = ", ".join(sorted(k for k, (supported, _) in level.items() if supported))
+    known = ", ".join(sorted(k for k, (supported, _, _) in level.items() if supported))
     return "unknown keyword %s for %s (known keywords%s: %s)" % (path, command, where, known)
+
+def _literal(node):
+    try:
+        value = ast.literal_eval(node)
+    except Exception:
+        return None
+    items = list(value) if isinstance(value, (tuple, list)) else [value]
+    ok = all(isinstance(x, (str, float)) or (isinstance(x, int) and not isinstance(x, bool)) for x in items)
+    return items if ok and items else None
+
+def _check_value(kw, path, command, line, level, problems):
+    checker = level[kw.arg][2]
+    items = _literal(kw.value) if checker is not None else None
+    cause = checker(items, path) if items is not None else ""
+    if cause:
+        problems.append((line, command, cause))
 
 def _factor_calls(value):
     items = value.elts if isinstance(value, (ast.Tuple, ast.List)) else [value]
@@ -65,15 +81,20 @@ def _check_call(call, command, level, context_keywords, f_is_ours, problems):
             if not context_keywords:
                 problems.append((call.lineno, command, _unknown_keyword(kw.arg, command, "", level)))
             continue
+        _check_value(kw, kw.arg, command, call.lineno, level, problems)
         sub = level[kw.arg][1]
         if sub is None or not f_is_ours:
             continue
         for i, occurrence in _factor_calls(kw.value):
             where = "%s[%d]" % (kw.arg, i)
             for fkw in occurrence.keywords:
-                if fkw.arg is not None and fkw.arg not in sub:
+                if fkw.arg is None:
+                    continue
+                if fkw.arg not in sub:
                     problems.append((call.lineno, command,
                                      _unknown_keyword(where + "/" + fkw.arg, command, " in " + where, sub)))
+                else:
+                    _check_value(fkw, where + "/" + fkw.arg, command, call.lineno, sub, problems)
 
 def check(source, catalog, unsupported):
     try:
@@ -100,21 +121,42 @@ def check(source, catalog, unsupported):
     return problems
 )PY";
 
-// Keyword names of one catalog level, blocks flattened (a keyword of any block is known here).
+// The check of the literal values of a simple keyword: [str | int | float] -> "" or the cause.
+py::object valueChecker(const cata::Keyword& def) {
+    if (def.kind != cata::Keyword::Kind::Simple) return py::none();
+    return py::cpp_function([&def](const py::list& items, const std::string& path) {
+        std::vector<KeywordValue> values;
+        for (const auto& item : items) {
+            if (py::isinstance<py::str>(item) && def.acceptsText) values.emplace_back(item.cast<std::string>());
+            else if (py::isinstance<py::int_>(item) && (def.acceptsInt || def.acceptsReal))
+                values.emplace_back(def.acceptsInt ? KeywordValue(item.cast<long long>()) : item.cast<double>());
+            else if (py::isinstance<py::float_>(item) && def.acceptsReal) values.emplace_back(item.cast<double>());
+            else return std::string();  // a type the run reports with the value it sees
+        }
+        return literalValueProblem(def, values, path);
+    });
+}
+
+// Keyword names of one catalog level, blocks flattened (a keyword of any block is known here; one
+// that several blocks define may take other values in each: its values are left to the run).
 void addLevel(const std::vector<cata::Keyword>& content, py::dict& level) {
     for (const auto& k : content) {
         if (k.kind == cata::Keyword::Kind::Block) {
             addLevel(k.content, level);
             continue;
         }
-        if (level.contains(k.name.c_str())) continue;
+        if (level.contains(k.name.c_str())) {
+            py::tuple seen = level[k.name.c_str()];
+            level[k.name.c_str()] = py::make_tuple(seen[0], seen[1], py::none());
+            continue;
+        }
         py::object sub = py::none();
         if (k.kind == cata::Keyword::Kind::Factor) {
             py::dict d;
             addLevel(k.content, d);
             sub = d;
         }
-        level[k.name.c_str()] = py::make_tuple(k.kind != cata::Keyword::Kind::Unsupported, sub);
+        level[k.name.c_str()] = py::make_tuple(k.kind != cata::Keyword::Kind::Unsupported, sub, valueChecker(k));
     }
 }
 

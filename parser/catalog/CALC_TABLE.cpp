@@ -1,4 +1,5 @@
 // CALC_TABLE: table operations (filter, extract, rename, sort, combine, formula columns, delete).
+#include "core/FortranFormat.hpp"
 #include "parser/catalog/common/Blocks.hpp"
 
 namespace ma::catalog_entries {
@@ -19,7 +20,7 @@ void CALC_TABLE(Catalog& c) {
                       bloc(when("OPERATION", {"TRI"}), tableSort()),
                       bloc(when("OPERATION", {"COMB"}),
                            {CO("TABLE", {kTable}).mandatory(), TXM("NOM_PARA").many(),
-                            yesNo("RESTREINT").def("NON"), TXM("FORMAT_R")}),
+                            yesNo("RESTREINT").def("NON"), TXM("FORMAT_R").checkedBy(fortranFormatProblem)}),
                       bloc(when("OPERATION", {"OPER"}),
                            {CO("FORMULE", {kFormula}).mandatory(), TXM("NOM_PARA").mandatory(),
                             TXM("NOM_COLONNE").many()}),

@@ -1,4 +1,5 @@
 // IMPR_TABLE: a table printed in the .resu or a unit.
+#include "core/FortranFormat.hpp"
 #include "parser/catalog/common/Blocks.hpp"
 
 namespace ma::catalog_entries {
@@ -7,8 +8,8 @@ void IMPR_TABLE(Catalog& c) {
     c.add(cmd("IMPR_TABLE").keywords(join({
         {CO("TABLE", {kTable}).mandatory(),
          TXM("FORMAT").into({"TABLEAU", "ASTER", "TABLEAU_CROISE", "AGRAF", "XMGRACE", "NUMPY", "LATEX"})
-             .notSupported({"ASTER", "TABLEAU_CROISE", "AGRAF", "XMGRACE", "NUMPY", "LATEX"}).def("TABLEAU"),
-         I("UNITE").def(8), TXM("NOM_PARA").many(), TXM("FORMAT_R").def("E12.5"), TXM("SEPARATEUR").def(" "),
+             .notSupported({"ASTER", "TABLEAU_CROISE", "XMGRACE", "NUMPY", "LATEX"}).def("TABLEAU"),
+         I("UNITE").def(8), TXM("NOM_PARA").many(), TXM("FORMAT_R").def("E12.5").checkedBy(fortranFormatProblem), TXM("SEPARATEUR").def(" "),
          TXM("COMMENTAIRE").def("#"), TXM("COMM_PARA").def(""), TXM("DEBUT_LIGNE").def(""),
          TXM("FIN_LIGNE").def("\n"), yesNo("IMPR_FONCTION").def("NON"), titre(), info(),
          fact("TRI").keywords(tableSort())},

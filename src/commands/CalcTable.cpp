@@ -4,6 +4,7 @@
 
 #include "commands/TableKeywords.hpp"
 #include "core/Error.hpp"
+#include "core/FortranFormat.hpp"
 #include "core/Function.hpp"
 #include "core/Messages.hpp"
 #include "parser/CommandRegistry.hpp"

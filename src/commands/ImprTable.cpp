@@ -1,19 +1,14 @@
-// IMPR_TABLE, FORMAT='TABLEAU' (commands_spec.md §4). UNITE 8 (the default) is the result file
+// IMPR_TABLE, FORMAT='TABLEAU' or 'AGRAF' (commands_spec.md §4). UNITE 8 (the default) is the result file
 // (.resu); any other unit is a file of the run: the first IMPR_TABLE of the run on that unit
 // replaces it, the following ones append (code_aster keeps the unit open for the whole run).
 // Every write is atomic.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <filesystem>
-#include <fstream>
-#include <set>
-#include <sstream>
-
-#include "core/AtomicFile.hpp"
+#include "commands/TextUnit.hpp"
 #include "core/Error.hpp"
+#include "core/FortranFormat.hpp"
 #include "core/Messages.hpp"
-#include "core/Mpi.hpp"
 #include "core/Units.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "post/PostMessages.hpp"
@@ -23,28 +18,12 @@
 namespace ma {
 namespace {
 
-void appendToUnit(const std::string& path, const std::string& text) {
-    static std::set<std::string> openedThisRun;
-    if (!mpi::isRoot()) return;  // rank 0 writes (docs/mpi.md)
-    std::string content;
-    if (openedThisRun.count(path) && std::filesystem::exists(path)) {
-        std::ifstream in(path, std::ios::binary);
-        if (!in) throw UserError("IMPR_TABLE: cannot read back " + path);
-        std::ostringstream ss;
-        ss << in.rdbuf();
-        content = ss.str();
-    }
-    content += text;
-    writeFileAtomically(path, content);
-    openedThisRun.insert(path);
-}
-
 ConceptPtr imprTable(const KeywordSet& kw, CommandContext& ctx) {
     auto table = kw.object<Table>("TABLE");
     const std::string format = kw.text("FORMAT");
-    if (format != "TABLEAU")
-        throw NotImplemented(
-            fmt::format("{}: FORMAT='{}' is not supported by miniaster (TABLEAU is)", kw.pathOf("FORMAT"), format));
+    if (format != "TABLEAU" && format != "AGRAF")
+        throw NotImplemented(fmt::format("{}: FORMAT='{}' is not supported by miniaster (TABLEAU and AGRAF are)",
+                                         kw.pathOf("FORMAT"), format));
 
     // FILTRE and TRI are refused by the catalog (filter or sort with CALC_TABLE first).
     Table printed = *table;
@@ -60,6 +39,7 @@ ConceptPtr imprTable(const KeywordSet& kw, CommandContext& ctx) {
         if (!missing.empty()) msg().alarm(TABLE0_7, fmt::format("{}", fmt::join(missing, ", ")), table->name);
     }
     options.realFormat = fortranToPrintf(kw.text("FORMAT_R"));
+    options.agraf = format == "AGRAF";
     const std::string text = formatTable(printed, options);
 
     const long long unit = kw.integer("UNITE");
@@ -68,7 +48,7 @@ ConceptPtr imprTable(const KeywordSet& kw, CommandContext& ctx) {
     } else {
         if (!ctx.units) throw UserError("IMPR_TABLE: no logical units are defined for this run");
         const std::string path = ctx.units->output(int(unit));
-        appendToUnit(path, text);
+        appendToUnit("IMPR_TABLE", path, text);
         msg().infof("    table {} printed on unit {} ({})", table->name, unit, path);
     }
     return nullptr;

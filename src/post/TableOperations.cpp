@@ -392,19 +392,4 @@ std::vector<std::string> automaticTitle(const std::string& conceptName, const st
     return lines;
 }
 
-std::string fortranToPrintf(const std::string& fortranFormat) {
-    std::string f = strip(fortranFormat);
-    if (f.empty()) throw UserError("FORMAT_R is empty");
-    char letter = char(std::toupper(static_cast<unsigned char>(f[0])));
-    if (letter == 'D') letter = 'E';
-    const std::string spec = f.substr(1);
-    const bool valid = !spec.empty() && spec.find_first_not_of("0123456789.") == std::string::npos &&
-                       std::count(spec.begin(), spec.end(), '.') <= 1 &&
-                       std::isdigit(static_cast<unsigned char>(spec[0]));
-    if (!valid || (letter != 'E' && letter != 'F' && letter != 'G'))
-        throw UserError(
-            fmt::format("FORMAT_R '{}' is not a Fortran real format such as 'E12.5' or 'F10.3'", fortranFormat));
-    return fmt::format("%{}{}", spec, letter == 'F' ? 'f' : letter);
-}
-
 }  // namespace ma

@@ -60,7 +60,4 @@ ColumnType textColumnFor(size_t length);
 // re-flowed on lines of at most 80 characters.
 std::vector<std::string> automaticTitle(const std::string& conceptName, const std::string& typeName);
 
-// Fortran real format (FORMAT_R, e.g. 'E12.5', 'F10.3', 'G14.7') -> printf format ('%12.5E').
-std::string fortranToPrintf(const std::string& fortranFormat);
-
 }  // namespace ma

@@ -14,11 +14,8 @@ namespace {
 std::string ljust(const std::string& s, size_t w) { return s.size() >= w ? s : s + std::string(w - s.size(), ' '); }
 std::string rjust(const std::string& s, size_t w) { return s.size() >= w ? s : std::string(w - s.size(), ' ') + s; }
 
-// Width of the printf real format ("%12.5E" -> 12).
-size_t formatWidth(const std::string& f) {
-    const size_t p = f.find_first_of("0123456789");
-    return p == std::string::npos ? 0 : size_t(std::atoi(f.c_str() + p));
-}
+// Width of the printf real format: that of 0 written with it ("%12.5E" -> 12, " %12.5E" -> 13).
+size_t formatWidth(const std::string& f) { return printfReal(f.c_str(), 0.0).size(); }
 
 }  // namespace
 
@@ -55,7 +52,9 @@ std::string formatTable(const Table& table, const TablePrintOptions& options) {
     std::string header;
     for (size_t k = 0; k < cols.size(); ++k) {
         if (k) header += ' ';
-        header += ljust(table.column(cols[k]).name, widths[k]);
+        const Column& col = table.column(cols[k]);
+        const size_t blanks = col.type.kind == ColumnType::Real ? options.realFormat.find('%') : 0;
+        header += std::string(blanks, ' ') + ljust(col.name, widths[k] - blanks);
     }
     out += header + "\n";
 
@@ -71,7 +70,11 @@ std::string formatTable(const Table& table, const TablePrintOptions& options) {
                                                                           : 12;
             if (k) line += ' ';
             if (isEmpty(cell)) {
-                line += std::string(w - valueWidth, ' ') + ljust("-", valueWidth);
+                // code_aster pads '-' as its text format of the column: the real format's leading
+                // blanks (1PE12.5) come first.
+                const size_t blanks = col.type.kind == ColumnType::Real ? options.realFormat.find('%') : 0;
+                if (options.agraf) line += '\\';
+                line += std::string(w - valueWidth + blanks, ' ') + ljust("-", valueWidth - blanks);
                 continue;
             }
             any = true;

@@ -10,6 +10,7 @@ namespace ma {
 struct TablePrintOptions {
     std::vector<std::string> columns;   // NOM_PARA (all columns when empty)
     std::string realFormat = "%12.5E";  // FORMAT_R 'E12.5' in printf form
+    bool agraf = false;                 // FORMAT='AGRAF': an empty cell is written '\-' (code_aster's table_py)
 };
 
 // The text IMPR_TABLE appends to its unit: '#', the separator line, the title lines, the column

@@ -6,6 +6,7 @@
 #include <functional>
 #include <sstream>
 
+#include "core/FortranFormat.hpp"
 #include "core/Function.hpp"
 #include "core/Messages.hpp"
 #include "core/Units.hpp"
@@ -383,6 +384,25 @@ TEST(ImprTable, NoTitleEmptyColumnsIntegersAndSelection) {
               "#DX         NOEUD   \n"
               "    -0.250 N1      \n"
               "     0.000 N2      \n\n");
+}
+
+TEST(ImprTable, AgrafWithScaleFactorAsCodeAsterPrintsIt) {
+    // code_aster's table_py with FORMAT='AGRAF', FORMAT_R='1PE12.5' (fmtF2PY: ' %12.5E'): the real
+    // column is 13 wide, its name and '-' start after the blank, an empty cell is preceded by '\'.
+    Table t;
+    t.addColumn("NOEUD", ColumnType::text(8));
+    t.addColumn("DX", ColumnType::real());
+    t.set(t.addRow(), 0, std::string("N1"));
+    t.set(0, 1, -0.25);
+    t.set(t.addRow(), 0, std::string("N2"));
+    TablePrintOptions agraf;
+    agraf.realFormat = fortranToPrintf("1PE12.5");
+    agraf.agraf = true;
+    EXPECT_EQ(formatTable(t, agraf),
+              "#\n#--------------------------------------------------------------------------------\n"
+              "#NOEUD     DX          \n"
+              "N1        -2.50000E-01\n"
+              "N2       \\ -           \n\n");
 }
 
 TEST(ImprTable, CommandWritesResuOrUnit) {

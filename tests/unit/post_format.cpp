@@ -4,6 +4,7 @@
 #include <cfloat>
 #include <cmath>
 
+#include "core/FortranFormat.hpp"
 #include "post/PythonFormat.hpp"
 #include "post/TableOperations.hpp"
 
@@ -61,4 +62,11 @@ TEST(FortranFormat, ToPrintf) {
     EXPECT_EQ(fortranToPrintf("G14.7"), "%14.7G");
     EXPECT_THROW(fortranToPrintf("X12"), std::exception);
     EXPECT_THROW(fortranToPrintf("E"), std::exception);
+    // a scale factor: code_aster's fmtF2PY puts as many blanks before the value
+    EXPECT_EQ(fortranToPrintf("1PE12.5"), " %12.5E");
+    EXPECT_EQ(fortranToPrintf("2PD15.8"), "  %15.8E");
+    EXPECT_EQ(fortranFormatProblem("1PE12.5"), "");
+    EXPECT_NE(fortranFormatProblem("PE12.5"), "");
+    EXPECT_NE(fortranFormatProblem("1PX12"), "");
+    EXPECT_NE(fortranFormatProblem("E12.5.3"), "");
 }

@@ -1,0 +1,30 @@
+#include "commands/TextUnit.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "core/AtomicFile.hpp"
+#include "core/Error.hpp"
+#include "core/Mpi.hpp"
+
+namespace ma {
+
+void appendToUnit(const std::string& command, const std::string& path, const std::string& text) {
+    static std::set<std::string> openedThisRun;
+    if (!mpi::isRoot()) return;  // rank 0 writes (docs/mpi.md)
+    std::string content;
+    if (openedThisRun.count(path) && std::filesystem::exists(path)) {
+        std::ifstream in(path, std::ios::binary);
+        if (!in) throw UserError(command + ": cannot read back " + path);
+        std::ostringstream ss;
+        ss << in.rdbuf();
+        content = ss.str();
+    }
+    content += text;
+    writeFileAtomically(path, content);
+    openedThisRun.insert(path);
+}
+
+}  // namespace ma

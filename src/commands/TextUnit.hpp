@@ -1,0 +1,11 @@
+#pragma once
+// Text written by a command on a logical unit other than the result file (IMPR_TABLE, IMPR_CO).
+#include <string>
+
+namespace ma {
+
+// The first write of the run on a unit replaces its file, the following ones append (code_aster
+// keeps the unit open for the whole run). Atomic; rank 0 only.
+void appendToUnit(const std::string& command, const std::string& path, const std::string& text);
+
+}  // namespace ma
