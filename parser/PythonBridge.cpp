@@ -430,7 +430,7 @@ py::object callConcept(ConceptHandle& self, py::args args) {
     auto& run = RunState::current();
     auto f = std::dynamic_pointer_cast<Function>(self.object);
     if (!f) throw py::type_error(fmt::format("{} ({}) is not a function", self.object->name, self.object->typeName()));
-    if (args.size() != f->parameters().size())
+    if (args.size() != f->parameters().size() && !f->parameters().empty())  // DEFI_CONSTANTE takes any
         throw py::type_error(fmt::format("{}() takes {} argument(s) ({}), got {}", self.object->name,
                                          f->parameters().size(), fmt::join(f->parameters(), ", "), args.size()));
     std::vector<double> values;

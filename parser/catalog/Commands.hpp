@@ -16,6 +16,7 @@ void AFFE_MODELE(Catalog&);
 void CALC_TABLE(Catalog&);
 void CREA_CHAMP(Catalog&);
 void DEBUT(Catalog&);
+void DEFI_CONSTANTE(Catalog&);
 void DEFI_CONTACT(Catalog&);
 void DEFI_FISS_XFEM(Catalog&);
 void DEFI_FONCTION(Catalog&);
@@ -24,6 +25,7 @@ void DEFI_LIST_REEL(Catalog&);
 void DEFI_MATERIAU(Catalog&);
 void FIN(Catalog&);
 void FORMULE(Catalog&);
+void IMPR_CO(Catalog&);
 void IMPR_RESU(Catalog&);
 void IMPR_TABLE(Catalog&);
 void LIRE_MAILLAGE(Catalog&);
@@ -52,6 +54,7 @@ inline const std::vector<CommandFile>& commandFiles() {
         {"CALC_TABLE", CALC_TABLE},
         {"CREA_CHAMP", CREA_CHAMP},
         {"DEBUT", DEBUT},
+        {"DEFI_CONSTANTE", DEFI_CONSTANTE},
         {"DEFI_CONTACT", DEFI_CONTACT},
         {"DEFI_FISS_XFEM", DEFI_FISS_XFEM},
         {"DEFI_FONCTION", DEFI_FONCTION},
@@ -60,6 +63,7 @@ inline const std::vector<CommandFile>& commandFiles() {
         {"DEFI_MATERIAU", DEFI_MATERIAU},
         {"FIN", FIN},
         {"FORMULE", FORMULE},
+        {"IMPR_CO", IMPR_CO},
         {"IMPR_RESU", IMPR_RESU},
         {"IMPR_TABLE", IMPR_TABLE},
         {"LIRE_MAILLAGE", LIRE_MAILLAGE},

@@ -35,12 +35,18 @@ ConvergenceOptions convergenceOptions(const KeywordSet& kw) {
 }
 
 void refuseUnsupportedBehaviour(const KeywordSet& kw) {
+    bool localIntegration = false;
     for (const auto& occ : kw.factor("COMPORTEMENT")) {
         if (occ.text("RELATION") != "ELAS")
             throw NotImplemented(occ.pathOf("RELATION") + "='" + occ.text("RELATION") + "': only ELAS is supported");
         if (occ.text("DEFORMATION") != "PETIT")
             throw NotImplemented(occ.pathOf("DEFORMATION") + "='" + occ.text("DEFORMATION") + "': only PETIT");
+        for (const char* k : {"RESI_INTE_RELA", "ITER_INTE_MAXI", "ITER_INTE_PAS"}) localIntegration |= occ.has(k);
     }
+    if (localIntegration)
+        msg().infof(
+            "    COMPORTEMENT: RESI_INTE_RELA, ITER_INTE_MAXI and ITER_INTE_PAS control the local integration "
+            "of non-linear behaviours; with RELATION='ELAS' there is none, they are not used");
     if (kw.text("METHODE") != "NEWTON")
         throw NotImplemented("STAT_NON_LINE/METHODE='" + kw.text("METHODE") + "': only NEWTON");
 }

@@ -41,6 +41,19 @@ public:
     char leftExtension = 'E', rightExtension = 'E';
 };
 
+// DEFI_CONSTANTE: the same value for any parameters (code_aster's NOM_PARA 'TOUTPARA'), so it
+// has none and takes any arguments.
+class ConstantFunction : public Function {
+public:
+    std::string typeName() const override { return "fonction_sdaster"; }
+    const std::vector<std::string>& parameters() const override { return none_; }
+    double evaluate(std::span<const double>) const override { return value; }
+    double value = 0.0;
+
+private:
+    std::vector<std::string> none_;
+};
+
 // DEFI_LIST_REEL.
 class RealList : public Concept {
 public:

@@ -59,6 +59,7 @@ CH3 = AFFE_CHAR_MECA(MODELE=MX, LIAISON_XFEM='OUI', INFO=1)
 CH4 = AFFE_CHAR_MECA(MODELE=MX, CONTACT_XFEM=CT)
 VAR1 = DEFI_FONCTION(NOM_PARA='INST', VALE=(0.0, 0.0, 1.0, 1.0), INTERPOL='LIN', PROL_GAUCHE='CONSTANT',
                      PROL_DROITE='LINEAIRE', VERIF='CROISSANT', NOM_RESU='TOUTRESU')
+ZERO = DEFI_CONSTANTE(VALE=0.0, NOM_RESU='TOUTRESU')
 L_INST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=(_F(JUSQU_A=1, NOMBRE=1), _F(JUSQU_A=2., PAS=0.5)))
 L2 = DEFI_LIST_REEL(VALE=(0., 1.))
 U1 = MECA_STATIQUE(MODELE=MX, CHAM_MATER=CM, EXCIT=(_F(CHARGE=CH1), _F(CHARGE=CH2, FONC_MULT=VAR1)), INFO=1)
@@ -74,7 +75,7 @@ U3 = STAT_NON_LINE(MODELE=MX, CHAM_MATER=CM, CONTACT=CT,
                    SOLVEUR=_F(METHODE='MUMPS', NPREC=-1, PCENT_PIVOT=250, RENUM='AUTO', ELIM_LAGR='NON', RESI_RELA=-1.0),
                    ARCHIVAGE=_F(CHAM_EXCLU='VARI_ELGA', PAS_ARCH=1), INFO=1)
 U3 = STAT_NON_LINE(reuse=U3, MODELE=MX, CHAM_MATER=CM, EXCIT=_F(CHARGE=CH3),
-                   COMP_ELAS=_F(RELATION='ELAS', TOUT='OUI'),
+                   COMP_ELAS=_F(RELATION='ELAS', TOUT='OUI', RESI_INTE_RELA=1e-6, ITER_INTE_MAXI=100, ITER_INTE_PAS=-10),
                    INCREMENT=_F(LIST_INST=L_INST, NUME_INST_INIT=0, NUME_INST_FIN=1),
                    CONVERGENCE=_F(ARRET='NON'), SOLVEUR=_F(METHODE='PETSC', PRE_COND='LDLT_INC', RESI_RELA=1e-8),
                    ARCHIVAGE=_F(LIST_INST=L2))
@@ -114,6 +115,8 @@ Z[1] = CALC_TABLE(TABLE=DEP, ACTION=(_F(OPERATION='FILTRE', NOM_PARA='NOEUD', CR
                  TITRE='zone 1')
 IMPR_TABLE(TABLE=Z[1])
 IMPR_TABLE(TABLE=T1, UNITE=8, FORMAT='TABLEAU', NOM_PARA=('GROUP_MA', 'REFERENCE'), FORMAT_R='E12.5')
+IMPR_TABLE(TABLE=DEP, FORMAT='AGRAF', FORMAT_R='1PE12.5', IMPR_FONCTION='NON')
+IMPR_CO(CONCEPT=(_F(NOM=F1), _F(NOM=(MA, DEP, ZERO))), UNITE=8, NIVEAU=2)
 TEST_TABLE(TABLE=Z[1], NOM_PARA='DX', TYPE_TEST='MIN', VALE_CALC=-0.25, VALE_REFE=-0.25, CRITERE='RELATIF',
            PRECISION=1e-13, REFERENCE='ANALYTIQUE')
 TEST_TABLE(TABLE=T1, NOM_PARA='REFERENCE', VALE_CALC=0., VALE_REFE=0., REFERENCE='ANALYTIQUE',
@@ -146,6 +149,20 @@ TEST(ParserCatalog, EveryCommandIsAcceptedBySyntaxCheck) {
     EXPECT_NE(r.output.find("Z_1 = CALC_TABLE("), std::string::npos);
     // The run never pretends: the commands were validated, not executed.
     EXPECT_NE(r.output.find("syntax checked; not executed (--check-syntax)"), std::string::npos);
+}
+
+// Keyword values the catalog cannot take are found by the static check, before any command runs:
+// a FORMAT_R that is not a Fortran real format after a solve.
+TEST(ParserCatalog, AFormatRThatIsNotFortranIsRefusedBeforeAnyCommandRuns) {
+    auto r = runComm(std::string(kEveryCommand)
+                         .replace(std::string(kEveryCommand).find("FORMAT_R='1PE12.5'"), 18, "FORMAT_R='1PQ12.5'"));
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("<F> <ERROR> IMPR_TABLE (t.comm, line 102): keyword FORMAT_R: value '1PQ12.5' is not a "
+                            "Fortran real format such as 'E12.5', '1PE12.5', 'D15.8', 'F10.3' or 'G14.7'"),
+              std::string::npos)
+        << r.output;
+    EXPECT_EQ(r.output.find("# Command #0001"), std::string::npos) << r.output;  // nothing ran
+    EXPECT_FALSE(r.exists("out/t.resu"));
 }
 
 // A command file in the syntax of the 2011-2012 versions of ssnv511 (commands_spec §9, old-only

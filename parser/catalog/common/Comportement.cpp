@@ -14,6 +14,9 @@ Keyword comportement(const std::string& name) {
         TXM("DEFORMATION").into({"PETIT", "PETIT_REAC", "GROT_GDEP", "SIMO_MIEHE", "GDEF_LOG"})
             .notSupported({"PETIT_REAC", "GROT_GDEP", "SIMO_MIEHE", "GDEF_LOG"}).def("PETIT"),
         TXM("TOUT").into({"OUI"}), TXM("GROUP_MA").many(), TXM("MAILLE").many(),
+        // Local integration of non-linear behaviours: accepted, meaningless for ELAS (said in the .mess).
+        R("RESI_INTE_RELA").range(0.0, std::nullopt), I("ITER_INTE_MAXI").range(0.0, std::nullopt),
+        I("ITER_INTE_PAS"),
     }).rules({exclus({"TOUT", "GROUP_MA", "MAILLE"})});
     if (name != "COMPORTEMENT") k.storeAs("COMPORTEMENT");
     return k;

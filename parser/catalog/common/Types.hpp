@@ -28,6 +28,11 @@ inline const std::string kGaussField = "cham_elem";
 inline const std::vector<std::string> kAnyFunction{kFunction, kFormula};
 inline const std::vector<std::string> kAnyResult{kStaticResult, kNonlinearResult};
 inline const std::vector<std::string> kAnyField{kNodalField, kGaussField};
+// Any concept (IMPR_CO, DETRUIRE).
+inline const std::vector<std::string> kAnyConcept{kMesh,           kModel,          kMaterial, kMaterialField,
+                                                  kMechanicalLoad, kContact,        kStaticResult,
+                                                  kNonlinearResult, kTable,         kFunction, kFormula,
+                                                  kRealList,       kCrack,          kNodalField, kGaussField};
 
 // Keywords shared by many commands.
 inline Keyword info(std::vector<long long> levels = {1, 2}) { return I("INFO").intoInt(std::move(levels)).def(1); }
