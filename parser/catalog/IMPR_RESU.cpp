@@ -1,4 +1,4 @@
-// IMPR_RESU: results written as MED or GMSH files.
+// IMPR_RESU: results written as MED or GMSH files, a mesh as code_aster's text (RESULTAT, ASTER).
 #include "parser/catalog/common/Types.hpp"
 
 namespace ma::catalog_entries {
@@ -6,8 +6,10 @@ namespace ma::catalog_entries {
 void IMPR_RESU(Catalog& c) {
     c.add(cmd("IMPR_RESU").keywords(join({
         {TXM("FORMAT").into({"MED", "RESULTAT", "ASTER", "IDEAS", "GMSH", "CASTEM"})
-             .notSupported({"RESULTAT", "ASTER", "IDEAS", "CASTEM"}).def("MED"),
+             .notSupported({"IDEAS", "CASTEM"}).def("MED"),
          bloc(when("FORMAT", {"MED"}), {I("UNITE").def(80)}),
+         bloc(when("FORMAT", {"RESULTAT"}), {I("UNITE").def(8)}),
+         bloc(when("FORMAT", {"ASTER"}), {I("UNITE").def(26)}),
          bloc(when("FORMAT", {"GMSH"}), {I("UNITE").def(37), R("VERSION").def(1.2)}),
          yesNo("PROC0").def("OUI"),
          fact("RESU").many().mandatory().keywords(join({

@@ -1,18 +1,21 @@
 // IMPR_RESU, FORMAT='MED' (issue 3): the mesh with its groups, result fields at the selected
 // orders (code_aster names: result name padded with '_' to 8 + NOM_CHAM), or a lone field.
 // The first IMPR_RESU of a run on a unit creates the file; later ones on the same unit add to it,
-// as code_aster does (docs/med.md).
+// as code_aster does (docs/med.md). FORMAT='RESULTAT' / 'ASTER': a mesh as a .mail text
+// (mesh/AsterMeshWriter), on the .resu (UNITE 8) or a unit.
 #include <fmt/format.h>
 
 #include <set>
 
 #include "commands/ImprResuGmsh.hpp"
+#include "commands/TextUnit.hpp"
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "core/Mpi.hpp"
 #include "core/Units.hpp"
 #include "fe/Result.hpp"
 #include "med_io/MedWriter.hpp"
+#include "mesh/AsterMeshWriter.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "post/PostMessages.hpp"
 
@@ -120,9 +123,39 @@ void printField(med::MedWriter& w, const ConceptPtr& field, const KeywordSet& oc
     }
 }
 
+// FORMAT='RESULTAT' (UNITE 8: the .resu) or 'ASTER': each RESU/MAILLAGE as a .mail text.
+ConceptPtr imprResuText(const KeywordSet& kw, CommandContext& ctx) {
+    const std::string format = kw.text("FORMAT");
+    std::string text;
+    for (const auto& occ : kw.factor("RESU")) {
+        for (const char* k : {"RESULTAT", "CHAM_GD"})
+            if (occ.has(k))
+                throw NotImplemented(
+                    fmt::format("{} with FORMAT='{}': miniaster prints a mesh (MAILLAGE) in this "
+                                "format, not fields; print fields with FORMAT='MED' or 'GMSH'",
+                                occ.pathOf(k), format));
+        if (!occ.has("MAILLAGE")) continue;
+        auto mesh = occ.object<Mesh>("MAILLAGE");
+        text +=
+            asterMeshText(*mesh,
+                          {fmt::format(" MAILLAGE {} (miniaster, IMPR_RESU FORMAT='{}')", meshNameOf(*mesh), format)});
+        msg().infof("    mesh {} printed ({} nodes, {} cells)", meshNameOf(*mesh), mesh->nodeCount(),
+                    mesh->cellCount());
+    }
+    const long long unit = kw.integer("UNITE");
+    if (unit == 8) {
+        msg().result(text);
+    } else {
+        if (!ctx.units) throw UserError("IMPR_RESU: no logical units are defined for this run");
+        appendToUnit("IMPR_RESU", ctx.units->output(int(unit)), text);
+    }
+    return nullptr;
+}
+
 ConceptPtr imprResu(const KeywordSet& kw, CommandContext& ctx) {
     const std::string format = kw.text("FORMAT");
     if (format == "GMSH") return imprResuGmsh(kw, ctx);
+    if (format == "RESULTAT" || format == "ASTER") return imprResuText(kw, ctx);
     if (format != "MED")
         throw NotImplemented("IMPR_RESU: FORMAT='" + format + "' is not supported; use FORMAT='MED' or 'GMSH'");
     for (const auto& occ : kw.factor("RESU"))  // keywords of the GMSH output only

@@ -134,6 +134,7 @@ IMPR_RESU(FORMAT='MED', UNITE=80, RESU=(_F(MAILLAGE=MA), _F(RESULTAT=U1, NOM_CHA
                                        _F(RESULTAT=U3, TOUT_ORDRE='OUI'), _F(RESULTAT=RX, INST=1.0),
                                        _F(CHAM_GD=UC), _F(CHAM_GD=SC)))
 IMPR_RESU(RESU=_F(RESULTAT=RE))
+IMPR_RESU(FORMAT='RESULTAT', RESU=_F(MAILLAGE=MA))
 FIN()
 )";
 }  // namespace

@@ -14,6 +14,7 @@
 #include "med_io/MedWriter.hpp"
 #include "med_test_support.hpp"
 #include "mesh/AsterMeshReader.hpp"
+#include "mesh/AsterMeshWriter.hpp"
 
 using namespace ma;
 
@@ -200,6 +201,39 @@ TEST(AsterMeshReader, MedConversionReadsBackTheSameMesh) {
         EXPECT_EQ(internal, std::vector<int>(expected.begin(), expected.end())) << cellTypeName(t);
     }
     std::filesystem::remove_all(dir);
+}
+
+// IMPR_RESU FORMAT='RESULTAT' / 'ASTER' writes a mesh as code_aster's irmare does; the reader
+// gives back the same mesh: every cell type (HEXA27's 27 nodes on continuation lines), names,
+// groups, and coordinates to the 15 digits of 1PE21.14.
+TEST(AsterMeshWriter, TheReaderReadsBackTheSameMesh) {
+    for (const std::string& path :
+         {projectCase("mesh_cells.mail"), std::string(MINIASTER_SHARED_DIR) + "/astest/ssnv173d.mail"}) {
+        auto m = readAsterMesh(path);
+        m->coords[0][0] += 1.0 / 3.0;  // a value 1PE21.14 rounds
+        AsterMeshReport report;
+        const std::string text = asterMeshText(*m, {" a title line"});
+        EXPECT_EQ(text.rfind(" TITRE\n a title line\n FINSF\n %\n COOR_", 0), 0u) << text;
+        EXPECT_EQ(text.substr(text.size() - 5), " FIN\n");
+        auto back = parse(text, &report);
+        EXPECT_EQ(report.title, std::vector<std::string>{" a title line"});
+        EXPECT_TRUE(report.alarms.empty());
+        EXPECT_EQ(back->dim, m->dim) << path;
+        EXPECT_EQ(back->nodeNames, m->nodeNames);
+        EXPECT_EQ(back->cellNames, m->cellNames);
+        EXPECT_EQ(back->cellTypes, m->cellTypes);
+        EXPECT_EQ(back->cellOffsets, m->cellOffsets);
+        EXPECT_EQ(back->connectivity, m->connectivity);
+        ASSERT_EQ(back->coords.size(), m->coords.size());
+        for (size_t n = 0; n < m->coords.size(); ++n)
+            for (int j = 0; j < 3; ++j)
+                EXPECT_NEAR(back->coords[n][size_t(j)], m->coords[n][size_t(j)],
+                            5e-15 * std::max(1.0, std::abs(m->coords[n][size_t(j)])));
+        EXPECT_EQ(back->nodeGroups.names(), m->nodeGroups.names());
+        EXPECT_EQ(back->cellGroups.names(), m->cellGroups.names());
+        for (const auto& g : m->nodeGroups.names()) EXPECT_EQ(back->nodeGroups.get(g), m->nodeGroups.get(g)) << g;
+        for (const auto& g : m->cellGroups.names()) EXPECT_EQ(back->cellGroups.get(g), m->cellGroups.get(g)) << g;
+    }
 }
 
 TEST(AsterMeshReader, FreeLayoutOfCodeAsterLexer) {
