@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include "cli/MpiConfinement.hpp"
 #include "core/Mpi.hpp"
 #include "parser/ExportFile.hpp"
 
@@ -58,6 +59,10 @@ int launchProcessesIfAsked(int argc, char** argv) {
     if (geteuid() == 0) {  // OpenMPI refuses root without these
         setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 0);
         setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 0);
+    }
+    if (const auto refused = confineLaunchedJob()) {
+        std::fprintf(stderr, "miniaster: %s; nothing was run\n", refused->c_str());
+        return 1;
     }
     std::error_code ec;
     const std::string self = std::filesystem::read_symlink("/proc/self/exe", ec).string();
