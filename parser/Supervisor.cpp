@@ -15,6 +15,7 @@
 #include "core/Messages.hpp"
 #include "core/Mpi.hpp"
 #include "core/TestReport.hpp"
+#include "parser/EmbeddedPython.hpp"
 #include "parser/ExportFile.hpp"
 #include "parser/ParserMessages.hpp"
 #include "parser/RunGuard.hpp"
@@ -285,12 +286,16 @@ void runCommandFile(const Options& opt, RunState& run, RunOutputs& outputs, cons
             fmt::format("\n  limits      : {}{}",
                         limits.timeLimitSeconds ? fmt::format("time {:g} s (CPU) ", *limits.timeLimitSeconds) : "",
                         limits.memoryLimitMb ? fmt::format("memory {:g} MB (resident)", *limits.memoryLimitMb) : "");
+    if (const std::string note = pythonHomeNote(); !note.empty()) announced += "\n  " + note;
     msg().infof(
         "  command file: {}\n  message log : {}\n  result file : {}\n  memory      : {}\n  MPI processes: {}{}{}",
         run.commFile, outputs.mess, outputs.resu, mallocPagesState(), mpi::size(),
         opt.checkOnly ? "\n  mode        : syntax check only (--check-syntax)" : "", announced);
     // The interpreter lives until the process ends: concepts may hold Python objects (FORMULE).
-    py::initialize_interpreter();
+    if (const auto refused = startEmbeddedPython()) {
+        run.fail("ERROR", "", 0, *refused);
+        return;
+    }
     installCrashHandler(outputs.messFd);  // after Python, which installs its own handlers
     startRunGuard(limits, stopFromWatchdog);
     try {
