@@ -40,6 +40,9 @@ std::string temporaryBase() {
 void confineMpiLibraries() {
     addToList("HWLOC_PLUGINS_BLACKLIST", "hwloc_gl,hwloc_opencl");
     setenv("OMPI_MCA_shmem", "mmap", 0);
+    // The session folders of --np runs killed before mpirun could remove them (SIGKILL).
+    std::error_code ec;
+    if (fs::is_directory(temporaryBase(), ec)) removeStaleTemporaries(temporaryBase(), kSessionStem);
 }
 
 std::optional<std::string> confineLaunchedJob() {
@@ -50,7 +53,6 @@ std::optional<std::string> confineLaunchedJob() {
                (fs::exists(base, ec) ? "" : " (it does not exist)");
     if (::access(base.c_str(), W_OK | X_OK) != 0)
         return "cannot write in the temporary folder TMPDIR=" + base + ": " + std::strerror(errno);
-    removeStaleTemporaries(base, kSessionStem);
     // mpirun creates the folder and removes it when the job ends; it has this process's pid.
     const std::string session = temporaryPathFor((fs::path(base) / kSessionStem).string());
     setenv("OMPI_MCA_orte_top_session_dir", session.c_str(), 0);

@@ -9,13 +9,14 @@ namespace ma::cli {
 
 // Every process, before MPI_Init: hwloc without its display plugins (the GL plugin connects to
 // the X servers :0..:9, on 127.0.0.1:6000-6009 and their sockets; OpenCL loads vendor drivers),
-// and OpenMPI's shared-memory framework without its POSIX probe (a file in /dev/shm).
+// and OpenMPI's shared-memory framework without its POSIX probe (a file in /dev/shm). The
+// session folders of killed --np runs (below) are removed here.
 void confineMpiLibraries();
 
 // The launcher, before it becomes `mpirun`: OpenMPI's session folder (its contact file, PMIx's
 // stores, the shared-memory segments of the processes) in one folder of the run,
-// $TMPDIR/miniaster-mpi.miniaster-tmp.<host>.<pid>, which mpirun removes at its end; the folders
-// of dead runs (a SIGKILL) are removed here; the processes talk through shared memory only.
+// $TMPDIR/miniaster-mpi.miniaster-tmp.<host>.<pid>, which mpirun removes at its end; the
+// processes talk through shared memory only.
 // Returns the reason when TMPDIR cannot hold that folder.
 std::optional<std::string> confineLaunchedJob();
 
