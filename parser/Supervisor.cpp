@@ -5,11 +5,13 @@
 #include <fmt/format.h>
 #include <pybind11/embed.h>
 
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 
+#include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/MallocHugePages.hpp"
 #include "core/Messages.hpp"
@@ -63,11 +65,19 @@ struct SetupError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-std::string readFile(const std::string& path) {
+// The command file's text; nullopt with the system's reason in `cause` when it cannot be read.
+std::optional<std::string> readCommandFile(const std::string& path, std::string& cause) {
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw SetupError("cannot read " + path);
+    if (!in) {
+        cause = systemError("cannot read the command file", path, errno);
+        return std::nullopt;
+    }
     std::ostringstream s;
     s << in.rdbuf();
+    if (in.bad()) {
+        cause = systemError("cannot read the command file", path, errno ? errno : EIO);
+        return std::nullopt;
+    }
     return s.str();
 }
 
@@ -95,12 +105,20 @@ std::string timingSummary(const RunState& run) {
 
 // Executes the command file; every failure ends up in run.failure.
 void executeCommandFile(RunState& run) {
-    const std::string source = readFile(run.commFile);
+    std::string cause;
+    const std::optional<std::string> text = readCommandFile(run.commFile, cause);
+    if (!text) {
+        run.fail("ERROR", "", 0, cause);
+        return;
+    }
+    const std::string& source = *text;
     py::module_ builtins = py::module_::import("builtins");
+    // The file's name as Python sees names of the file system: any bytes, not only UTF-8.
+    const py::object fileName = py::module_::import("os").attr("fsdecode")(py::bytes(run.commFile));
     py::object code;
     try {
         try {
-            code = builtins.attr("compile")(py::bytes(source), run.commFile, "exec", 0, true);
+            code = builtins.attr("compile")(py::bytes(source), fileName, "exec", 0, true);
         } catch (py::error_already_set& e) {
             // Files of the Python 2 era may hold latin-1 comments without a coding declaration.
             const std::string what = e.what();
@@ -108,7 +126,7 @@ void executeCommandFile(RunState& run) {
                 (what.find("UTF-8") == std::string::npos && what.find("utf-8") == std::string::npos))
                 throw;
             py::object text = py::bytes(source).attr("decode")("latin-1");
-            code = builtins.attr("compile")(text, run.commFile, "exec", 0, true);
+            code = builtins.attr("compile")(text, fileName, "exec", 0, true);
             msg().alarm(SUPERVIS_3);
         }
     } catch (py::error_already_set& e) {
@@ -131,7 +149,7 @@ void executeCommandFile(RunState& run) {
     py::dict globals;
     globals["__builtins__"] = builtins;
     globals["__name__"] = "__main__";
-    globals["__file__"] = run.commFile;
+    globals["__file__"] = fileName;
     py::module_ miniaster = py::module_::import("_miniaster");
     try {
         builtins.attr("exec")(code, globals);
@@ -142,8 +160,7 @@ void executeCommandFile(RunState& run) {
         int line = 0;
         for (py::handle tb = e.trace(); tb && !tb.is_none(); tb = tb.attr("tb_next")) {
             py::object frameCode = tb.attr("tb_frame").attr("f_code");
-            if (frameCode.attr("co_filename").cast<std::string>() == run.commFile)
-                line = tb.attr("tb_lineno").cast<int>();
+            if (py::object(frameCode.attr("co_filename")).equal(fileName)) line = tb.attr("tb_lineno").cast<int>();
         }
         py::object value = e.value();
         const std::string type = py::str(py::type::handle_of(value).attr("__name__")).cast<std::string>();
