@@ -261,11 +261,15 @@ RunLimits setUpRun(const Options& opt, RunState& run, RunOutputs& outputs) {
         std::error_code ec;
         if (!fs::exists(opt.input, ec)) throw SetupError("the command file " + opt.input + " does not exist");
         if (fs::is_directory(opt.input, ec)) throw SetupError("the command file " + opt.input + " is a folder");
+        if (!fs::is_regular_file(opt.input, ec))
+            throw SetupError("the command file " + opt.input + " is not a regular file (" + kNotRegular + ")");
         run.commFile = fs::absolute(opt.input).lexically_normal().string();
     }
     if (!opt.mesh.empty()) {
         std::error_code ec;
         if (!fs::exists(opt.mesh, ec)) throw SetupError("the mesh file " + opt.mesh + " (--mesh) does not exist");
+        if (!fs::is_regular_file(opt.mesh, ec))
+            throw SetupError("the mesh file " + opt.mesh + " (--mesh) is not a regular file (" + kNotRegular + ")");
         run.units.setInput(20, fs::absolute(opt.mesh).lexically_normal().string());
     }
     run.units.setOutputDir(outputs.resultFolders.empty() ? outputs.outDir : outputs.resultFolders.front());
