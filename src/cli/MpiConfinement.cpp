@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -9,6 +10,7 @@
 #include <string_view>
 
 #include "core/AtomicFile.hpp"
+#include "core/Mpi.hpp"
 
 namespace fs = std::filesystem;
 
@@ -30,36 +32,36 @@ void addToList(const char* variable, std::string_view items) {
     setenv(variable, list.c_str(), 1);
 }
 
-std::string temporaryBase() {
+// TMPDIR (as OpenMPI reads it), else /tmp; the reason when it cannot hold the session folder.
+std::optional<std::string> temporaryBase(std::string& base) {
     const char* tmp = std::getenv("TMPDIR");
-    return tmp && *tmp ? tmp : "/tmp";
+    base = tmp && *tmp ? tmp : "/tmp";
+    std::error_code ec;
+    if (!fs::is_directory(base, ec))
+        return "the temporary folder TMPDIR=" + base + (fs::exists(base, ec) ? " is not a folder" : " does not exist");
+    if (::access(base.c_str(), W_OK | X_OK) != 0)
+        return "cannot write in the temporary folder TMPDIR=" + base + ": " + std::strerror(errno);
+    return std::nullopt;
 }
 
 }  // namespace
 
-void confineMpiLibraries() {
+std::optional<std::string> confineMpiLibraries() {
     addToList("HWLOC_PLUGINS_BLACKLIST", "hwloc_gl,hwloc_opencl");
     setenv("OMPI_MCA_shmem", "mmap", 0);
-    // The session folders of --np runs killed before mpirun could remove them (SIGKILL).
-    std::error_code ec;
-    if (fs::is_directory(temporaryBase(), ec)) removeStaleTemporaries(temporaryBase(), kSessionStem);
-}
-
-std::optional<std::string> confineLaunchedJob() {
-    const std::string base = temporaryBase();
-    std::error_code ec;
-    if (!fs::is_directory(base, ec))
-        return "the temporary folder TMPDIR=" + base + " is not a folder" +
-               (fs::exists(base, ec) ? "" : " (it does not exist)");
-    if (::access(base.c_str(), W_OK | X_OK) != 0)
-        return "cannot write in the temporary folder TMPDIR=" + base + ": " + std::strerror(errno);
-    // mpirun creates the folder and removes it when the job ends; it has this process's pid.
+    if (mpi::launchedByMpirun()) return std::nullopt;
+    std::string base;
+    if (auto refused = temporaryBase(base)) return refused;
+    removeStaleTemporaries(base, kSessionStem);
+    // Created by MPI_Init (or mpirun), removed by MPI_Finalize (or mpirun); it has this process's
+    // pid, which mpirun keeps when the launcher becomes it.
     const std::string session = temporaryPathFor((fs::path(base) / kSessionStem).string());
     setenv("OMPI_MCA_orte_top_session_dir", session.c_str(), 0);
     setenv("OMPI_MCA_btl_vader_backing_directory", session.c_str(), 0);
     setenv("OMPI_MCA_osc_sm_backing_directory", session.c_str(), 0);
-    setenv("OMPI_MCA_btl", "self,vader", 0);  // one machine: no TCP transport listening on every interface
     return std::nullopt;
 }
+
+void confineLaunchedJob() { setenv("OMPI_MCA_btl", "self,vader", 0); }
 
 }  // namespace ma::cli
