@@ -198,6 +198,7 @@ Options parseArguments(int argc, char** argv) {
         std::string a = argv[i];
         auto value = [&]() -> std::string {
             if (i + 1 >= argc) throw SetupError(a + " needs a value");
+            if (!*argv[i + 1]) throw SetupError(a + " needs a value, got an empty one");
             return argv[++i];
         };
         if (a == "--out-dir") {
@@ -224,6 +225,8 @@ Options parseArguments(int argc, char** argv) {
             opt.runOptions[o->name] = v;
         } else if (!a.empty() && a[0] == '-') {
             throw SetupError("unknown option " + a);
+        } else if (a.empty()) {
+            throw SetupError("an empty argument: the case (.export or .comm) has no name");
         } else if (opt.input.empty()) {
             opt.input = a;
         } else {
