@@ -103,18 +103,10 @@ std::string timingSummary(const RunState& run) {
     return out;
 }
 
-// Executes the command file; every failure ends up in run.failure.
-void executeCommandFile(RunState& run) {
-    std::string cause;
-    const std::optional<std::string> text = readCommandFile(run.commFile, cause);
-    if (!text) {
-        run.fail("ERROR", "", 0, cause);
-        return;
-    }
-    const std::string& source = *text;
+// The command file compiled (latin-1 when it is not UTF-8, alarm SUPERVIS_3); None after a
+// syntax error, in run.failure.
+py::object compileCommandFile(const std::string& source, const py::object& fileName, RunState& run) {
     py::module_ builtins = py::module_::import("builtins");
-    // The file's name as Python sees names of the file system: any bytes, not only UTF-8.
-    const py::object fileName = py::module_::import("os").attr("fsdecode")(py::bytes(run.commFile));
     py::object code;
     try {
         try {
@@ -143,8 +135,25 @@ void executeCommandFile(RunState& run) {
             text = std::string("cannot compile the command file: ") + e.what();
         }
         run.fail("SYNTAX_ERROR", "", line, text);
+        return py::none();
+    }
+    return code;
+}
+
+// Executes the command file; every failure ends up in run.failure.
+void executeCommandFile(RunState& run) {
+    std::string cause;
+    const std::optional<std::string> text = readCommandFile(run.commFile, cause);
+    if (!text) {
+        run.fail("ERROR", "", 0, cause);
         return;
     }
+    const std::string& source = *text;
+    py::module_ builtins = py::module_::import("builtins");
+    // The file's name as Python sees names of the file system: any bytes, not only UTF-8.
+    const py::object fileName = py::module_::import("os").attr("fsdecode")(py::bytes(run.commFile));
+    const py::object code = compileCommandFile(source, fileName, run);
+    if (code.is_none()) return;
     if (!checkCommandFileStatically(source, run)) return;  // every visible problem at once, nothing run
     py::dict globals;
     globals["__builtins__"] = builtins;
