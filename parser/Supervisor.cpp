@@ -207,14 +207,18 @@ Options parseArguments(int argc, char** argv) {
         std::string a = argv[i];
         auto value = [&]() -> std::string {
             if (i + 1 >= argc) throw SetupError(a + " needs a value");
-            if (!*argv[i + 1]) throw SetupError(a + " needs a value, got an empty one");
             return argv[++i];
         };
+        auto path = [&]() -> std::string {
+            std::string v = value();
+            if (v.empty()) throw SetupError(a + " needs a value, got an empty one");
+            return v;
+        };
         if (a == "--out-dir") {
-            opt.outDir = value();
+            opt.outDir = path();
             opt.outDirGiven = true;
         } else if (a == "--mesh") {
-            opt.mesh = value();
+            opt.mesh = path();
         } else if (a == "--np") {
             const std::string v = value();
             const bool number = !v.empty() && v.find_first_not_of("0123456789") == std::string::npos && v.size() < 6;
