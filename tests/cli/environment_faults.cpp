@@ -33,6 +33,20 @@ std::string readAll(const fs::path& p) {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
+// The run ended well (exit 0) with `part` in its .mess `out/<messName>`.
+void expectSucceededWith(const RunResult& r, const std::string& messName, const std::string& part) {
+    EXPECT_EQ(r.status, 0) << r.output.substr(0, 4000);
+    EXPECT_TRUE(contains(r.file("out/" + messName), part)) << r.file("out/" + messName).substr(0, 4000);
+}
+
+// The run failed (exit 1) with `part` in its .mess `out/<messName>`; that .mess.
+std::string expectFailedWith(const RunResult& r, const std::string& messName, const std::string& part) {
+    EXPECT_EQ(r.status, 1) << r.output.substr(0, 4000);
+    const std::string mess = r.file("out/" + messName);
+    EXPECT_TRUE(contains(mess, part)) << mess.substr(0, 4000);
+    return mess;
+}
+
 // One system call of an strace -ff file: name, quoted paths, result, the process's program.
 struct Call {
     std::string name, args, program;
@@ -215,20 +229,16 @@ TEST(Environment, EmbeddedPythonIsTheBuildOne) {
     fs::create_symlink("/usr/bin/python3", dir / "venv/bin/python3");
     writeText(dir / "venv/pyvenv.cfg", "home = /usr/bin\ninclude-system-site-packages = false\n");
     writeText(dir / "t.comm", "DEBUT()\nimport numpy\nprint('numpy', numpy.__name__)\nFIN()\n");
-    auto venv = runMiniaster(dir, "t.comm", "", "PATH='" + (dir / "venv/bin").string() + "':\"$PATH\"");
-    EXPECT_EQ(venv.status, 0) << venv.output;
-    EXPECT_TRUE(contains(venv.file("out/t.mess"), "numpy numpy"));
+    expectSucceededWith(runMiniaster(dir, "t.comm", "", "PATH='" + (dir / "venv/bin").string() + "':\"$PATH\""),
+                        "t.mess", "numpy numpy");
 
-    auto home = runMiniaster(dir, "t.comm", "", "PYTHONHOME=/nonexistent");
-    EXPECT_EQ(home.status, 0) << home.output;
-    EXPECT_TRUE(contains(home.file("out/t.mess"), "PYTHONHOME=/nonexistent is ignored")) << home.file("out/t.mess");
+    expectSucceededWith(runMiniaster(dir, "t.comm", "", "PYTHONHOME=/nonexistent"), "t.mess",
+                        "PYTHONHOME=/nonexistent is ignored");
 
     fs::create_directories(dir / "lib/encodings");
     writeText(dir / "lib/encodings/__init__.py", "raise ImportError('not a standard library')\n");
     auto path = runMiniaster(dir, "t.comm", "", "PYTHONPATH='" + (dir / "lib").string() + "'");
-    EXPECT_EQ(path.status, 1) << path.output;
-    const std::string mess = path.file("out/t.mess");
-    EXPECT_TRUE(contains(mess, "<F> <ERROR> (t.comm): the embedded Python (home ")) << mess;
+    const std::string mess = expectFailedWith(path, "t.mess", "<F> <ERROR> (t.comm): the embedded Python (home ");
     EXPECT_TRUE(contains(mess, "cannot start")) << mess;
     EXPECT_TRUE(contains(mess, "--- DIAGNOSTIC JOB : <F>_ERROR"));
 }
@@ -239,9 +249,7 @@ TEST(Environment, VirtualMemoryLimitIsNamed) {
     for (const std::string n : {"300000000", "240000000"}) {
         auto r = runComm("DEBUT()\nL = DEFI_LIST_REEL(DEBUT=0., INTERVALLE=_F(JUSQU_A=1., NOMBRE=" + n + "))\nFIN()\n",
                          "", "ulimit -v 2000000;");
-        EXPECT_EQ(r.status, 1) << r.output;
-        const std::string mess = r.file("out/t.mess");
-        EXPECT_TRUE(contains(mess, "<F> <ERROR> DEFI_LIST_REEL (t.comm, line 2): ")) << mess;
+        const std::string mess = expectFailedWith(r, "t.mess", "<F> <ERROR> DEFI_LIST_REEL (t.comm, line 2): ");
         EXPECT_TRUE(contains(mess, "the 1953 MB limit of the process's virtual memory (ulimit -v, RLIMIT_AS)")) << mess;
         EXPECT_FALSE(contains(mess, "of memory available on this machine")) << mess;
     }
@@ -251,12 +259,10 @@ TEST(Environment, VirtualMemoryLimitIsNamed) {
 // with the TIME_LIMIT paragraph.
 TEST(Environment, CpuTimeLimitOfTheProcessStopsTheRun) {
     auto r = runComm("DEBUT()\nwhile True: pass\n", "", "ulimit -t 3;");
-    EXPECT_EQ(r.status, 1) << r.output;
-    const std::string mess = r.file("out/t.mess");
-    EXPECT_TRUE(contains(mess,
+    const std::string mess =
+        expectFailedWith(r, "t.mess",
                          "<F> <TIME_LIMIT> (t.comm, in the Python code after the command of line 1): the CPU "
-                         "time limit of the process (3 s: ulimit -t, RLIMIT_CPU) is about to be reached"))
-        << mess;
+                         "time limit of the process (3 s: ulimit -t, RLIMIT_CPU) is about to be reached");
     EXPECT_TRUE(contains(mess, "--- DIAGNOSTIC JOB : <F>_TIME_LIMIT"));
 }
 
@@ -265,15 +271,10 @@ TEST(Environment, CommandFileNameNotUtf8) {
     auto dir = freshDir();
     writeText(dir / "t\xe9.comm", "DEBUT()\nx = 1\nFIN()\n");
     writeText(dir / "u\xe9.comm", "DEBUT()\nx = 1 / 0\nFIN()\n");
-    auto ok = runMiniaster(dir, "t\xe9.comm");
-    EXPECT_EQ(ok.status, 0) << ok.output;
-    EXPECT_TRUE(contains(ok.file("out/t\xe9.mess"), "--- DIAGNOSTIC JOB : OK"));
-    auto bad = runMiniaster(dir, "u\xe9.comm");
-    EXPECT_EQ(bad.status, 1) << bad.output;
-    EXPECT_TRUE(contains(bad.file("out/u\xe9.mess"),
-                         "<F> <ERROR> (u\xe9.comm, line 2): error in the Python code of "
-                         "the command file: ZeroDivisionError"))
-        << bad.file("out/u\xe9.mess");
+    expectSucceededWith(runMiniaster(dir, "t\xe9.comm"), "t\xe9.mess", "--- DIAGNOSTIC JOB : OK");
+    expectFailedWith(runMiniaster(dir, "u\xe9.comm"), "u\xe9.mess",
+                     "<F> <ERROR> (u\xe9.comm, line 2): error in the Python code of the command file: "
+                     "ZeroDivisionError");
 }
 
 // Item 8: an unreadable command file says so (as root: run as nobody, who cannot read it).
@@ -284,12 +285,9 @@ TEST(Environment, UnreadableCommandFile) {
     fs::permissions(dir / "t.comm", fs::perms::owner_read | fs::perms::owner_write);
     const std::string asOther = geteuid() == 0 ? "exec setpriv --reuid=nobody --regid=nogroup --clear-groups" : "";
     if (geteuid() != 0) fs::permissions(dir / "t.comm", fs::perms::none);
-    auto r = runMiniaster(dir, "t.comm", "", asOther);
-    EXPECT_EQ(r.status, 1) << r.output;
-    const std::string mess = r.file("out/t.mess");
-    EXPECT_TRUE(contains(mess, "<F> <ERROR> (t.comm): cannot read the command file " + (dir / "t.comm").string() +
-                                   ": Permission denied"))
-        << mess;
+    const std::string mess = expectFailedWith(runMiniaster(dir, "t.comm", "", asOther), "t.mess",
+                                              "<F> <ERROR> (t.comm): cannot read the command file " +
+                                                  (dir / "t.comm").string() + ": Permission denied");
     EXPECT_FALSE(contains(mess, "internal error"));
 }
 
@@ -298,9 +296,7 @@ TEST(Environment, ByteOrderMarkInTheExport) {
     auto dir = freshDir();
     writeText(dir / "t.comm", "DEBUT()\nFIN()\n");
     writeText(dir / "t.export", "\xEF\xBB\xBFP time_limit 60\nF comm t.comm D 1\n");
-    auto r = runMiniaster(dir, "t.export");
-    EXPECT_EQ(r.status, 0) << r.output;
-    EXPECT_TRUE(contains(r.file("out/t.mess"), "limits      : time 60 s (CPU)"));
+    expectSucceededWith(runMiniaster(dir, "t.export"), "t.mess", "limits      : time 60 s (CPU)");
 }
 
 // Item 8: the .mess echoes a bounded prefix of huge values, with their count; an error quoting a
@@ -328,15 +324,9 @@ TEST(Environment, FifoAndEmptyOutDir) {
     auto direct = runMiniaster(dir, "f.comm");
     auto exported = runMiniaster(dir, "g.export");
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 30.0);
-    EXPECT_EQ(direct.status, 1);
-    EXPECT_TRUE(contains(direct.file("out/f.mess"),
-                         "<F> <ERROR> the command file f.comm is not a regular file (a "
-                         "FIFO, a device or a socket"))
-        << direct.output;
-    EXPECT_EQ(exported.status, 1);
-    EXPECT_TRUE(contains(exported.file("out/g.mess"),
-                         "g.export, line 1: " + (dir / "f.comm").string() + " is not a regular file"))
-        << exported.output;
+    expectFailedWith(direct, "f.mess",
+                     "<F> <ERROR> the command file f.comm is not a regular file (a FIFO, a device or a socket");
+    expectFailedWith(exported, "g.mess", "g.export, line 1: " + (dir / "f.comm").string() + " is not a regular file");
 
     writeText(dir / "t.comm", "DEBUT()\nFIN()\n");
     const std::string cmd =
