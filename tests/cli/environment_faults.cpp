@@ -231,6 +231,11 @@ TEST(Environment, EmbeddedPythonIsTheBuildOne) {
     writeText(dir / "t.comm", "DEBUT()\nimport numpy\nprint('numpy', numpy.__name__)\nFIN()\n");
     expectSucceededWith(runMiniaster(dir, "t.comm", "", "PATH='" + (dir / "venv/bin").string() + "':\"$PATH\""),
                         "t.mess", "numpy numpy");
+    fs::create_directories(dir / "fake");  // a python3 that is a script (pyenv's shims are)
+    writeText(dir / "fake/python3", "#!/bin/sh\nexit 1\n");
+    fs::permissions(dir / "fake/python3", fs::perms::owner_all);
+    expectSucceededWith(runMiniaster(dir, "t.comm", "", "PATH='" + (dir / "fake").string() + "':\"$PATH\""), "t.mess",
+                        "numpy numpy");
 
     expectSucceededWith(runMiniaster(dir, "t.comm", "", "PYTHONHOME=/nonexistent"), "t.mess",
                         "PYTHONHOME=/nonexistent is ignored");
