@@ -18,6 +18,7 @@ std::string pythonHomeNote() {
 std::optional<std::string> startEmbeddedPython() {
     PyConfig config;
     PyConfig_InitPythonConfig(&config);
+    config.write_bytecode = 0;  // no __pycache__ beside the modules a command file imports
     // An explicit home wins over PYTHONHOME; the program name is the build's interpreter, so
     // no pyvenv.cfg of a python3 found on PATH is read.
     PyStatus status = PyConfig_SetBytesString(&config, &config.home, MINIASTER_PYTHON_HOME);

@@ -221,8 +221,8 @@ TEST(Environment, TemporaryFolderThatIsAFile) {
 }
 
 // Item 7: a venv first on PATH (its python3 without numpy) does not change the interpreter; a
-// wrong PYTHONHOME is ignored and said; a PYTHONPATH holding a broken standard library is an
-// error with a .mess, not an abort.
+// wrong PYTHONHOME is ignored and said; PYTHONPATH is honoured; one holding a broken standard
+// library is an error with a .mess, not an abort.
 TEST(Environment, EmbeddedPythonIsTheBuildOne) {
     auto dir = freshDir();
     fs::create_directories(dir / "venv/bin");
@@ -239,6 +239,13 @@ TEST(Environment, EmbeddedPythonIsTheBuildOne) {
 
     expectSucceededWith(runMiniaster(dir, "t.comm", "", "PYTHONHOME=/nonexistent"), "t.mess",
                         "PYTHONHOME=/nonexistent is ignored");
+
+    fs::create_directories(dir / "mods");  // PYTHONPATH for the user's own modules is honoured
+    writeText(dir / "mods/mymod.py", "X = 3\n");
+    writeText(dir / "m.comm", "DEBUT()\nimport mymod\nprint('mymod', mymod.X)\nFIN()\n");
+    expectSucceededWith(runMiniaster(dir, "m.comm", "", "PYTHONPATH='" + (dir / "mods").string() + "'"), "m.mess",
+                        "mymod 3");
+    EXPECT_FALSE(fs::exists(dir / "mods/__pycache__")) << "nothing written beside the module";
 
     fs::create_directories(dir / "lib/encodings");
     writeText(dir / "lib/encodings/__init__.py", "raise ImportError('not a standard library')\n");
