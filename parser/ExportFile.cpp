@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -9,9 +10,13 @@
 #include <set>
 #include <sstream>
 
+#include "core/AtomicFile.hpp"
+
 namespace fs = std::filesystem;
 
 namespace ma {
+
+const char* const kNotRegular = "a FIFO, a device or a socket: its reading could wait for ever";
 
 namespace {
 
@@ -54,6 +59,7 @@ public:
         std::string text;
         while (std::getline(in, text)) {
             ++line_;
+            if (line_ == 1 && text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);  // a UTF-8 byte order mark
             texts_.push_back(text);
             const auto t = tokens(text);
             if (t.empty() || t[0][0] == '#') continue;
@@ -142,6 +148,8 @@ private:
         if (e.directory && !fs::is_directory(status)) fail(fmt::format("{} is not a directory", e.path.string()));
         if (!e.directory && fs::is_directory(status))
             fail(fmt::format("{} is a directory, not a file (directories go on R lines)", e.path.string()));
+        if (!e.directory && !fs::is_regular_file(status))
+            fail(fmt::format("{} is not a regular file ({})", e.path.string(), kNotRegular));
     }
 
     void checkConsistency() {
@@ -182,8 +190,10 @@ std::string ExportFile::where(const ExportEntry& e) const { return fmt::format("
 ExportFile readExportFile(const std::string& exportPath, const std::optional<fs::path>& resultBase) {
     std::error_code ec;
     if (fs::is_directory(exportPath, ec)) throw ExportError("the .export file " + exportPath + " is a directory");
+    if (fs::exists(exportPath, ec) && !fs::is_regular_file(exportPath, ec))
+        throw ExportError("the .export file " + exportPath + " is not a regular file (" + kNotRegular + ")");
     std::ifstream in(exportPath);
-    if (!in) throw ExportError("cannot read the .export file " + exportPath);
+    if (!in) throw ExportError(systemError("cannot read the .export file", exportPath, errno));
     return Reader(exportPath, resultBase).read(in);
 }
 

@@ -42,8 +42,11 @@ struct ExportFile {
 // Reads and checks `exportPath`. Relative data paths are relative to the .export's folder, relative
 // result paths to `resultBase` (the --out-dir when given, else the .export's folder). Checks: the
 // syntax of every line, units (integers 0..99, one line per unit, 15 is the 'code' file), flags,
-// data files that exist (a directory is not a file), a result that would overwrite a data file, a
+// data files that exist and are regular files (not a directory, a FIFO, a device), a result that would overwrite a data file, a
 // code_aster database (`base`/`bhdf`: no POURSUITE in miniaster), one command file.
 ExportFile readExportFile(const std::string& exportPath, const std::optional<std::filesystem::path>& resultBase);
+
+// Why an input must be a regular file (the end of the refusal of a FIFO, a device, a socket).
+extern const char* const kNotRegular;
 
 }  // namespace ma

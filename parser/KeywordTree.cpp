@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace ma {
 
 namespace {
@@ -104,10 +106,17 @@ void KeywordSet::remove(const std::string& keyword) {
     factor_.erase(keyword);
 }
 
+std::string boundedText(const std::string& text, size_t limit) {
+    if (text.size() <= limit) return text;
+    size_t cut = limit;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;  // a continuation byte
+    return fmt::format("{}... ({} characters)", text.substr(0, cut), text.size());
+}
+
 std::string formatKeywordValue(const KeywordValue& v) {
     if (std::holds_alternative<long long>(v)) return std::to_string(std::get<long long>(v));
     if (std::holds_alternative<double>(v)) return fmt::format("{}", std::get<double>(v));
-    if (std::holds_alternative<std::string>(v)) return "'" + std::get<std::string>(v) + "'";
+    if (std::holds_alternative<std::string>(v)) return "'" + boundedText(std::get<std::string>(v)) + "'";
     const auto& c = std::get<ConceptPtr>(v);
     return c ? c->name : "None";
 }
@@ -121,16 +130,19 @@ std::string KeywordSet::echo(int indent) const {
             out += formatKeywordValue(vals[0]);
         } else {
             out += "(";
-            for (size_t i = 0; i < vals.size(); ++i) {
+            for (size_t i = 0; i < std::min(vals.size(), kEchoedValues); ++i) {
                 if (i) out += ", ";
                 out += formatKeywordValue(vals[i]);
             }
+            if (vals.size() > kEchoedValues) out += fmt::format(", ... ({} values)", vals.size());
             out += ")";
         }
         out += ",\n";
     }
     for (const auto& [k, occs] : factor_) {
-        for (const auto& o : occs) { out += pad + k + "=_F(\n" + o.echo(indent + 4) + pad + "    ),\n"; }
+        for (size_t i = 0; i < std::min(occs.size(), kEchoedValues); ++i)
+            out += pad + k + "=_F(\n" + occs[i].echo(indent + 4) + pad + "    ),\n";
+        if (occs.size() > kEchoedValues) out += fmt::format("{}... ({} occurrences of {})\n", pad, occs.size(), k);
     }
     return out;
 }

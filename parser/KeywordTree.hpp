@@ -79,6 +79,17 @@ private:
     std::map<std::string, std::vector<KeywordSet>> factor_;
 };
 
+// A value as the .mess shows it: a text beyond kEchoedCharacters is cut (see boundedText).
 std::string formatKeywordValue(const KeywordValue& v);
+
+// What the .mess echoes of one input, so that a huge input (a list of 10^6 group names, a text of
+// 50 MB) does not make a huge log: texts cut to kEchoedCharacters, lists to kEchoedValues values,
+// factor keywords to kEchoedValues occurrences, each with the count it had.
+constexpr size_t kEchoedCharacters = 400;
+constexpr size_t kEchoedValues = 100;
+constexpr size_t kEchoedParagraph = 8000;  // an error paragraph
+// `text` when at most `limit` bytes, else its first `limit` (not inside a UTF-8 character) and
+// "... (N characters)".
+std::string boundedText(const std::string& text, size_t limit = kEchoedCharacters);
 
 }  // namespace ma

@@ -502,7 +502,9 @@ RunState& RunState::current() {
 void RunState::fail(const std::string& kind, const std::string& who, int line, const std::string& cause) {
     if (failure) return;
     std::string where = line > 0 ? fmt::format("({}, line {})", commBaseName, line) : fmt::format("({})", commBaseName);
-    std::string paragraph = fmt::format("<F> <{}> {}{}: {}", kind, who.empty() ? "" : who + " ", where, cause);
+    // Causes quote inputs (a value, a Python exception's text): a bounded paragraph.
+    std::string paragraph = fmt::format("<F> <{}> {}{}: {}", kind, who.empty() ? "" : who + " ", where,
+                                        boundedText(cause, kEchoedParagraph));
     failure = RunFailure{kind, paragraph};
     msg().info("\n" + paragraph + "\n");
 }

@@ -3,8 +3,10 @@
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <poll.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <cstdio>
@@ -40,7 +42,25 @@ double cpuSeconds() {
     return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
+// The soft RLIMIT_CPU (ulimit -t), when set. At a hard limit equal to it (what `ulimit -t` sets)
+// the kernel sends SIGKILL, not SIGXCPU: the run stops a little before, with its paragraph.
+std::optional<double> processCpuLimit() {
+    rlimit limit{};
+    if (::getrlimit(RLIMIT_CPU, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return std::nullopt;
+    return double(limit.rlim_cur);
+}
+
+void checkProcessCpuLimit(const std::optional<double>& seconds, StopHandler stop) {
+    if (!seconds) return;
+    const double margin = std::min(1.0, 0.2 * *seconds);  // CPU seconds; ticks of 50 ms, several threads
+    if (const double used = cpuSeconds(); used > *seconds - margin)
+        stop("TIME_LIMIT", fmt::format("the CPU time limit of the process ({:g} s: ulimit -t, RLIMIT_CPU) is about to "
+                                       "be reached ({:.1f} s used); the run is stopped before the system kills it",
+                                       *seconds, used));
+}
+
 void watch(RunLimits limits, StopHandler stop) {
+    const std::optional<double> processLimit = processCpuLimit();
     while (!gStopping) {
         pollfd p{gWakePipe[0], POLLIN, 0};
         if (::poll(&p, 1, kTickMs) > 0 && (p.revents & POLLIN)) {
@@ -53,6 +73,7 @@ void watch(RunLimits limits, StopHandler stop) {
             stop("TIME_LIMIT", fmt::format("the time limit of {:g} s (P time_limit, CPU time of the process) is "
                                            "reached; the run is stopped",
                                            *limits.timeLimitSeconds));
+        checkProcessCpuLimit(processLimit, stop);
         if (const double resident = limits.memoryLimitMb ? residentMemoryMb() : 0.0;
             limits.memoryLimitMb && resident > *limits.memoryLimitMb)
             stop("MEMORY_LIMIT", fmt::format("the resident memory of the process ({:.0f} MB) exceeds the "

@@ -5,16 +5,19 @@
 #include <fmt/format.h>
 #include <pybind11/embed.h>
 
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 
+#include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/MallocHugePages.hpp"
 #include "core/Messages.hpp"
 #include "core/Mpi.hpp"
 #include "core/TestReport.hpp"
+#include "parser/EmbeddedPython.hpp"
 #include "parser/ExportFile.hpp"
 #include "parser/ParserMessages.hpp"
 #include "parser/RunGuard.hpp"
@@ -62,11 +65,19 @@ struct SetupError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-std::string readFile(const std::string& path) {
+// The command file's text; nullopt with the system's reason in `cause` when it cannot be read.
+std::optional<std::string> readCommandFile(const std::string& path, std::string& cause) {
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw SetupError("cannot read " + path);
+    if (!in) {
+        cause = systemError("cannot read the command file", path, errno);
+        return std::nullopt;
+    }
     std::ostringstream s;
     s << in.rdbuf();
+    if (in.bad()) {
+        cause = systemError("cannot read the command file", path, errno ? errno : EIO);
+        return std::nullopt;
+    }
     return s.str();
 }
 
@@ -92,14 +103,14 @@ std::string timingSummary(const RunState& run) {
     return out;
 }
 
-// Executes the command file; every failure ends up in run.failure.
-void executeCommandFile(RunState& run) {
-    const std::string source = readFile(run.commFile);
+// The command file compiled (latin-1 when it is not UTF-8, alarm SUPERVIS_3); None after a
+// syntax error, in run.failure.
+py::object compileCommandFile(const std::string& source, const py::object& fileName, RunState& run) {
     py::module_ builtins = py::module_::import("builtins");
     py::object code;
     try {
         try {
-            code = builtins.attr("compile")(py::bytes(source), run.commFile, "exec", 0, true);
+            code = builtins.attr("compile")(py::bytes(source), fileName, "exec", 0, true);
         } catch (py::error_already_set& e) {
             // Files of the Python 2 era may hold latin-1 comments without a coding declaration.
             const std::string what = e.what();
@@ -107,7 +118,7 @@ void executeCommandFile(RunState& run) {
                 (what.find("UTF-8") == std::string::npos && what.find("utf-8") == std::string::npos))
                 throw;
             py::object text = py::bytes(source).attr("decode")("latin-1");
-            code = builtins.attr("compile")(text, run.commFile, "exec", 0, true);
+            code = builtins.attr("compile")(text, fileName, "exec", 0, true);
             msg().alarm(SUPERVIS_3);
         }
     } catch (py::error_already_set& e) {
@@ -124,13 +135,30 @@ void executeCommandFile(RunState& run) {
             text = std::string("cannot compile the command file: ") + e.what();
         }
         run.fail("SYNTAX_ERROR", "", line, text);
+        return py::none();
+    }
+    return code;
+}
+
+// Executes the command file; every failure ends up in run.failure.
+void executeCommandFile(RunState& run) {
+    std::string cause;
+    const std::optional<std::string> text = readCommandFile(run.commFile, cause);
+    if (!text) {
+        run.fail("ERROR", "", 0, cause);
         return;
     }
+    const std::string& source = *text;
+    py::module_ builtins = py::module_::import("builtins");
+    // The file's name as Python sees names of the file system: any bytes, not only UTF-8.
+    const py::object fileName = py::module_::import("os").attr("fsdecode")(py::bytes(run.commFile));
+    const py::object code = compileCommandFile(source, fileName, run);
+    if (code.is_none()) return;
     if (!checkCommandFileStatically(source, run)) return;  // every visible problem at once, nothing run
     py::dict globals;
     globals["__builtins__"] = builtins;
     globals["__name__"] = "__main__";
-    globals["__file__"] = run.commFile;
+    globals["__file__"] = fileName;
     py::module_ miniaster = py::module_::import("_miniaster");
     try {
         builtins.attr("exec")(code, globals);
@@ -141,8 +169,7 @@ void executeCommandFile(RunState& run) {
         int line = 0;
         for (py::handle tb = e.trace(); tb && !tb.is_none(); tb = tb.attr("tb_next")) {
             py::object frameCode = tb.attr("tb_frame").attr("f_code");
-            if (frameCode.attr("co_filename").cast<std::string>() == run.commFile)
-                line = tb.attr("tb_lineno").cast<int>();
+            if (py::object(frameCode.attr("co_filename")).equal(fileName)) line = tb.attr("tb_lineno").cast<int>();
         }
         py::object value = e.value();
         const std::string type = py::str(py::type::handle_of(value).attr("__name__")).cast<std::string>();
@@ -182,11 +209,16 @@ Options parseArguments(int argc, char** argv) {
             if (i + 1 >= argc) throw SetupError(a + " needs a value");
             return argv[++i];
         };
+        auto path = [&]() -> std::string {
+            std::string v = value();
+            if (v.empty()) throw SetupError(a + " needs a value, got an empty one");
+            return v;
+        };
         if (a == "--out-dir") {
-            opt.outDir = value();
+            opt.outDir = path();
             opt.outDirGiven = true;
         } else if (a == "--mesh") {
-            opt.mesh = value();
+            opt.mesh = path();
         } else if (a == "--np") {
             const std::string v = value();
             const bool number = !v.empty() && v.find_first_not_of("0123456789") == std::string::npos && v.size() < 6;
@@ -206,6 +238,8 @@ Options parseArguments(int argc, char** argv) {
             opt.runOptions[o->name] = v;
         } else if (!a.empty() && a[0] == '-') {
             throw SetupError("unknown option " + a);
+        } else if (a.empty()) {
+            throw SetupError("an empty argument: the case (.export or .comm) has no name");
         } else if (opt.input.empty()) {
             opt.input = a;
         } else {
@@ -243,11 +277,15 @@ RunLimits setUpRun(const Options& opt, RunState& run, RunOutputs& outputs) {
         std::error_code ec;
         if (!fs::exists(opt.input, ec)) throw SetupError("the command file " + opt.input + " does not exist");
         if (fs::is_directory(opt.input, ec)) throw SetupError("the command file " + opt.input + " is a folder");
+        if (!fs::is_regular_file(opt.input, ec))
+            throw SetupError("the command file " + opt.input + " is not a regular file (" + kNotRegular + ")");
         run.commFile = fs::absolute(opt.input).lexically_normal().string();
     }
     if (!opt.mesh.empty()) {
         std::error_code ec;
         if (!fs::exists(opt.mesh, ec)) throw SetupError("the mesh file " + opt.mesh + " (--mesh) does not exist");
+        if (!fs::is_regular_file(opt.mesh, ec))
+            throw SetupError("the mesh file " + opt.mesh + " (--mesh) is not a regular file (" + kNotRegular + ")");
         run.units.setInput(20, fs::absolute(opt.mesh).lexically_normal().string());
     }
     run.units.setOutputDir(outputs.resultFolders.empty() ? outputs.outDir : outputs.resultFolders.front());
@@ -285,12 +323,16 @@ void runCommandFile(const Options& opt, RunState& run, RunOutputs& outputs, cons
             fmt::format("\n  limits      : {}{}",
                         limits.timeLimitSeconds ? fmt::format("time {:g} s (CPU) ", *limits.timeLimitSeconds) : "",
                         limits.memoryLimitMb ? fmt::format("memory {:g} MB (resident)", *limits.memoryLimitMb) : "");
+    if (const std::string note = pythonHomeNote(); !note.empty()) announced += "\n  " + note;
     msg().infof(
         "  command file: {}\n  message log : {}\n  result file : {}\n  memory      : {}\n  MPI processes: {}{}{}",
         run.commFile, outputs.mess, outputs.resu, mallocPagesState(), mpi::size(),
         opt.checkOnly ? "\n  mode        : syntax check only (--check-syntax)" : "", announced);
     // The interpreter lives until the process ends: concepts may hold Python objects (FORMULE).
-    py::initialize_interpreter();
+    if (const auto refused = startEmbeddedPython()) {
+        run.fail("ERROR", "", 0, *refused);
+        return;
+    }
     installCrashHandler(outputs.messFd);  // after Python, which installs its own handlers
     startRunGuard(limits, stopFromWatchdog);
     try {

@@ -3,6 +3,7 @@
 #include <exception>
 #include <string>
 
+#include "cli/MpiConfinement.hpp"
 #include "cli/MpiLaunch.hpp"
 #include "cli/ResultTools.hpp"
 #include "core/Mpi.hpp"
@@ -23,6 +24,10 @@ int main(int argc, char** argv) {
             "       miniaster plot RESULT.rmed [--field NAME] [--component C] [--deformed SCALE] -o OUT.png\n"
             "       miniaster --version\n",
             stdout);
+    if (const auto refused = ma::cli::confineMpiLibraries()) {
+        std::fprintf(stderr, "miniaster: %s; nothing was run\n", refused->c_str());
+        return 1;
+    }
     if (command == "run")
         if (const int status = ma::cli::launchProcessesIfAsked(argc, argv); status >= 0) return status;
     ma::med::initialiseBeforeMpi();

@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include "cli/MpiConfinement.hpp"
 #include "core/Mpi.hpp"
 #include "parser/ExportFile.hpp"
 
@@ -59,6 +60,7 @@ int launchProcessesIfAsked(int argc, char** argv) {
         setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 0);
         setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 0);
     }
+    confineLaunchedJob();
     std::error_code ec;
     const std::string self = std::filesystem::read_symlink("/proc/self/exe", ec).string();
     std::vector<std::string> args = {"mpirun",    "--quiet",        "-np", std::to_string(k),

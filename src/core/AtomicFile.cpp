@@ -96,14 +96,14 @@ void removeLiveTemporaries() {
     r.paths.clear();
 }
 
-std::vector<std::string> removeStaleTemporaries(const std::string& folder) {
+std::vector<std::string> removeStaleTemporaries(const std::string& folder, const std::string& stem) {
     std::vector<std::string> removed;
     const std::string ours = kMarker + hostName() + ".";
     std::error_code ec;
     for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
         const std::string name = it->path().filename().string();
         const auto at = name.rfind(ours);
-        if (at == std::string::npos || at == 0) continue;
+        if (at == std::string::npos || at == 0 || !name.starts_with(stem)) continue;
         const std::string pidText = name.substr(at + ours.size());
         if (pidText.empty() || pidText.find_first_not_of("0123456789") != std::string::npos || pidText.size() > 9)
             continue;

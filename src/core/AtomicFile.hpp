@@ -33,8 +33,9 @@ private:
 
 // The temporary name of `finalPath` for this process.
 std::string temporaryPathFor(const std::string& finalPath);
-// Removes the temporaries of dead runs in `folder`; returns the names removed.
-std::vector<std::string> removeStaleTemporaries(const std::string& folder);
+// Removes the temporaries of dead runs in `folder` (only those whose name starts with `stem`
+// when given); returns the names removed.
+std::vector<std::string> removeStaleTemporaries(const std::string& folder, const std::string& stem = {});
 // Registers / forgets a temporary file or folder that removeLiveTemporaries() must remove.
 void registerTemporary(const std::string& path);
 void forgetTemporary(const std::string& path);

@@ -1,10 +1,13 @@
 #include "core/MemoryLimit.hpp"
 
 #include <fmt/format.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <limits>
+#include <utility>
 
 #include "core/Error.hpp"
 
@@ -26,11 +29,35 @@ std::size_t availableMemoryBytes() {
     return pages > 0 && size > 0 ? std::size_t(pages) * std::size_t(size) : std::size_t(-1);
 }
 
+double megabytes(std::size_t bytes) { return double(bytes) / (1024.0 * 1024.0); }
+
+// The soft limit of the process's address space (ulimit -v) or data segment (ulimit -d), the
+// smaller; 0 when neither is set. Allocations beyond it fail whatever the machine has.
+struct ProcessLimit {
+    std::size_t bytes = 0;
+    const char* name = "";
+};
+ProcessLimit processLimit() {
+    ProcessLimit smallest;
+    for (const auto& [resource, name] : {std::pair{RLIMIT_AS, "virtual memory (ulimit -v, RLIMIT_AS)"},
+                                         std::pair{RLIMIT_DATA, "data segment (ulimit -d, RLIMIT_DATA)"}}) {
+        rlimit limit{};
+        if (::getrlimit(resource, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) continue;
+        if (smallest.bytes == 0 || limit.rlim_cur < smallest.bytes) smallest = {std::size_t(limit.rlim_cur), name};
+    }
+    return smallest;
+}
+
+// The limit that binds first, named: P memory_limit, the process's limit, the machine's memory.
 std::string origin() {
-    return gLimitBytes ? fmt::format("the memory_limit of {:.0f} MB (P memory_limit in the .export)",
-                                     double(gLimitBytes) / (1024.0 * 1024.0))
-                       : fmt::format("the {:.0f} MB of memory available on this machine",
-                                     double(availableMemoryBytes()) / (1024.0 * 1024.0));
+    const ProcessLimit process = processLimit();
+    const std::size_t available = availableMemoryBytes();
+    if (gLimitBytes && (!process.bytes || gLimitBytes <= process.bytes))
+        return fmt::format("the memory_limit of {:.0f} MB (P memory_limit in the .export)", megabytes(gLimitBytes));
+    if (process.bytes && process.bytes < available)
+        return fmt::format("the {:.0f} MB limit of the process's {} (the machine has {:.0f} MB available)",
+                           megabytes(process.bytes), process.name, megabytes(available));
+    return fmt::format("the {:.0f} MB of memory available on this machine", megabytes(available));
 }
 }  // namespace
 
@@ -41,7 +68,11 @@ void setMemoryLimit(double megabytes) {
                                                                           : std::numeric_limits<std::size_t>::max();
 }
 
-std::size_t memoryLimitBytes() { return gLimitBytes ? gLimitBytes : availableMemoryBytes(); }
+std::size_t memoryLimitBytes() {
+    const std::size_t process = processLimit().bytes;
+    const std::size_t limit = gLimitBytes ? gLimitBytes : availableMemoryBytes();
+    return process ? std::min(limit, process) : limit;
+}
 
 bool memoryLimitIsSet() { return gLimitBytes != 0; }
 
