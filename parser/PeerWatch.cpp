@@ -1,0 +1,64 @@
+#include "parser/PeerWatch.hpp"
+
+#include <fmt/format.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "core/Mpi.hpp"
+
+namespace ma {
+
+namespace {
+
+// The exit status of an ended process that its parent (mpirun) has not reaped yet: field 52 of
+// /proc/PID/stat, in waitpid's form. Nothing once reaped (or for a live process).
+std::optional<std::string> exitStatusOf(int pid) {
+    std::ifstream in(fmt::format("/proc/{}/stat", pid));
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto end = text.rfind(')');  // the command name may hold spaces
+    if (end == std::string::npos) return std::nullopt;
+    std::istringstream fields(text.substr(end + 2));
+    std::string field, state;
+    fields >> state;  // field 3
+    for (int k = 4; k <= 52 && fields >> field; ++k) {}
+    if (state != "Z" || field.empty()) return std::nullopt;
+    const int raw = std::stoi(field);
+    if ((raw & 0x7f) == 0) return fmt::format("exit status {}", (raw >> 8) & 0xff);
+    return fmt::format("signal {} ({})", raw & 0x7f, strsignal(raw & 0x7f));
+}
+
+}  // namespace
+
+PeerWatch::PeerWatch() {
+    if (!mpi::running() || !mpi::isRoot()) return;
+    const auto& pids = mpi::peersOnThisMachine();
+    for (int r = 0; r < int(pids.size()); ++r) {
+        if (pids[size_t(r)] <= 0) continue;
+        const int fd = int(::syscall(SYS_pidfd_open, pids[size_t(r)], 0));
+        if (fd >= 0) peers_.push_back({r, pids[size_t(r)], fd});
+    }
+}
+
+PeerWatch::~PeerWatch() {
+    for (const auto& p : peers_) ::close(p.fd);
+}
+
+void PeerWatch::addTo(std::vector<pollfd>& fds) const {
+    for (const auto& p : peers_) fds.push_back({p.fd, POLLIN, 0});
+}
+
+std::optional<std::string> PeerWatch::endedPeer() const {
+    for (const auto& p : peers_) {
+        pollfd f{p.fd, POLLIN, 0};
+        if (::poll(&f, 1, 0) <= 0 || !(f.revents & POLLIN)) continue;
+        const auto status = exitStatusOf(p.pid);
+        return fmt::format("MPI process {} of {} (pid {}{})", p.rank, mpi::size(), p.pid,
+                           status ? ", " + *status : std::string());
+    }
+    return std::nullopt;
+}
+
+}  // namespace ma
