@@ -251,19 +251,18 @@ namespace {
 void stopRunNow(RunOutputs& out, const std::string& paragraph, const std::string& diagnostic) {
     if (!mpi::isRoot()) stopOtherProcessNow(paragraph, diagnostic);
     msg().freeze();
-    msg().info("\n" + paragraph + "\n");
+    msg().emergency("\n" + paragraph + "\n");
     const auto& tests = testReport();
-    if (!tests.empty()) msg().info(fmt::format("\n{}", tests.summary()));
+    if (!tests.empty()) msg().emergency(fmt::format("\n{}", tests.summary()));
     const std::string rule(60, '-');
-    msg().info(fmt::format("\n{}\n--- DIAGNOSTIC JOB : {}\n{}", rule, diagnostic, rule));
-    if (!msg().resuText().empty() && !msg().streamError() && mpi::isRoot()) {
+    msg().emergency(fmt::format("\n{}\n--- DIAGNOSTIC JOB : {}\n{}", rule, diagnostic, rule));
+    if (!msg().resuText().empty() && !msg().streamError()) {
         try {
             writeResultFile(out, msg().resuText());
         } catch (const UserError& e) { reportOnStderr(e.what()); }
     }
     removeLiveTemporaries();
     if (out.messFd >= 0) ::fsync(out.messFd);
-    std::fflush(stdout);
     ::_exit(1);
 }
 

@@ -2,16 +2,15 @@
 
 #include <unistd.h>
 
-#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "cli/MpirunChild.hpp"
 #include "core/Mpi.hpp"
 #include "parser/ExportFile.hpp"
 
@@ -61,8 +60,11 @@ int launchProcessesIfAsked(int argc, char** argv) {
     }
     std::error_code ec;
     const std::string self = std::filesystem::read_symlink("/proc/self/exe", ec).string();
-    std::vector<std::string> args = {"mpirun",    "--quiet",        "-np", std::to_string(k),
-                                     "--bind-to", "none",           "-x",  "OPENBLAS_NUM_THREADS",
+    std::vector<std::string> args = {"mpirun",    "--quiet",
+                                     "-np",       std::to_string(k),
+                                     "--bind-to", "none",
+                                     "--stdin",   "none",  // mpirun runs in its own process group
+                                     "-x",        "OPENBLAS_NUM_THREADS",
                                      "-x",        "OMP_NUM_THREADS"};
     if (k > cores) args.push_back("--oversubscribe");
     args.push_back(ec ? std::string(argv[0]) : self);
@@ -70,11 +72,7 @@ int launchProcessesIfAsked(int argc, char** argv) {
     std::vector<char*> c;
     for (auto& a : args) c.push_back(a.data());
     c.push_back(nullptr);
-    std::fflush(stdout);
-    execvp("mpirun", c.data());
-    std::fprintf(stderr, "miniaster: cannot start mpirun for %d processes: %s (Debian package openmpi-bin)\n", k,
-                 std::strerror(errno));
-    return 1;
+    return runMpirun(c);
 }
 
 }  // namespace ma::cli
