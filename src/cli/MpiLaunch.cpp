@@ -18,6 +18,9 @@ namespace ma::cli {
 
 namespace {
 
+// The most processes `--np` starts per core of this machine (docs/mpi.md, "Running").
+constexpr int kProcessesPerCore = 4;
+
 std::optional<int> processCount(const std::string& text) {
     try {
         size_t end = 0;
@@ -49,6 +52,16 @@ int launchProcessesIfAsked(int argc, char** argv) {
     if (k <= 1 || mpi::launchedByMpirun()) return -1;
     // Per process: one OpenBLAS thread, and the element loops' threads share the cores.
     const int cores = std::max(1, int(std::thread::hardware_concurrency()));
+    if (k > kProcessesPerCore * cores) {
+        std::fprintf(stderr,
+                     "miniaster: %d MPI processes asked for (--np or P mpi_nbcpu): this machine has %d core(s), and "
+                     "miniaster starts at most %d processes per core on it (%d here): beyond that the processes "
+                     "mostly wait for their turn on a core at every collective operation, and each holds a whole "
+                     "copy of the mesh; nothing was run. On several machines, start mpirun yourself with a hostfile "
+                     "(docs/mpi.md)\n",
+                     k, cores, kProcessesPerCore, kProcessesPerCore * cores);
+        return 1;
+    }
     setenv("OPENBLAS_NUM_THREADS", "1", 0);
     setenv("OMP_NUM_THREADS", std::to_string(std::max(1, cores / k)).c_str(), 0);
     // A process waiting in a collective yields its core (on a shared machine the others' jobs

@@ -230,7 +230,7 @@ TEST(MpiRuns, TimeLimitAndSignalStopEveryProcess) {
         << r.output;
     EXPECT_NE(r.file("out/t.resu").find(" OK "), std::string::npos);
 
-    // SIGTERM to the run (the binary became mpirun: the same process), 3 s after its start.
+    // SIGTERM to the run (the launcher, mpirun's parent: it forwards it), 3 s after its start.
     writeText(dir / "kill.sh", "cd '" + dir.string() + "'\n'" + MINIASTER_BINARY +
                                    "' run k.export --np 2 --out-dir out > kill.log 2>&1 &\n"
                                    "pid=$!\nsleep 3\nkill -TERM $pid\nwait $pid\n");

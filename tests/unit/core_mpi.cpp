@@ -56,5 +56,36 @@ TEST(Mpi, AFailureOnTheLastProcessIsThrownOnEveryProcess) {
     EXPECT_FALSE(mpi::agree(std::nullopt).has_value());
 }
 
+// The run's agreement (the supervisor's): the last process fails alone and announces it; the
+// others, inside a sum that process never joins, stop there (OtherProcessFailed) and learn its
+// failure at the agreement; later agreements return it at once. Last in the file: the job then
+// stays failed (later collectives would throw).
+TEST(Mpi, RunAgreementStopsTheOthersCollectivesAndStays) {
+    const int last = mpi::size() - 1;
+    std::optional<mpi::Failure> agreed;
+    // The agreement first: once it is done on the last process, every other has left the
+    // collectives of the tests before (its announcement would stop them too).
+    if (mpi::rank() == last) {
+        mpi::agree(std::nullopt);
+        agreed = mpi::agreeOnRun(mpi::Failure{0, "process " + std::to_string(last) + " failed"});
+    } else {
+        std::vector<double> v = {1.0};
+        EXPECT_THROW(
+            {
+                mpi::agree(std::nullopt);
+                mpi::sum(v);
+            },
+            mpi::OtherProcessFailed);
+        agreed = mpi::agreeOnRun(std::nullopt);
+        EXPECT_THROW(mpi::sum(v), mpi::OtherProcessFailed);
+    }
+    ASSERT_TRUE(agreed.has_value());
+    EXPECT_EQ(agreed->text, "process " + std::to_string(last) + " failed");
+    if (mpi::size() > 1) EXPECT_EQ(agreed->rank, last);
+    const auto again = mpi::agreeOnRun(std::nullopt);
+    EXPECT_EQ(again.has_value(), mpi::size() > 1);  // one process: nothing is kept
+    if (again) EXPECT_EQ(again->text, agreed->text);
+}
+
 }  // namespace
 }  // namespace ma
