@@ -4,10 +4,12 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
-#include <fstream>
+#include <cstdlib>
+#include <cstring>
 #include <sstream>
 
 #include "core/Mpi.hpp"
+#include "core/ProcessStat.hpp"
 
 namespace ma {
 
@@ -16,16 +18,14 @@ namespace {
 // The exit status of an ended process that its parent (mpirun) has not reaped yet: field 52 of
 // /proc/PID/stat, in waitpid's form. Nothing once reaped (or for a live process).
 std::optional<std::string> exitStatusOf(int pid) {
-    std::ifstream in(fmt::format("/proc/{}/stat", pid));
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const auto end = text.rfind(')');  // the command name may hold spaces
-    if (end == std::string::npos) return std::nullopt;
-    std::istringstream fields(text.substr(end + 2));
+    const auto text = processStatFields(pid);
+    if (!text) return std::nullopt;
+    std::istringstream fields(*text);
     std::string field, state;
     fields >> state;  // field 3
     for (int k = 4; k <= 52 && fields >> field; ++k) {}
     if (state != "Z" || field.empty()) return std::nullopt;
-    const int raw = std::stoi(field);
+    const int raw = std::atoi(field.c_str());
     if ((raw & 0x7f) == 0) return fmt::format("exit status {}", (raw >> 8) & 0xff);
     return fmt::format("signal {} ({})", raw & 0x7f, strsignal(raw & 0x7f));
 }

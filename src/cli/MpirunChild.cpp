@@ -7,11 +7,13 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <string>
+
+#include "core/ProcessStat.hpp"
 
 namespace ma::cli {
 
@@ -26,17 +28,14 @@ constexpr double kGraceSeconds = 20.0, kKillSeconds = 5.0;
 std::vector<pid_t> childrenOf(pid_t parent) {
     std::vector<pid_t> out;
     std::error_code ec;
-    for (const auto& e : std::filesystem::directory_iterator("/proc", ec)) {
-        const std::string name = e.path().filename().string();
+    for (std::filesystem::directory_iterator e("/proc", ec), end; !ec && e != end; e.increment(ec)) {
+        const std::string name = e->path().filename().string();
         if (name.find_first_not_of("0123456789") != std::string::npos) continue;
-        std::ifstream in(e.path() / "stat");
-        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        const auto end = text.rfind(')');
-        if (end == std::string::npos) continue;
+        const auto fields = processStatFields(std::atoi(name.c_str()));
         char state = 0;
         int ppid = 0;
-        if (std::sscanf(text.c_str() + end + 1, " %c %d", &state, &ppid) == 2 && ppid == parent && state != 'Z')
-            out.push_back(std::stoi(name));
+        if (fields && std::sscanf(fields->c_str(), "%c %d", &state, &ppid) == 2 && ppid == parent && state != 'Z')
+            out.push_back(std::atoi(name.c_str()));
     }
     return out;
 }
