@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <numeric>
+#include <thread>
 #include <vector>
 
 #include "core/Error.hpp"
@@ -54,6 +56,17 @@ TEST(Mpi, AFailureOnTheLastProcessIsThrownOnEveryProcess) {
     } catch (const UserError& e) { EXPECT_EQ(std::string(e.what()), mpi::size() == 1 ? "rank 0" : "rank 1"); }
     EXPECT_NO_THROW(mpi::collectively([] {}));
     EXPECT_FALSE(mpi::agree(std::nullopt).has_value());
+}
+
+// The last resort (ctest core_mpi.last_resort, MINIASTER_TEST_LAST_RESORT=1, on 2 processes): the
+// last process fails while the others never come to the agreement (as when they wait inside
+// MUMPS's collectives, which look for no announcement; here they sleep); past its wait it writes
+// its failure on stderr and aborts the job.
+TEST(MpiLastResort, AFailureNobodyJoinsAbortsTheJob) {
+    if (!std::getenv("MINIASTER_TEST_LAST_RESORT") || mpi::size() == 1) GTEST_SKIP() << "ctest core_mpi.last_resort";
+    if (mpi::rank() == mpi::size() - 1) mpi::agreeOnRun(mpi::Failure{0, "<F> <ERROR> the last process failed"}, 1.0);
+    else std::this_thread::sleep_for(std::chrono::seconds(60));
+    FAIL() << "the job was not aborted";
 }
 
 // The run's agreement (the supervisor's): the last process fails alone and announces it; the
