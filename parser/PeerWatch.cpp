@@ -33,10 +33,11 @@ std::optional<std::string> exitStatusOf(int pid) {
 }  // namespace
 
 PeerWatch::PeerWatch() {
-    if (!mpi::running() || !mpi::isRoot()) return;
+    // Rank 0 watches every other process; rank 1 watches rank 0 (and then ends its .mess).
+    if (!mpi::running() || mpi::rank() > 1) return;
     const auto& pids = mpi::peersOnThisMachine();
     for (int r = 0; r < int(pids.size()); ++r) {
-        if (pids[size_t(r)] <= 0) continue;
+        if (pids[size_t(r)] <= 0 || (!mpi::isRoot() && r != 0)) continue;
         const int fd = int(::syscall(SYS_pidfd_open, pids[size_t(r)], 0));
         if (fd >= 0) peers_.push_back({r, pids[size_t(r)], fd});
     }

@@ -2,7 +2,8 @@
 // Rank 0 watches the other processes of the run that share its machine (docs/mpi.md): one that
 // ends before the run does (os._exit in the command file, a crash, a kill from outside) leaves
 // no message of its own, and mpirun then ends the job with a bare SIGTERM. Seen here first, its
-// rank and exit status are named in rank 0's .mess.
+// rank and exit status are named in rank 0's .mess. Rank 1 watches rank 0 likewise: when rank 0
+// ends so, rank 1 ends its .mess (parser/RunOutputs stopRunNow).
 #include <optional>
 #include <string>
 #include <vector>

@@ -19,7 +19,10 @@ namespace {
 
 const std::string kSource = MINIASTER_SOURCE_DIR;
 const std::string kTimeout = "timeout 300 ";
-const std::string kOnRankOne = "import os\nif os.environ.get('OMPI_COMM_WORLD_RANK') == '1':\n    ";
+// A statement run on one rank only.
+std::string onRank(int rank, const std::string& statement) {
+    return "import os\nif os.environ.get('OMPI_COMM_WORLD_RANK') == '" + std::to_string(rank) + "':\n    " + statement;
+}
 
 std::string readAll(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
@@ -64,7 +67,7 @@ void expectEndsWith(const std::string& mess, const std::string& diagnostic) {
 // A Python exception on rank 1 only, before a command: rank 0 learns it at that command's
 // agreement; the run ends at once with rank 1's paragraph, exit 1.
 TEST(MpiFaults, ExceptionOnOneProcessBetweenCommands) {
-    const auto r = runOnTwo(patchWith("CH1 = AFFE_CHAR_MECA_F", kOnRankOne + "raise ValueError('boom')"));
+    const auto r = runOnTwo(patchWith("CH1 = AFFE_CHAR_MECA_F", onRank(1, "raise ValueError('boom')")));
     EXPECT_EQ(r.status, 1) << r.output;
     const std::string mess = r.file("out/t.mess");
     EXPECT_NE(mess.find("\n<F> <ERROR> (t.comm, line 37): error in the Python code of the command file: ValueError: "
@@ -94,16 +97,20 @@ TEST(MpiFaults, ExceptionOnOneProcessInsideACommand) {
 }
 
 // os._exit(5) on rank 1: rank 0 names the process that ended (mpirun then ends the job), the
-// launcher says mpirun's status; exit 1.
+// launcher says mpirun's status; exit 1. On rank 0: rank 1 ends rank 0's .mess so.
 TEST(MpiFaults, ProcessEndingWithoutAMessageIsNamed) {
-    const auto r = runOnTwo(patchWith("CH1 = AFFE_CHAR_MECA_F", kOnRankOne + "os._exit(5)"));
-    EXPECT_EQ(r.status, 1) << r.output;
-    const std::string mess = r.file("out/t.mess");
-    EXPECT_TRUE(std::regex_search(mess, std::regex("\n<F> <ERROR> .*: MPI process 1 of 2 \\(pid [0-9]+(, exit status "
-                                                   "5)?\\) ended before the end of the run, without a message")))
-        << mess;
-    expectEndsWith(mess, "<F>_ERROR");
-    EXPECT_NE(r.output.find("miniaster: mpirun ended with status 5"), std::string::npos) << r.output;
+    for (int rank : {1, 0}) {
+        SCOPED_TRACE("os._exit on rank " + std::to_string(rank));
+        const auto r = runOnTwo(patchWith("CH1 = AFFE_CHAR_MECA_F", onRank(rank, "os._exit(5)")));
+        EXPECT_EQ(r.status, 1) << r.output;
+        const std::string mess = r.file("out/t.mess");
+        EXPECT_TRUE(std::regex_search(mess, std::regex("\n<F> <ERROR> .*: MPI process " + std::to_string(rank) +
+                                                       " of 2 \\(pid [0-9]+(, exit status 5)?\\) ended before the "
+                                                       "end of the run, without a message")))
+            << mess;
+        expectEndsWith(mess, "<F>_ERROR");
+        EXPECT_NE(r.output.find("miniaster: mpirun ended with status 5"), std::string::npos) << r.output;
+    }
 }
 
 // SIGTERM to mpirun itself (a scheduler's stop; mpirun started by hand) while rank 0 prints
