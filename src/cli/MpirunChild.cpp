@@ -46,7 +46,7 @@ int statusOf(int raw) {
         if (status == 0 || status == 1 || status == 2) return status;
         std::fprintf(stderr,
                      "miniaster: mpirun ended with status %d: an MPI process ended with that status before the end "
-                     "of the run (rank 0's .mess names it)\n",
+                     "of the run (the .mess names it)\n",
                      status);
     } else if (WIFSIGNALED(raw)) {
         std::fprintf(stderr, "miniaster: mpirun ended by signal %d (%s)\n", WTERMSIG(raw), strsignal(WTERMSIG(raw)));
