@@ -341,20 +341,9 @@ CallArguments callArguments(const std::string& name, const py::dict& keywords, p
     return callArgs;
 }
 
-// Every process ends each command here (docs/mpi.md): a failure on one of them (rank 0's outputs,
-// a process's own cells) becomes the failure of all, with that process's paragraph.
-void agreeOnCommand(RunState& run) {
-    if (mpi::size() == 1) return;
-    std::optional<mpi::Failure> local;
-    if (run.failure) local = mpi::Failure{0, run.failure->paragraph};
-    const auto agreed = mpi::agree(local);
-    if (!agreed || run.failure) return;
-    run.failure = RunFailure{"ERROR", agreed->text};
-    msg().info("\n" + agreed->text + "\n");
-}
-
 py::object runCommand(const std::string& name, py::object frame, py::tuple args, py::dict keywords) {
     auto& run = RunState::current();
+    if (!run.failure) agreeWithOtherProcesses(run);  // a process may have failed in the Python code
     if (run.failure) throw AbortRun{};
     const int line = frame.attr("f_lineno").cast<int>();
     const auto started = std::chrono::steady_clock::now();
@@ -402,11 +391,12 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
         run.recordTiming(name, seconds);
         msg().info(fmt::format(" # end of {} (line {}): elapsed {:.3f} s, peak memory {:.1f} MB", name, line, seconds,
                                static_cast<double>(peakMemoryKb()) / 1024.0));
-        agreeOnCommand(run);
+        agreeWithOtherProcesses(run);
         if (run.failure) throw AbortRun{};
         return wrap(result);
     } catch (const AbortRun&) { throw; } catch (const EndOfRun&) {
         throw;
+    } catch (const mpi::OtherProcessFailed&) {  // the failure is learned in the agreement below
     } catch (py::error_already_set& e) {
         if (run.failure) throw AbortRun{};
         run.fail("ERROR", name, line, fmt::format("Python error: {}", e.what()));
@@ -421,7 +411,7 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
     } catch (const std::exception& e) { run.fail("ERROR", name, line, unexpectedErrorCause(e)); } catch (...) {
         run.fail("ERROR", name, line, "unexpected error of unknown type");
     }
-    agreeOnCommand(run);
+    agreeWithOtherProcesses(run);
     throw AbortRun{};
 }
 
@@ -454,6 +444,18 @@ py::object callConcept(ConceptHandle& self, py::args args) {
 }
 
 }  // namespace
+
+void agreeWithOtherProcesses(RunState& run) {
+    if (mpi::size() == 1) return;
+    std::optional<mpi::Failure> local;
+    if (run.failure) local = mpi::Failure{0, run.failure->paragraph};
+    const auto agreed = mpi::agreeOnRun(local);
+    if (!agreed || run.failure) return;
+    const std::string paragraph =
+        fmt::format("{}\n  (on MPI process {} of {})", agreed->text, agreed->rank, mpi::size());
+    run.failure = RunFailure{"ERROR", paragraph};
+    msg().info("\n" + paragraph + "\n");
+}
 
 PYBIND11_EMBEDDED_MODULE(_miniaster, m) {
     py::register_exception<AbortRun>(m, "Abort", PyExc_BaseException);

@@ -14,10 +14,12 @@
 #include <ctime>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 #include "core/MemoryLimit.hpp"
 #include "core/MemoryUsage.hpp"
 #include "core/Messages.hpp"
+#include "parser/PeerWatch.hpp"
 #include "parser/RunState.hpp"
 
 namespace ma {
@@ -59,14 +61,30 @@ void checkProcessCpuLimit(const std::optional<double>& seconds, StopHandler stop
                                        *seconds, used));
 }
 
+// Another process of the run that ended first (mpirun then ends the job with SIGTERM): named.
+void stopIfPeerEnded(StopHandler stop, const PeerWatch& peers) {
+    if (const auto peer = peers.endedPeer(); peer && !gStopping)
+        stop("ERROR", fmt::format("{} ended before the end of the run, without a message of its own (os._exit, a "
+                                  "crash or a kill); the run is stopped",
+                                  *peer));
+}
+
+void stopOnSignal(StopHandler stop, const PeerWatch& peers) {
+    unsigned char sig = 0;
+    if (::read(gWakePipe[0], &sig, 1) != 1 || gStopping) return;
+    stopIfPeerEnded(stop, peers);
+    stop("INTERRUPTED", fmt::format("the run is stopped by signal {} ({})", int(sig), strsignal(sig)));
+}
+
 void watch(RunLimits limits, StopHandler stop) {
     const std::optional<double> processLimit = processCpuLimit();
+    const PeerWatch peers;
+    std::vector<pollfd> fds = {{gWakePipe[0], POLLIN, 0}};
+    peers.addTo(fds);
     while (!gStopping) {
-        pollfd p{gWakePipe[0], POLLIN, 0};
-        if (::poll(&p, 1, kTickMs) > 0 && (p.revents & POLLIN)) {
-            unsigned char sig = 0;
-            if (::read(gWakePipe[0], &sig, 1) == 1 && !gStopping)
-                stop("INTERRUPTED", fmt::format("the run is stopped by signal {} ({})", int(sig), strsignal(sig)));
+        if (::poll(fds.data(), fds.size(), kTickMs) > 0) {
+            if (fds.size() > 1) stopIfPeerEnded(stop, peers);
+            if (fds[0].revents & POLLIN) stopOnSignal(stop, peers);
         }
         if (gStopping) return;
         if (limits.timeLimitSeconds && cpuSeconds() > *limits.timeLimitSeconds)
@@ -120,15 +138,20 @@ extern "C" void onFatalSignal(int sig) {
 
 }  // namespace
 
-void startRunGuard(const RunLimits& limits, StopHandler stop) {
-    if (gWatchdog) return;
-    if (::pipe2(gWakePipe, O_CLOEXEC) != 0) return;
+void armStopSignals() {
+    if (gWakePipe[0] < 0 && ::pipe2(gWakePipe, O_CLOEXEC) != 0) return;
     struct sigaction action {};
     action.sa_handler = onStopSignal;
     sigemptyset(&action.sa_mask);
     for (int sig : kStopSignals) ::sigaction(sig, &action, nullptr);
     std::signal(SIGXFSZ, SIG_IGN);
     std::signal(SIGPIPE, SIG_IGN);
+}
+
+void startRunGuard(const RunLimits& limits, StopHandler stop) {
+    if (gWatchdog) return;
+    armStopSignals();  // again: the interpreter took SIGINT
+    if (gWakePipe[0] < 0) return;
     if (limits.memoryLimitMb) setMemoryLimit(*limits.memoryLimitMb);
     gWatchdog = new std::thread(watch, limits, stop);
 }
@@ -139,7 +162,7 @@ void stopRunGuard() {
     gWatchdog->join();
     delete gWatchdog;
     gWatchdog = nullptr;
-    for (int sig : kStopSignals) std::signal(sig, SIG_DFL);
+    for (int sig : kStopSignals) std::signal(sig, SIG_IGN);
 }
 
 void installCrashHandler(int messFd) {

@@ -21,9 +21,14 @@ struct RunLimits {
 // Called on the watchdog thread; never returns. `kind` is TIME_LIMIT, MEMORY_LIMIT or INTERRUPTED.
 using StopHandler = void (*)(const std::string& kind, const std::string& cause);
 
+// The stop signals are caught from here on (at the start of the run): one that arrives before the
+// watchdog starts is handled by it as soon as it does, instead of killing the run mid-header.
+void armStopSignals();
 // Starts the watchdog (after the interpreter, whose own SIGINT handler it replaces).
 void startRunGuard(const RunLimits& limits, StopHandler stop);
-// The run is ending normally: the watchdog stops and the signals get their default action back.
+// The run is ending normally: the watchdog stops, and a stop signal from then on is ignored (the
+// run completes its .mess and ends with its own status: a completed run is not turned into an
+// interrupted one, nor cut in the middle of its summary).
 void stopRunGuard();
 
 // Crash handler (see above); `messFd` is the streamed .mess, -1 when it is not open.

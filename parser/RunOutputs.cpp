@@ -232,16 +232,50 @@ bool finishOutputs(RunOutputs& out, bool failed, bool checkOnly) {
     return ok;
 }
 
+namespace {
+
+// What an emergency stop appends to the log: the paragraph, the TEST lines' summary, the diagnostic.
+std::vector<std::string> emergencyEnd(const std::string& paragraph, const std::string& diagnostic) {
+    std::vector<std::string> pieces = {"\n" + paragraph + "\n"};
+    const auto& tests = testReport();
+    if (!tests.empty()) pieces.push_back(fmt::format("\n{}", tests.summary()));
+    const std::string rule(60, '-');
+    pieces.push_back(fmt::format("\n{}\n--- DIAGNOSTIC JOB : {}\n{}", rule, diagnostic, rule));
+    return pieces;
+}
+
+// Whether the log already ends with a diagnostic (rank 0 stopped by a signal or a limit, then ended).
+bool endsWithDiagnostic(const std::string& mess) {
+    const int fd = ::open(mess.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return true;  // nothing to complete
+    char tail[256] = {};
+    const off_t size = ::lseek(fd, 0, SEEK_END);
+    const ssize_t n = ::pread(fd, tail, sizeof(tail) - 1, std::max<off_t>(0, size - off_t(sizeof(tail) - 1)));
+    ::close(fd);
+    return n > 0 && std::string(tail, size_t(n)).find("--- DIAGNOSTIC JOB : ") != std::string::npos;
+}
+
 // A process other than rank 0 writes nothing. The time limit and the signals reach every process
 // within a moment: it waits a little, so that rank 0 (whose end makes mpirun end the others)
 // writes its paragraph, instead of ending first and making mpirun abort rank 0 unannounced. A
-// memory limit may be this process's alone: its cause goes to stderr (mpirun forwards it).
-namespace {
-
-[[noreturn]] void stopOtherProcessNow(const std::string& paragraph, const std::string& diagnostic) {
+// memory limit may be this process's alone: its cause goes to stderr (mpirun forwards it). Rank 0
+// ended without a word (the only ERROR of a watchdog on another process, parser/PeerWatch): rank
+// 1 appends the end of the log to rank 0's .mess, unless rank 0 wrote its own end first.
+[[noreturn]] void stopOtherProcessNow(const RunOutputs& out, const std::string& paragraph,
+                                      const std::string& diagnostic) {
     if (diagnostic == "<F>_MEMORY_LIMIT")
         std::fprintf(stderr, "miniaster: MPI process %d of %d: %s\n", mpi::rank(), mpi::size(), paragraph.c_str());
-    std::this_thread::sleep_for(std::chrono::seconds(3));
+    if (diagnostic == "<F>_ERROR" && !out.mess.empty() && !endsWithDiagnostic(out.mess)) {
+        std::string text = "\n";  // rank 0 may have ended mid-line
+        for (auto piece : emergencyEnd(paragraph, diagnostic)) text += piece.back() == '\n' ? piece : piece + "\n";
+        if (const int fd = ::open(out.mess.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC); fd >= 0) {
+            [[maybe_unused]] const ssize_t n = ::write(fd, text.data(), text.size());
+            ::fsync(fd);
+            ::close(fd);
+        }
+    } else {
+        std::this_thread::sleep_for(std::chrono::seconds(3));
+    }
     removeLiveTemporaries();
     ::_exit(1);
 }
@@ -249,21 +283,16 @@ namespace {
 }  // namespace
 
 void stopRunNow(RunOutputs& out, const std::string& paragraph, const std::string& diagnostic) {
-    if (!mpi::isRoot()) stopOtherProcessNow(paragraph, diagnostic);
+    if (!mpi::isRoot()) stopOtherProcessNow(out, paragraph, diagnostic);
     msg().freeze();
-    msg().info("\n" + paragraph + "\n");
-    const auto& tests = testReport();
-    if (!tests.empty()) msg().info(fmt::format("\n{}", tests.summary()));
-    const std::string rule(60, '-');
-    msg().info(fmt::format("\n{}\n--- DIAGNOSTIC JOB : {}\n{}", rule, diagnostic, rule));
-    if (!msg().resuText().empty() && !msg().streamError() && mpi::isRoot()) {
+    for (const auto& piece : emergencyEnd(paragraph, diagnostic)) msg().emergency(piece);
+    if (!msg().resuText().empty() && !msg().streamError()) {
         try {
             writeResultFile(out, msg().resuText());
         } catch (const UserError& e) { reportOnStderr(e.what()); }
     }
     removeLiveTemporaries();
     if (out.messFd >= 0) ::fsync(out.messFd);
-    std::fflush(stdout);
     ::_exit(1);
 }
 

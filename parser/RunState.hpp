@@ -47,6 +47,12 @@ public:
     void recordTiming(const std::string& command, double seconds);
 };
 
+// The processes' agreement on the run's failure (docs/mpi.md), before and after every command
+// and at the end of the command file: every process calls it at the same point, with its
+// failure if any; afterwards all of them hold the lowest failing rank's paragraph (naming that
+// process), rank 0 has logged it, and none calls it again. Nothing on one process.
+void agreeWithOtherProcesses(RunState& run);
+
 // Peak resident memory of the process in kB: max of getrusage ru_maxrss and /proc VmHWM.
 long peakMemoryKb();
 

@@ -341,6 +341,7 @@ void runCommandFile(const Options& opt, RunState& run, RunOutputs& outputs, cons
     } catch (py::error_already_set& e) {
         run.fail("ERROR", "", 0, std::string("internal error of the supervisor: ") + e.what());
     } catch (const std::exception& e) { run.fail("ERROR", "", 0, unexpectedErrorCause(e)); }
+    agreeWithOtherProcesses(run);  // the last command's agreement met this one's or a failure's
     // print() output still buffered.
     try {
         py::module_::import("sys").attr("stdout").attr("flush")();

@@ -8,6 +8,7 @@
 #include "cli/ResultTools.hpp"
 #include "core/Mpi.hpp"
 #include "med_io/MedLibrary.hpp"
+#include "parser/RunGuard.hpp"
 #include "parser/Supervisor.hpp"
 
 int main(int argc, char** argv) {
@@ -30,6 +31,7 @@ int main(int argc, char** argv) {
     }
     if (command == "run")
         if (const int status = ma::cli::launchProcessesIfAsked(argc, argv); status >= 0) return status;
+    if (command == "run") ma::armStopSignals();  // a stop during MPI_Init is handled once the run starts
     ma::med::initialiseBeforeMpi();
     try {
         ma::mpi::initialise(&argc, &argv);

@@ -2,10 +2,8 @@
 
 #include <unistd.h>
 
-#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -13,12 +11,16 @@
 #include <vector>
 
 #include "cli/MpiConfinement.hpp"
+#include "cli/MpirunChild.hpp"
 #include "core/Mpi.hpp"
 #include "parser/ExportFile.hpp"
 
 namespace ma::cli {
 
 namespace {
+
+// The most processes `--np` starts per core of this machine (docs/mpi.md, "Running").
+constexpr int kProcessesPerCore = 4;
 
 std::optional<int> processCount(const std::string& text) {
     try {
@@ -51,6 +53,16 @@ int launchProcessesIfAsked(int argc, char** argv) {
     if (k <= 1 || mpi::launchedByMpirun()) return -1;
     // Per process: one OpenBLAS thread, and the element loops' threads share the cores.
     const int cores = std::max(1, int(std::thread::hardware_concurrency()));
+    if (k > kProcessesPerCore * cores) {
+        std::fprintf(stderr,
+                     "miniaster: %d MPI processes asked for (--np or P mpi_nbcpu): this machine has %d core(s), and "
+                     "miniaster starts at most %d processes per core on it (%d here): beyond that the processes "
+                     "mostly wait for their turn on a core at every collective operation, and each holds a whole "
+                     "copy of the mesh; nothing was run. On several machines, start mpirun yourself with a hostfile "
+                     "(docs/mpi.md)\n",
+                     k, cores, kProcessesPerCore, kProcessesPerCore * cores);
+        return 1;
+    }
     setenv("OPENBLAS_NUM_THREADS", "1", 0);
     setenv("OMP_NUM_THREADS", std::to_string(std::max(1, cores / k)).c_str(), 0);
     // A process waiting in a collective yields its core (on a shared machine the others' jobs
@@ -63,8 +75,11 @@ int launchProcessesIfAsked(int argc, char** argv) {
     confineLaunchedJob();
     std::error_code ec;
     const std::string self = std::filesystem::read_symlink("/proc/self/exe", ec).string();
-    std::vector<std::string> args = {"mpirun",    "--quiet",        "-np", std::to_string(k),
-                                     "--bind-to", "none",           "-x",  "OPENBLAS_NUM_THREADS",
+    std::vector<std::string> args = {"mpirun",    "--quiet",
+                                     "-np",       std::to_string(k),
+                                     "--bind-to", "none",
+                                     "--stdin",   "none",  // mpirun runs in its own process group
+                                     "-x",        "OPENBLAS_NUM_THREADS",
                                      "-x",        "OMP_NUM_THREADS"};
     if (k > cores) args.push_back("--oversubscribe");
     args.push_back(ec ? std::string(argv[0]) : self);
@@ -72,11 +87,7 @@ int launchProcessesIfAsked(int argc, char** argv) {
     std::vector<char*> c;
     for (auto& a : args) c.push_back(a.data());
     c.push_back(nullptr);
-    std::fflush(stdout);
-    execvp("mpirun", c.data());
-    std::fprintf(stderr, "miniaster: cannot start mpirun for %d processes: %s (Debian package openmpi-bin)\n", k,
-                 std::strerror(errno));
-    return 1;
+    return runMpirun(c);
 }
 
 }  // namespace ma::cli

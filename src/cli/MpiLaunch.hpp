@@ -1,11 +1,12 @@
 #pragma once
 // `miniaster run --np K CASE` and `P mpi_nbcpu K` in the .export (the command line wins): the
-// binary started by hand replaces itself by `mpirun -np K <itself> <the same arguments>`
-// (docs/mpi.md). Under mpirun (or with one process) it is the run itself.
+// binary started by hand runs `mpirun -np K <itself> <the same arguments>` as its child and stays
+// its parent (cli/MpirunChild.hpp, docs/mpi.md). Under mpirun (or with one process) it is the run
+// itself.
 namespace ma::cli {
 
-// Returns -1 when this process goes on with the run; otherwise it has become mpirun (no return),
-// or mpirun could not be started: the exit status (1, message on stderr).
+// Returns -1 when this process goes on with the run; otherwise the exit status of the run on K
+// processes, or 1 (message on stderr) when K is more than the machine holds or mpirun cannot start.
 int launchProcessesIfAsked(int argc, char** argv);
 
 }  // namespace ma::cli

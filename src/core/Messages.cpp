@@ -1,8 +1,10 @@
 #include "core/Messages.hpp"
 
+#include <poll.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 
 namespace ma {
@@ -43,6 +45,21 @@ void Messages::info(const std::string& text) {
     if (echo_) {
         std::fwrite(text.data(), 1, text.size(), stdout);
         if (text.empty() || text.back() != '\n') std::fputc('\n', stdout);
+    }
+}
+
+void Messages::freeze() { frozen_ = mutex_.try_lock_for(std::chrono::milliseconds(300)); }
+
+void Messages::emergency(const std::string& text) {
+    std::string lines = text;
+    if (lines.empty() || lines.back() != '\n') lines += '\n';
+    if (frozen_) mess_ += lines;
+    write(lines);
+    pollfd out{STDOUT_FILENO, POLLOUT, 0};
+    // Without the mutex, the thread that holds it may be inside stdout: no echo then.
+    if (echo_ && frozen_ && ::poll(&out, 1, 0) == 1 && (out.revents & POLLOUT)) {
+        std::fwrite(lines.data(), 1, lines.size(), stdout);
+        std::fflush(stdout);
     }
 }
 

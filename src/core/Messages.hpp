@@ -37,8 +37,12 @@ public:
     // errno of the first write to the stream that failed (0: none).
     int streamError() const { return streamError_; }
     // Emergency stop from another thread: the calling thread keeps the log, every other thread
-    // blocks at its next message (the process is about to end).
-    void freeze() { mutex_.lock(); }
+    // blocks at its next message (the process is about to end). A thread that holds the log for
+    // long (its echo blocked on a stdout pipe nobody reads: mpirun stopping) is not waited for
+    // beyond a moment; emergency() then writes to the .mess all the same, without the echo.
+    void freeze();
+    // The emergency's lines, after freeze(): as info(), the echo only when stdout takes it now.
+    void emergency(const std::string& text);
 
     int alarmCount() const { return alarms_; }
     const std::string& messText() const { return mess_; }
@@ -50,7 +54,8 @@ private:
     void alarmBox(const std::string& id, const std::string& text);
     void write(const std::string& text);
 
-    std::recursive_mutex mutex_;
+    std::recursive_timed_mutex mutex_;
+    bool frozen_ = false;  // freeze() holds the mutex
     int fd_ = -1;
     int streamError_ = 0;
     std::string mess_, resu_;

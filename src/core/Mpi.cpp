@@ -3,7 +3,13 @@
 #define OMPI_SKIP_MPICXX 1  // the C interface only
 #include <mpi.h>
 
+#include <sched.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <new>
 #include <stdexcept>
 #include <vector>
@@ -15,6 +21,58 @@ namespace ma::mpi {
 namespace {
 
 enum Kind { kUser = 1, kNotImplemented, kNumerical, kInternal, kOutOfMemory, kOther, kSingular, kNonConvergence };
+
+MPI_Comm gRunComm = MPI_COMM_NULL;   // the run's agreement (agreeOnRun)
+std::optional<Failure> gRunFailure;  // agreed by it
+constexpr int kNoticeTag = 29;       // "I failed, I wait in agreeOnRun" (one byte on gRunComm)
+bool gNoticed = false;
+std::vector<int> gPeers;
+
+// Every process's id and machine, so that rank 0 can watch the ones beside it (parser/RunGuard).
+void learnPeers() {
+    char host[256] = {};
+    ::gethostname(host, sizeof(host) - 1);
+    const int mine[2] = {int(::getpid()), int(std::hash<std::string>()(host) & 0x7fffffff)};
+    std::vector<int> all(2 * size_t(size()));
+    MPI_Allgather(mine, 2, MPI_INT, all.data(), 2, MPI_INT, MPI_COMM_WORLD);
+    gPeers.assign(size_t(size()), 0);
+    for (int r = 0; r < size(); ++r)
+        if (r != rank() && all[2 * r + 1] == mine[1]) gPeers[size_t(r)] = all[2 * r];
+}
+
+// Whether another process announced its failure (the notice is taken once, then remembered).
+bool noticeArrived() {
+    if (gNoticed) return true;
+    int flag = 0;
+    MPI_Status status;
+    MPI_Iprobe(MPI_ANY_SOURCE, kNoticeTag, gRunComm, &flag, &status);
+    if (!flag) return false;
+    char byte = 0;
+    MPI_Recv(&byte, 1, MPI_CHAR, status.MPI_SOURCE, kNoticeTag, gRunComm, MPI_STATUS_IGNORE);
+    gNoticed = true;
+    return true;
+}
+
+// Waits for a collective's request; throws OtherProcessFailed when a failure is announced
+// meanwhile (the failing process will never join: the request is left behind).
+void complete(MPI_Request& request) {
+    for (int done = 0;;) {
+        MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+        if (done) return;
+        if (noticeArrived()) throw OtherProcessFailed();
+        sched_yield();
+    }
+}
+
+void announceFailure() {
+    static const char byte = 1;
+    for (int r = 0; r < size(); ++r) {
+        if (r == rank()) continue;
+        MPI_Request request;
+        MPI_Isend(&byte, 1, MPI_CHAR, r, kNoticeTag, gRunComm, &request);
+        MPI_Request_free(&request);
+    }
+}
 
 }  // namespace
 
@@ -30,11 +88,15 @@ namespace {
 template <class T>
 void reduceThenBroadcast(std::span<T> values, MPI_Datatype type, MPI_Op op) {
     if (size() == 1 || values.empty()) return;
+    if (gNoticed) throw OtherProcessFailed();
     void* data = values.data();
     const int n = static_cast<int>(values.size());
-    if (rank() == 0) MPI_Reduce(MPI_IN_PLACE, data, n, type, op, 0, MPI_COMM_WORLD);
-    else MPI_Reduce(data, nullptr, n, type, op, 0, MPI_COMM_WORLD);
-    MPI_Bcast(data, n, type, 0, MPI_COMM_WORLD);
+    MPI_Request request;
+    if (rank() == 0) MPI_Ireduce(MPI_IN_PLACE, data, n, type, op, 0, MPI_COMM_WORLD, &request);
+    else MPI_Ireduce(data, nullptr, n, type, op, 0, MPI_COMM_WORLD, &request);
+    complete(request);
+    MPI_Ibcast(data, n, type, 0, MPI_COMM_WORLD, &request);
+    complete(request);
 }
 
 }  // namespace
@@ -55,6 +117,8 @@ void initialise(int* argc, char*** argv) {
     int provided = 0;
     if (MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS)
         throw std::runtime_error("MPI_Init_thread failed");
+    MPI_Comm_dup(MPI_COMM_WORLD, &gRunComm);
+    learnPeers();
     std::atexit(finalise);
 }
 
@@ -95,15 +159,22 @@ void sum(std::span<double> values) { reduceThenBroadcast(values, MPI_DOUBLE, MPI
 void sum(std::span<long double> values) { reduceThenBroadcast(values, MPI_LONG_DOUBLE, MPI_SUM); }
 void max(std::span<double> values) { reduceThenBroadcast(values, MPI_DOUBLE, MPI_MAX); }
 
-void broadcast(std::span<double> values) {
-    if (size() > 1 && !values.empty())
-        MPI_Bcast(values.data(), static_cast<int>(values.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+namespace {
+
+void broadcastFromRoot(void* data, size_t n, MPI_Datatype type) {
+    if (size() == 1 || n == 0) return;
+    if (gNoticed) throw OtherProcessFailed();
+    MPI_Request request;
+    MPI_Ibcast(data, static_cast<int>(n), type, 0, MPI_COMM_WORLD, &request);
+    complete(request);
 }
 
-void broadcast(std::span<int> values) {
-    if (size() > 1 && !values.empty())
-        MPI_Bcast(values.data(), static_cast<int>(values.size()), MPI_INT, 0, MPI_COMM_WORLD);
-}
+}  // namespace
+
+void broadcast(std::span<double> values) { broadcastFromRoot(values.data(), values.size(), MPI_DOUBLE); }
+void broadcast(std::span<int> values) { broadcastFromRoot(values.data(), values.size(), MPI_INT); }
+
+const std::vector<int>& peersOnThisMachine() { return gPeers; }
 
 int fortranWorld() {
     initialise();
@@ -115,18 +186,65 @@ int fortranSelf() {
     return static_cast<int>(MPI_Comm_c2f(MPI_COMM_SELF));
 }
 
-std::optional<Failure> agree(const std::optional<Failure>& local) {
-    if (size() == 1) return local;
-    int mine = local ? rank() : size(), first = size();
-    MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
-    if (first == size()) return std::nullopt;
+namespace {
+
+// The lowest failing rank's failure, broadcast from it (every process knows `first`).
+Failure broadcastFailure(const std::optional<Failure>& local, int first, MPI_Comm comm) {
     Failure agreed = rank() == first ? *local : Failure{};
     int header[2] = {agreed.kind, static_cast<int>(agreed.text.size())};
-    MPI_Bcast(header, 2, MPI_INT, first, MPI_COMM_WORLD);
+    MPI_Bcast(header, 2, MPI_INT, first, comm);
     agreed.kind = header[0];
     agreed.text.resize(static_cast<size_t>(header[1]));
-    MPI_Bcast(agreed.text.data(), header[1], MPI_CHAR, first, MPI_COMM_WORLD);
+    MPI_Bcast(agreed.text.data(), header[1], MPI_CHAR, first, comm);
+    agreed.rank = first;
     return agreed;
+}
+
+// Waits for `request`, at most `seconds` (polling, a yield between tries); false past it.
+bool waitAtMost(MPI_Request& request, double seconds) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    for (int done = 0;;) {
+        MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+        if (done) return true;
+        if (std::chrono::steady_clock::now() > end) return false;
+        sched_yield();
+    }
+}
+
+}  // namespace
+
+std::optional<Failure> agree(const std::optional<Failure>& local) {
+    if (size() == 1) return local;
+    if (gNoticed) throw OtherProcessFailed();
+    int mine = local ? rank() : size(), first = size();
+    MPI_Request request;
+    MPI_Iallreduce(&mine, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD, &request);
+    complete(request);
+    if (first == size()) return std::nullopt;
+    return broadcastFailure(local, first, MPI_COMM_WORLD);
+}
+
+std::optional<Failure> agreeOnRun(const std::optional<Failure>& local, double failureWaitSeconds) {
+    if (size() == 1) return local;
+    if (gRunFailure) return gRunFailure;
+    int mine = local ? rank() : size(), first = size();
+    MPI_Request request;
+    if (local) announceFailure();
+    MPI_Iallreduce(&mine, &first, 1, MPI_INT, MPI_MIN, gRunComm, &request);
+    if (!local) {
+        MPI_Wait(&request, MPI_STATUS_IGNORE);
+    } else if (!waitAtMost(request, failureWaitSeconds)) {
+        std::fprintf(stderr,
+                     "miniaster: MPI process %d of %d: %s\nminiaster: MPI process %d of %d: the other processes did "
+                     "not reach the agreement on this failure within %g s (they wait inside a collective operation "
+                     "of the command); the job is aborted\n",
+                     rank(), size(), local->text.c_str(), rank(), size(), failureWaitSeconds);
+        std::fflush(stderr);
+        abortAll(1);
+    }
+    if (first == size()) return std::nullopt;
+    gRunFailure = broadcastFailure(local, first, gRunComm);
+    return gRunFailure;
 }
 
 Failure failureOf(const std::exception_ptr& error) {

@@ -11,7 +11,9 @@
 #include <exception>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace ma::mpi {
 
@@ -41,6 +43,10 @@ void max(std::span<double> values);
 void broadcast(std::span<double> values);  // from rank 0
 void broadcast(std::span<int> values);     // from rank 0
 
+// The process ids of the other processes that run on this machine, by rank (0: another machine,
+// or this process), learned at initialise().
+const std::vector<int>& peersOnThisMachine();
+
 // MPI_Comm_c2f(MPI_COMM_WORLD) / MPI_COMM_SELF, for MUMPS's comm_fortran.
 int fortranWorld();
 int fortranSelf();
@@ -50,11 +56,28 @@ int fortranSelf();
 struct Failure {
     int kind = 0;  // see Mpi.cpp: which exception type to rethrow
     std::string text;
+    int rank = -1;  // the process it comes from (set by the agreement)
 };
 std::optional<Failure> agree(const std::optional<Failure>& local);
+
+// The run's agreement (the supervisor's, before and after every command and at the end of the
+// command file): the same, on a communicator of its own, so that a process that failed alone
+// never meets a collective of the command the others are in. Once a failure is agreed, every
+// later call returns it at once on every process (all of them learned it at the same call).
+// A failing process waits at most `failureWaitSeconds` for the others; past it (they are blocked
+// in a collective of the command, MUMPS's for instance), its failure goes to stderr and the job
+// is aborted (MPI_Abort): never a silent hang.
+std::optional<Failure> agreeOnRun(const std::optional<Failure>& local, double failureWaitSeconds = 60.0);
 // Failure <-> exception of the engine's types (core/Error.hpp), std::bad_alloc and the others.
 Failure failureOf(const std::exception_ptr& error);
 [[noreturn]] void rethrow(const Failure& failure);
+
+// Thrown by a collective below when another process failed alone and waits in agreeOnRun (it
+// announced it): the command stops on this process too, and the supervisor joins that agreement,
+// where it learns the failure. From then on every collective throws it at once.
+struct OtherProcessFailed : std::runtime_error {
+    OtherProcessFailed() : std::runtime_error("another MPI process failed") {}
+};
 
 // Runs f() on every process; when it threw on any of them, every process throws the error of the
 // lowest failing rank (see above). One process: f() as is.
@@ -67,7 +90,9 @@ void collectively(F&& f) {
     std::optional<Failure> local;
     try {
         f();
-    } catch (...) { local = failureOf(std::current_exception()); }
+    } catch (const OtherProcessFailed&) { throw; } catch (...) {
+        local = failureOf(std::current_exception());
+    }
     if (const auto agreed = agree(local)) rethrow(*agreed);
 }
 

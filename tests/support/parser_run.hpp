@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace ma::test {
@@ -64,6 +65,16 @@ inline RunResult runMiniaster(const std::filesystem::path& dir, const std::strin
     const int raw = pclose(pipe);
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
     return r;
+}
+
+// Starts `command` (a shell command line) in `dir` in the background, its output in dir/run.log,
+// sends it SIGTERM after `seconds` and waits for it (all within `timeout 300`): its exit status,
+// -1 when it did not exit.
+inline int runThenTerminate(const std::filesystem::path& dir, const std::string& command, int seconds) {
+    writeText(dir / "kill.sh", "cd '" + dir.string() + "'\n" + command + " > run.log 2>&1 &\npid=$!\nsleep " +
+                                   std::to_string(seconds) + "\nkill -TERM $pid\nwait $pid\n");
+    const int raw = std::system(("timeout 300 sh '" + (dir / "kill.sh").string() + "'").c_str());
+    return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 }
 
 // Writes `comm` as t.comm in a fresh folder and runs it.

@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <numeric>
+#include <thread>
 #include <vector>
 
 #include "core/Error.hpp"
@@ -54,6 +56,48 @@ TEST(Mpi, AFailureOnTheLastProcessIsThrownOnEveryProcess) {
     } catch (const UserError& e) { EXPECT_EQ(std::string(e.what()), mpi::size() == 1 ? "rank 0" : "rank 1"); }
     EXPECT_NO_THROW(mpi::collectively([] {}));
     EXPECT_FALSE(mpi::agree(std::nullopt).has_value());
+}
+
+// The last resort (ctest core_mpi.last_resort, MINIASTER_TEST_LAST_RESORT=1, on 2 processes): the
+// last process fails while the others never come to the agreement (as when they wait inside
+// MUMPS's collectives, which look for no announcement; here they sleep); past its wait it writes
+// its failure on stderr and aborts the job.
+TEST(MpiLastResort, AFailureNobodyJoinsAbortsTheJob) {
+    if (!std::getenv("MINIASTER_TEST_LAST_RESORT") || mpi::size() == 1) GTEST_SKIP() << "ctest core_mpi.last_resort";
+    if (mpi::rank() == mpi::size() - 1) mpi::agreeOnRun(mpi::Failure{0, "<F> <ERROR> the last process failed"}, 1.0);
+    else std::this_thread::sleep_for(std::chrono::seconds(60));
+    FAIL() << "the job was not aborted";
+}
+
+// The run's agreement (the supervisor's): the last process fails alone and announces it; the
+// others, inside a sum that process never joins, stop there (OtherProcessFailed) and learn its
+// failure at the agreement; later agreements return it at once. Last in the file: the job then
+// stays failed (later collectives would throw).
+TEST(Mpi, RunAgreementStopsTheOthersCollectivesAndStays) {
+    const int last = mpi::size() - 1;
+    std::optional<mpi::Failure> agreed;
+    // The agreement first: once it is done on the last process, every other has left the
+    // collectives of the tests before (its announcement would stop them too).
+    if (mpi::rank() == last) {
+        mpi::agree(std::nullopt);
+        agreed = mpi::agreeOnRun(mpi::Failure{0, "process " + std::to_string(last) + " failed"});
+    } else {
+        std::vector<double> v = {1.0};
+        EXPECT_THROW(
+            {
+                mpi::agree(std::nullopt);
+                mpi::sum(v);
+            },
+            mpi::OtherProcessFailed);
+        agreed = mpi::agreeOnRun(std::nullopt);
+        EXPECT_THROW(mpi::sum(v), mpi::OtherProcessFailed);
+    }
+    ASSERT_TRUE(agreed.has_value());
+    EXPECT_EQ(agreed->text, "process " + std::to_string(last) + " failed");
+    if (mpi::size() > 1) EXPECT_EQ(agreed->rank, last);
+    const auto again = mpi::agreeOnRun(std::nullopt);
+    EXPECT_EQ(again.has_value(), mpi::size() > 1);  // one process: nothing is kept
+    if (again) EXPECT_EQ(again->text, agreed->text);
 }
 
 }  // namespace
