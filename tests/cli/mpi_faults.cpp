@@ -143,7 +143,7 @@ TEST(MpiFaults, SigtermToTheLauncher) {
     const auto dir = freshDir();
     writeText(dir / "t.comm", patchWith("CH1 = AFFE_CHAR_MECA_F", "while True: pass"));
     writeText(dir / "t.export", "F comm t.comm D 1\nF mmed " + kSource + "/astest/fe_patch_quad4.mmed D 20\n");
-    EXPECT_EQ(runThenTerminate(dir, "'" + std::string(MINIASTER_BINARY) + "' run t.export --np 2 --out-dir out", 2), 1)
+    EXPECT_EQ(runThenTerminate(dir, quotedBinary() + " run t.export --np 2 --out-dir out", 2), 1)
         << readAll(dir / "run.log");
     const std::string mess = readAll(dir / "out/t.mess");
     EXPECT_TRUE(std::regex_search(mess, std::regex("\n<F> <INTERRUPTED> .*: the run is stopped by signal 15"))) << mess;

@@ -230,7 +230,7 @@ TEST(MpiRuns, TimeLimitAndSignalStopEveryProcess) {
     EXPECT_NE(r.file("out/t.resu").find(" OK "), std::string::npos);
 
     // SIGTERM to the run (the launcher, mpirun's parent: it forwards it), 3 s after its start.
-    EXPECT_EQ(runThenTerminate(dir, "'" + std::string(MINIASTER_BINARY) + "' run k.export --np 2 --out-dir out", 3), 1)
+    EXPECT_EQ(runThenTerminate(dir, quotedBinary() + " run k.export --np 2 --out-dir out", 3), 1)
         << readAll(dir / "run.log");
     const std::string mess = r.file("out/k.mess");
     EXPECT_NE(mess.find("<F> <INTERRUPTED> (t.comm, in the Python code after the command of line"), std::string::npos)

@@ -70,9 +70,18 @@ inline RunResult runMiniaster(const std::filesystem::path& dir, const std::strin
 // Starts `command` (a shell command line) in `dir` in the background, its output in dir/run.log,
 // sends it SIGTERM after `seconds` and waits for it (all within `timeout 300`): its exit status,
 // -1 when it did not exit.
+// The miniaster binary, quoted for a shell command line.
+inline std::string quotedBinary() {
+    std::string q = "'";
+    return q.append(MINIASTER_BINARY).append("'");
+}
+
 inline int runThenTerminate(const std::filesystem::path& dir, const std::string& command, int seconds) {
-    writeText(dir / "kill.sh", "cd '" + dir.string() + "'\n" + command + " > run.log 2>&1 &\npid=$!\nsleep " +
-                                   std::to_string(seconds) + "\nkill -TERM $pid\nwait $pid\n");
+    // Appended piece by piece: gcc 12's -Wrestrict misfires on a chain of operator+ here.
+    std::string script = "cd '";
+    script.append(dir.string()).append("'\n").append(command).append(" > run.log 2>&1 &\npid=$!\nsleep ");
+    script.append(std::to_string(seconds)).append("\nkill -TERM $pid\nwait $pid\n");
+    writeText(dir / "kill.sh", script);
     const int raw = std::system(("timeout 300 sh '" + (dir / "kill.sh").string() + "'").c_str());
     return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 }
