@@ -3,9 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <cstdint>
-#include <numeric>
 
 #include "core/Error.hpp"
 #include "mesh/MeshMessages.hpp"
@@ -44,56 +43,55 @@ void refuseRepeatedNodes(const Mesh& mesh, const std::string& path) {
                         path, found.size(), listed(found)));
 }
 
+// The cell's nodes in increasing order (cells have at most 27).
+std::span<const int> sortedNodes(const Mesh& mesh, int c, std::array<int, 27>& buffer) {
+    const auto n = mesh.cellNodes(c);
+    std::copy(n.begin(), n.end(), buffer.begin());
+    std::sort(buffer.begin(), buffer.begin() + long(n.size()));
+    return {buffer.data(), n.size()};
+}
+
 // Cells with the same set of nodes (code_aster compares the node sets of cells with as many nodes,
-// whatever their order): cells sorted by a hash of their sorted nodes, equal neighbours compared.
+// whatever their order). Two such cells have the same lowest node: the cells are bucketed by it
+// (a counting sort, linear) and compared within their bucket, which holds a few cells.
 std::vector<std::pair<int, int>> doubleCells(const Mesh& mesh) {
     const int nc = mesh.cellCount();
-    std::vector<int> sorted(mesh.connectivity);
-    std::vector<std::uint64_t> key(static_cast<size_t>(nc));
+    std::vector<int> lowest(static_cast<size_t>(nc)), start(size_t(mesh.nodeCount()) + 1, 0);
     for (int c = 0; c < nc; ++c) {
-        auto first = sorted.begin() + mesh.cellOffsets[size_t(c)],
-             last = sorted.begin() + mesh.cellOffsets[size_t(c) + 1];
-        std::sort(first, last);
-        std::uint64_t h = 1469598103934665603ull ^ std::uint64_t(last - first);  // FNV-1a
-        for (auto it = first; it != last; ++it) h = (h ^ std::uint64_t(*it)) * 1099511628211ull;
-        key[size_t(c)] = h;
+        const auto n = mesh.cellNodes(c);
+        lowest[size_t(c)] = n.empty() ? 0 : *std::min_element(n.begin(), n.end());
+        ++start[size_t(lowest[size_t(c)]) + 1];
     }
-    auto nodesOf = [&](int c) {
-        return std::span<const int>(sorted.data() + mesh.cellOffsets[size_t(c)],
-                                    size_t(mesh.cellOffsets[size_t(c) + 1] - mesh.cellOffsets[size_t(c)]));
-    };
-    auto same = [&](int a, int b) {
-        const auto na = nodesOf(a), nb = nodesOf(b);
-        return std::equal(na.begin(), na.end(), nb.begin(), nb.end());
-    };
-    std::vector<int> order(static_cast<size_t>(nc));
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(),
-              [&](int a, int b) { return key[size_t(a)] != key[size_t(b)] ? key[size_t(a)] < key[size_t(b)] : a < b; });
+    for (size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
+    std::vector<int> bucketed(static_cast<size_t>(nc)), fill(start.begin(), start.end() - 1);
+    for (int c = 0; c < nc; ++c) bucketed[size_t(fill[size_t(lowest[size_t(c)])]++)] = c;
     std::vector<std::pair<int, int>> pairs;
-    for (size_t i = 0; i < order.size();) {
-        size_t j = i + 1;
-        while (j < order.size() && key[size_t(order[j])] == key[size_t(order[i])]) ++j;
-        for (size_t a = i; a < j; ++a)  // a run of equal hashes: a handful of cells
-            for (size_t b = a + 1; b < j; ++b)
-                if (same(order[a], order[b])) pairs.emplace_back(order[a], order[b]);
-        i = j;
-    }
+    std::array<int, 27> na{}, nb{};
+    for (size_t v = 0; v + 1 < start.size(); ++v)
+        for (int a = start[v]; a < start[v + 1]; ++a)
+            for (int b = a + 1; b < start[v + 1]; ++b) {
+                const int ca = bucketed[size_t(a)], cb = bucketed[size_t(b)];
+                if (mesh.cellNodes(ca).size() != mesh.cellNodes(cb).size()) continue;
+                const auto sa = sortedNodes(mesh, ca, na), sb = sortedNodes(mesh, cb, nb);
+                if (std::equal(sa.begin(), sa.end(), sb.begin(), sb.end())) pairs.emplace_back(ca, cb);
+            }
     std::sort(pairs.begin(), pairs.end(), [](const auto& p, const auto& q) { return p.second < q.second; });
     return pairs;
 }
 
 // Shortest over longest distance between two nodes of the cell (code_aster's MODELISA8_15 ratio).
+// Squared lengths cannot overflow: checkCoordinates ran first.
 double flatness(const Mesh& mesh, int c) {
     const auto n = mesh.cellNodes(c);
     double shortest = INFINITY, longest = 0.0;
     for (size_t a = 0; a < n.size(); ++a)
         for (size_t b = a + 1; b < n.size(); ++b) {
             const auto &p = mesh.coords[size_t(n[a])], &q = mesh.coords[size_t(n[b])];
-            const double d = std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
-            shortest = std::min(shortest, d), longest = std::max(longest, d);
+            const double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
+            const double d2 = dx * dx + dy * dy + dz * dz;
+            shortest = std::min(shortest, d2), longest = std::max(longest, d2);
         }
-    return longest > 0.0 ? shortest / longest : 1.0;
+    return longest > 0.0 ? std::sqrt(shortest / longest) : 1.0;
 }
 
 }  // namespace

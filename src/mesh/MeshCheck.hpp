@@ -25,7 +25,7 @@ void checkCoordinates(const Mesh& mesh, const std::string& path);
 // nodes twice under two names (alarm MODELISA8_13 naming both), flat cells whose shortest distance
 // between two of their nodes is below `aplat` times the longest (alarm MODELISA8_15). A cell with
 // the same node twice is a UserError, as code_aster stops on it (MODELISA4_10). One alarm per
-// finding kind, with the count and the first cells.
+// finding kind, with the count and the first cells. Runs after checkCoordinates (squared lengths).
 std::vector<FormattedMessage> veriMail(const Mesh& mesh, const std::string& path, double aplat);
 
 }  // namespace ma
