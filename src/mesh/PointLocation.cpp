@@ -40,7 +40,6 @@ bool inBox(std::span<const std::array<double, 3>> nodes, const Vec3& x, int d) {
 
 PointInCell locatePoint(const Mesh& mesh, const Vec3& x) {
     const int dim = mesh.maxCellDimension();
-    const std::array<double, 3> target{x[0], x[1], mesh.dim == 3 ? x[2] : 0.0};
     std::vector<std::array<double, 3>> nodes;
     for (int c = 0; c < mesh.cellCount(); ++c) {
         const CellType type = mesh.cellTypes[size_t(c)];
@@ -48,6 +47,11 @@ PointInCell locatePoint(const Mesh& mesh, const Vec3& x) {
         nodes.clear();
         for (int n : mesh.cellNodes(c)) nodes.push_back(mesh.coords[size_t(n)]);
         if (!inBox(nodes, x, dim)) continue;
+        // Relative to the cell's first node: Newton's residual is then round-off of the cell's
+        // size, not of the coordinates' (a small cell far from the origin never met its test).
+        const Vec3 origin = nodes[0];
+        for (auto& p : nodes) p = difference(p, origin);
+        const Vec3 target = difference({x[0], x[1], mesh.dim == 3 ? x[2] : 0.0}, origin);
         std::array<double, 3> xi{};
         if (mapToReference(type, nodes, target, xi) && insideReference(type, xi, dim)) return {c, xi};
     }
