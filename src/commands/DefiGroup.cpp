@@ -21,7 +21,8 @@ Vec3 vector3(const KeywordSet& occ, const std::string& keyword) {
 
 const std::vector<int>& groupOf(const GroupSet& groups, const std::string& name, const KeywordSet& occ,
                                 const std::string& keyword, const Mesh& mesh) {
-    return namedGroup(mesh, &groups == &mesh.cellGroups ? GroupKind::Cell : GroupKind::Node, name, occ.pathOf(keyword));
+    return namedGroup(mesh, &groups == &mesh.cellGroups ? GroupKind::Cells : GroupKind::Nodes, name,
+                      occ.pathOf(keyword));
 }
 
 std::vector<const std::vector<int>*> groupLists(const GroupSet& groups, const KeywordSet& occ,

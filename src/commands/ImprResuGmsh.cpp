@@ -46,7 +46,7 @@ std::vector<int> selectedCells(const Mesh& mesh, const KeywordSet& occ) {
     }
     std::vector<char> keep(size_t(mesh.cellCount()), 0);
     for (const auto& g : occ.has("GROUP_MA") ? occ.texts("GROUP_MA") : std::vector<std::string>{}) {
-        for (int c : namedGroup(mesh, GroupKind::Cell, g, occ.pathOf("GROUP_MA"))) keep[size_t(c)] = 1;
+        for (int c : namedGroup(mesh, GroupKind::Cells, g, occ.pathOf("GROUP_MA"))) keep[size_t(c)] = 1;
     }
     for (const auto& m : occ.has("MAILLE") ? occ.texts("MAILLE") : std::vector<std::string>{}) {
         const int c = mesh.findCell(m);

@@ -28,7 +28,7 @@ inline std::vector<int> selectedCells(const Mesh& mesh, const KeywordSet& occ, s
     }
     if (occ.has("GROUP_MA")) {
         for (const auto& g : occ.texts("GROUP_MA")) {
-            const auto& members = namedGroup(mesh, GroupKind::Cell, g, occ.pathOf("GROUP_MA"));
+            const auto& members = namedGroup(mesh, GroupKind::Cells, g, occ.pathOf("GROUP_MA"));
             cells.insert(cells.end(), members.begin(), members.end());
         }
         if (what) *what = fmt::format("GROUP_MA={}", fmt::join(occ.texts("GROUP_MA"), ","));
@@ -66,7 +66,7 @@ inline std::vector<int> selectedNodes(const Mesh& mesh, const KeywordSet& occ, c
     }
     if (occ.has("GROUP_NO"))
         for (const auto& g : occ.texts("GROUP_NO")) {
-            const auto& members = namedGroup(mesh, GroupKind::Node, g, occ.pathOf("GROUP_NO"));
+            const auto& members = namedGroup(mesh, GroupKind::Nodes, g, occ.pathOf("GROUP_NO"));
             nodes.insert(nodes.end(), members.begin(), members.end());
         }
     if (occ.has("NOEUD"))

@@ -14,7 +14,7 @@ namespace {
 std::vector<int> cellsOfGroups(const Mesh& mesh, const KeywordSet& occ, const std::string& keyword) {
     std::vector<const std::vector<int>*> lists;
     for (const auto& name : occ.texts(keyword)) {
-        lists.push_back(&namedGroup(mesh, GroupKind::Cell, name, occ.pathOf(keyword)));
+        lists.push_back(&namedGroup(mesh, GroupKind::Cells, name, occ.pathOf(keyword)));
     }
     return unionOf(lists);
 }

@@ -26,11 +26,11 @@ void GroupSet::remove(const std::string& name) {
 
 const std::vector<int>& namedGroup(const Mesh& mesh, GroupKind kind, const std::string& name,
                                    const std::string& keyword) {
-    const GroupSet& groups = kind == GroupKind::Cell ? mesh.cellGroups : mesh.nodeGroups;
+    const GroupSet& groups = kind == GroupKind::Cells ? mesh.cellGroups : mesh.nodeGroups;
     if (!groups.has(name))
         throw UserError(fmt::format("{}: the mesh {} has no {} group '{}'", keyword,
                                     mesh.name.empty() ? "(unnamed)" : mesh.name,
-                                    kind == GroupKind::Cell ? "cell" : "node", name));
+                                    kind == GroupKind::Cells ? "cell" : "node", name));
     return groups.get(name);
 }
 

@@ -70,7 +70,7 @@ private:
 // under `keyword` (its path, e.g. "AFFE[1]/GROUP_MA"). A name the mesh does not hold is a
 // UserError "<keyword>: the mesh M has no cell group 'G'", as code_aster refuses it (MODELISA7:
 // "le GROUP_MA G ne fait pas partie du maillage M").
-enum class GroupKind { Cell, Node };
+enum class GroupKind { Cells, Nodes };
 const std::vector<int>& namedGroup(const Mesh& mesh, GroupKind kind, const std::string& name,
                                    const std::string& keyword);
 

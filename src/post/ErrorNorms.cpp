@@ -40,7 +40,7 @@ struct Batches {
 // Cells of `group` that carry an element of the model.
 std::vector<int> groupElements(const Model& model, const std::string& group) {
     const Mesh& mesh = *model.mesh;
-    const auto& members = namedGroup(mesh, GroupKind::Cell, group, "GROUP_MA");
+    const auto& members = namedGroup(mesh, GroupKind::Cells, group, "GROUP_MA");
     std::vector<char> inModel(size_t(mesh.cellCount()), 0);
     for (const auto& e : model.elements) inModel[size_t(e.cell)] = 1;
     std::vector<int> out;

@@ -45,7 +45,7 @@ std::vector<int> nodeList(const Mesh& mesh, const NodalField& f, const std::vect
         candidates.push_back(i);
     }
     for (const auto& g : a.nodeGroups) {
-        const auto& members = namedGroup(mesh, GroupKind::Node, g, a.keywordPath + "/GROUP_NO");
+        const auto& members = namedGroup(mesh, GroupKind::Nodes, g, a.keywordPath + "/GROUP_NO");
         candidates.insert(candidates.end(), members.begin(), members.end());
     }
     std::vector<unsigned char> seen(size_t(mesh.nodeCount()), 0);
