@@ -1,6 +1,7 @@
 // DEFI_FISS_XFEM with TYPE_DISCONTINUITE='INTERFACE': the normal level set of FONC_LN at every
 // mesh node, snapped, cut cells, enriched nodes, junction on master interfaces (xfem_spec §1, §2).
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <map>
 
@@ -14,6 +15,23 @@
 
 namespace ma {
 namespace {
+
+// JONCTION/POINT: as many coordinates as the mesh has. code_aster zeroes the point and reads up to
+// 3 values (xinlsj), so it takes (5,) in 2D for (5, 0); that silent 0 is refused. A 3D mesh
+// accepts 2 (z = 0, said in the log) because code_aster's own ssnv510f gives POINT=(0,4) on one,
+// and a 2D mesh (x, y, 0), its own plane.
+std::vector<double> jonctionPoint(const KeywordSet& j, int dim) {
+    auto point = j.reals("POINT");
+    if (dim == 2 && point.size() == 3 && point[2] == 0.0) point.pop_back();
+    const size_t least = dim == 3 ? 2 : size_t(dim);
+    if (point.size() < least || point.size() > size_t(dim))
+        throw UserError(fmt::format("{}=({}): {} coordinate(s) on a mesh of dimension {}; give {}", j.pathOf("POINT"),
+                                    fmt::join(point, ", "), point.size(), dim, dim == 3 ? "3 (X, Y, Z)" : "2 (X, Y)"));
+    if (point.size() < size_t(dim))
+        msg().infof("    {}: {} coordinate(s) given on a mesh of dimension {}; the missing ones are 0",
+                    j.pathOf("POINT"), point.size(), dim);
+    return point;
+}
 
 ConceptPtr defiFissXfem(const KeywordSet& kw, CommandContext& ctx) {
     std::shared_ptr<const Mesh> mesh;
@@ -49,13 +67,8 @@ ConceptPtr defiFissXfem(const KeywordSet& kw, CommandContext& ctx) {
     if (!jonction.empty()) {
         const auto& j = jonction[0];
         for (const auto& c : j.objects<xfem::Crack>("FISSURE")) junction.masters.push_back(c);
-        // Missing coordinates are 0, as code_aster (xinlsj zeroes the point and reads up to 3
-        // values): ssnv510f gives POINT=(0,4) on a 3D mesh.
-        const auto point = j.reals("POINT");
-        if (point.size() < static_cast<size_t>(mesh->dim))
-            msg().infof("    {}: {} coordinate(s) given on a mesh of dimension {}; the missing ones are 0",
-                        j.pathOf("POINT"), point.size(), mesh->dim);
-        for (size_t i = 0; i < point.size() && i < 3; ++i) junction.point[i] = point[i];
+        const auto point = jonctionPoint(j, mesh->dim);
+        for (size_t i = 0; i < point.size(); ++i) junction.point[i] = point[i];
         junction.keywordPath = j.path().empty() ? "JONCTION" : j.path();
     }
     auto crack = xfem::buildCrack(mesh, std::move(lsn), jonction.empty() ? nullptr : &junction);

@@ -20,26 +20,23 @@ Vec3 vector3(const KeywordSet& occ, const std::string& keyword) {
 }
 
 const std::vector<int>& groupOf(const GroupSet& groups, const std::string& name, const KeywordSet& occ,
-                                const std::string& keyword, const Mesh& mesh, const char* kind) {
-    if (!groups.has(name))
-        throw UserError(fmt::format("{}: the {} group '{}' does not exist in mesh {}", occ.pathOf(keyword), kind, name,
-                                    mesh.name.empty() ? "(unnamed)" : mesh.name));
-    return groups.get(name);
+                                const std::string& keyword, const Mesh& mesh) {
+    return namedGroup(mesh, &groups == &mesh.cellGroups ? GroupKind::Cells : GroupKind::Nodes, name,
+                      occ.pathOf(keyword));
 }
 
 std::vector<const std::vector<int>*> groupLists(const GroupSet& groups, const KeywordSet& occ,
-                                                const std::string& keyword, const Mesh& mesh, const char* kind) {
+                                                const std::string& keyword, const Mesh& mesh) {
     std::vector<const std::vector<int>*> lists;
-    for (const auto& name : occ.texts(keyword)) lists.push_back(&groupOf(groups, name, occ, keyword, mesh, kind));
+    for (const auto& name : occ.texts(keyword)) lists.push_back(&groupOf(groups, name, occ, keyword, mesh));
     return lists;
 }
 
 // Set operations shared by CREA_GROUP_MA and CREA_GROUP_NO; false when none is present.
-bool setOperation(const GroupSet& groups, const KeywordSet& occ, const Mesh& mesh, const char* kind,
-                  std::vector<int>& out) {
-    if (occ.has("INTERSEC")) out = intersectionOf(groupLists(groups, occ, "INTERSEC", mesh, kind));
-    else if (occ.has("UNION")) out = unionOf(groupLists(groups, occ, "UNION", mesh, kind));
-    else if (occ.has("DIFFE")) out = differenceOf(groupLists(groups, occ, "DIFFE", mesh, kind));
+bool setOperation(const GroupSet& groups, const KeywordSet& occ, const Mesh& mesh, std::vector<int>& out) {
+    if (occ.has("INTERSEC")) out = intersectionOf(groupLists(groups, occ, "INTERSEC", mesh));
+    else if (occ.has("UNION")) out = unionOf(groupLists(groups, occ, "UNION", mesh));
+    else if (occ.has("DIFFE")) out = differenceOf(groupLists(groups, occ, "DIFFE", mesh));
     else return false;
     return true;
 }
@@ -63,11 +60,11 @@ void store(Mesh& mesh, GroupSet& groups, const std::string& name, std::vector<in
 void createCellGroup(Mesh& mesh, const KeywordSet& occ, bool alarms) {
     const std::string name = occ.text("NOM");
     std::vector<int> cells;
-    if (setOperation(mesh.cellGroups, occ, mesh, "cell", cells)) {
+    if (setOperation(mesh.cellGroups, occ, mesh, cells)) {
     } else if (occ.has("TOUT")) {
         for (int c = 0; c < mesh.cellCount(); ++c) cells.push_back(c);
     } else if (occ.has("GROUP_MA")) {
-        cells = unionOf(groupLists(mesh.cellGroups, occ, "GROUP_MA", mesh, "cell"));
+        cells = unionOf(groupLists(mesh.cellGroups, occ, "GROUP_MA", mesh));
     } else if (occ.has("MAILLE")) {
         for (const auto& n : occ.texts("MAILLE")) {
             const int c = mesh.findCell(n);
@@ -109,7 +106,7 @@ void createNodeGroups(Mesh& mesh, const KeywordSet& occ, bool alarms) {
         return names.front();
     };
     std::vector<int> nodes;
-    if (setOperation(mesh.nodeGroups, occ, mesh, "node", nodes)) {
+    if (setOperation(mesh.nodeGroups, occ, mesh, nodes)) {
         store(mesh, mesh.nodeGroups, single(), std::move(nodes), occ, alarms, "node");
     } else if (occ.has("TOUT_GROUP_MA")) {
         for (const auto& g : std::vector<std::string>(mesh.cellGroups.names())) {
@@ -126,13 +123,13 @@ void createNodeGroups(Mesh& mesh, const KeywordSet& occ, bool alarms) {
             throw UserError(fmt::format("{} gives {} names for {} groups of {}", occ.pathOf("NOM"), names.size(),
                                         groups.size(), occ.pathOf("GROUP_MA")));
         for (size_t i = 0; i < groups.size(); ++i) {
-            const auto& cells = groupOf(mesh.cellGroups, groups[i], occ, "GROUP_MA", mesh, "cell");
+            const auto& cells = groupOf(mesh.cellGroups, groups[i], occ, "GROUP_MA", mesh);
             store(mesh, mesh.nodeGroups, names.empty() ? groups[i] : names[i],
                   nodesOfCells(mesh, cells, nodeCriterion(occ)), occ, alarms, "node");
         }
     } else if (occ.has("GROUP_NO")) {
-        store(mesh, mesh.nodeGroups, single(), unionOf(groupLists(mesh.nodeGroups, occ, "GROUP_NO", mesh, "node")), occ,
-              alarms, "node");
+        store(mesh, mesh.nodeGroups, single(), unionOf(groupLists(mesh.nodeGroups, occ, "GROUP_NO", mesh)), occ, alarms,
+              "node");
     } else if (occ.has("NOEUD")) {
         for (const auto& n : occ.texts("NOEUD")) {
             const int i = mesh.findNode(n);

@@ -46,16 +46,11 @@ std::vector<int> selectedCells(const Mesh& mesh, const KeywordSet& occ) {
     }
     std::vector<char> keep(size_t(mesh.cellCount()), 0);
     for (const auto& g : occ.has("GROUP_MA") ? occ.texts("GROUP_MA") : std::vector<std::string>{}) {
-        if (!mesh.cellGroups.has(g))
-            throw UserError(
-                fmt::format("{}: the cell group '{}' does not exist in mesh {}", occ.pathOf("GROUP_MA"), g, mesh.name));
-        for (int c : mesh.cellGroups.get(g)) keep[size_t(c)] = 1;
+        for (int c : namedGroup(mesh, GroupKind::Cells, g, occ.pathOf("GROUP_MA"))) keep[size_t(c)] = 1;
     }
     for (const auto& m : occ.has("MAILLE") ? occ.texts("MAILLE") : std::vector<std::string>{}) {
         const int c = mesh.findCell(m);
-        if (c < 0)
-            throw UserError(
-                fmt::format("{}: the cell '{}' does not exist in mesh {}", occ.pathOf("MAILLE"), m, mesh.name));
+        if (c < 0) throw UserError(fmt::format("{}: the mesh {} has no cell '{}'", occ.pathOf("MAILLE"), mesh.name, m));
         keep[size_t(c)] = 1;
     }
     std::vector<int> out;

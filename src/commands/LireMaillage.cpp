@@ -8,6 +8,7 @@
 #include "fe/CellOrientation.hpp"
 #include "med_io/MedReader.hpp"
 #include "mesh/AsterMeshReader.hpp"
+#include "mesh/MeshCheck.hpp"
 #include "mesh/MeshConformity.hpp"
 #include "mesh/MeshMessages.hpp"
 #include "mesh/MeshSummary.hpp"
@@ -85,10 +86,12 @@ ConceptPtr lireMaillage(const KeywordSet& kw, CommandContext& ctx) {
     std::string meshName = "MAILLAGE";
     auto mesh = format == "MED" ? readMedMesh(kw, path, unit, meshName) : readMailMesh(path, unit);
 
-    bool check = true;
-    for (const auto& occ : kw.factor("VERI_MAIL")) check = occ.text("VERIF") == "OUI";
-    if (check)
-        for (const auto& defect : meshDefects(*mesh, path)) msg().alarm(defect);
+    checkCoordinates(*mesh, path);
+    for (const auto& occ : kw.factor("VERI_MAIL")) {
+        if (occ.text("VERIF") != "OUI") msg().alarm(MODELISA5_49, path);
+        else
+            for (const auto& defect : veriMail(*mesh, path, occ.real("APLAT"))) msg().alarm(defect);
+    }
 
     const std::string name = ctx.resultName.empty() ? meshName : ctx.resultName;
     msg().info(meshSummary(*mesh, name));

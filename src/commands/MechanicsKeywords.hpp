@@ -28,10 +28,7 @@ inline std::vector<int> selectedCells(const Mesh& mesh, const KeywordSet& occ, s
     }
     if (occ.has("GROUP_MA")) {
         for (const auto& g : occ.texts("GROUP_MA")) {
-            if (!mesh.cellGroups.has(g))
-                throw UserError(
-                    fmt::format("{}: the mesh {} has no cell group '{}'", occ.pathOf("GROUP_MA"), mesh.name, g));
-            const auto& members = mesh.cellGroups.get(g);
+            const auto& members = namedGroup(mesh, GroupKind::Cells, g, occ.pathOf("GROUP_MA"));
             cells.insert(cells.end(), members.begin(), members.end());
         }
         if (what) *what = fmt::format("GROUP_MA={}", fmt::join(occ.texts("GROUP_MA"), ","));
@@ -69,10 +66,7 @@ inline std::vector<int> selectedNodes(const Mesh& mesh, const KeywordSet& occ, c
     }
     if (occ.has("GROUP_NO"))
         for (const auto& g : occ.texts("GROUP_NO")) {
-            if (!mesh.nodeGroups.has(g))
-                throw UserError(
-                    fmt::format("{}: the mesh {} has no node group '{}'", occ.pathOf("GROUP_NO"), mesh.name, g));
-            const auto& members = mesh.nodeGroups.get(g);
+            const auto& members = namedGroup(mesh, GroupKind::Nodes, g, occ.pathOf("GROUP_NO"));
             nodes.insert(nodes.end(), members.begin(), members.end());
         }
     if (occ.has("NOEUD"))

@@ -14,10 +14,7 @@ namespace {
 std::vector<int> cellsOfGroups(const Mesh& mesh, const KeywordSet& occ, const std::string& keyword) {
     std::vector<const std::vector<int>*> lists;
     for (const auto& name : occ.texts(keyword)) {
-        if (!mesh.cellGroups.has(name))
-            throw UserError(fmt::format("{}: the cell group '{}' does not exist in mesh {}", occ.pathOf(keyword), name,
-                                        mesh.name.empty() ? "(unnamed)" : mesh.name));
-        lists.push_back(&mesh.cellGroups.get(name));
+        lists.push_back(&namedGroup(mesh, GroupKind::Cells, name, occ.pathOf(keyword)));
     }
     return unionOf(lists);
 }

@@ -54,6 +54,7 @@ ConceptPtr postReleveT(const KeywordSet& kw, CommandContext& ctx) {
             throw NotImplemented(a.pathOf("REPERE") + ": only REPERE='GLOBAL' is supported by miniaster");
         NodalExtraction x;
         x.title = a.text("INTITULE");
+        x.keywordPath = a.path();
         if (a.has("NOEUD")) x.nodes = a.texts("NOEUD");
         if (a.has("GROUP_NO")) x.nodeGroups = a.texts("GROUP_NO");
         if (x.nodes.empty() && x.nodeGroups.empty()) throw UserError(a.path() + ": give the nodes (NOEUD or GROUP_NO)");

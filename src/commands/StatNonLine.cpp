@@ -34,9 +34,12 @@ ConvergenceOptions convergenceOptions(const KeywordSet& kw) {
     return conv;
 }
 
-void refuseUnsupportedBehaviour(const KeywordSet& kw) {
+// ELAS in small strains everywhere: the cells COMPORTEMENT names matter only for being in the mesh
+// (an unknown GROUP_MA or MAILLE is an error, as in code_aster).
+void refuseUnsupportedBehaviour(const KeywordSet& kw, const Mesh& mesh) {
     bool localIntegration = false;
     for (const auto& occ : kw.factor("COMPORTEMENT")) {
+        mechanics::selectedCells(mesh, occ);
         if (occ.text("RELATION") != "ELAS")
             throw NotImplemented(occ.pathOf("RELATION") + "='" + occ.text("RELATION") + "': only ELAS is supported");
         if (occ.text("DEFORMATION") != "PETIT")
@@ -144,8 +147,8 @@ IncrementReport solveIncrement(MechanicalProblem& problem, contact::ContactTerms
 ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
     const auto t0 = std::chrono::steady_clock::now();
     if (ctx.reused) throw NotImplemented("STAT_NON_LINE with reuse= (continuation) is not supported by miniaster");
-    refuseUnsupportedBehaviour(kw);
     auto model = kw.object<Model>("MODELE");
+    refuseUnsupportedBehaviour(kw, *model->mesh);
     auto material = kw.object<MaterialField>("CHAM_MATER");
     if (material->mesh != model->mesh)
         throw UserError("STAT_NON_LINE: CHAM_MATER " + material->name + " is not defined on the mesh of MODELE " +

@@ -2,7 +2,9 @@
 
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 #include "core/Error.hpp"
@@ -145,7 +147,15 @@ void AsterLexer::scanNumber(const std::string& s, size_t limit, size_t& col, Ast
         fail(tok.line, "malformed number '" + s.substr(start, col - start + 1) + "'");
     tok.kind = real ? AsterToken::Kind::Real : AsterToken::Kind::Integer;
     tok.text = s.substr(start, col - start);
-    std::from_chars(normalised, normalised + length, tok.value);
+    // from_chars leaves the value unset out of double's range: an underflow (below 1e-308) is 0,
+    // an overflow an error rather than a coordinate of no meaning.
+    if (std::from_chars(normalised, normalised + length, tok.value).ec == std::errc::result_out_of_range) {
+        normalised[length] = '\0';
+        tok.value = std::strtod(normalised, nullptr);
+        if (std::abs(tok.value) > 1.0)
+            fail(tok.line, "the number '" + tok.text + "' is beyond double precision (magnitude 1.8E+308 at most)");
+        tok.value = 0.0;
+    }
 }
 
 }  // namespace ma

@@ -24,6 +24,16 @@ void GroupSet::remove(const std::string& name) {
     order_.erase(std::remove(order_.begin(), order_.end(), name), order_.end());
 }
 
+const std::vector<int>& namedGroup(const Mesh& mesh, GroupKind kind, const std::string& name,
+                                   const std::string& keyword) {
+    const GroupSet& groups = kind == GroupKind::Cells ? mesh.cellGroups : mesh.nodeGroups;
+    if (!groups.has(name))
+        throw UserError(fmt::format("{}: the mesh {} has no {} group '{}'", keyword,
+                                    mesh.name.empty() ? "(unnamed)" : mesh.name,
+                                    kind == GroupKind::Cells ? "cell" : "node", name));
+    return groups.get(name);
+}
+
 int Mesh::addCell(CellType type, std::span<const int> nodes, std::string cellName) {
     int index = cellCount();
     cellTypes.push_back(type);

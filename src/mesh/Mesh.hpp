@@ -66,4 +66,12 @@ private:
     mutable std::unordered_map<std::string, int> nodeIndex_, cellIndex_;
 };
 
+// The members of the cell group (GROUP_MA) or node group (GROUP_NO) `name` that a command names
+// under `keyword` (its path, e.g. "AFFE[1]/GROUP_MA"). A name the mesh does not hold is a
+// UserError "<keyword>: the mesh M has no cell group 'G'", as code_aster refuses it (MODELISA7:
+// "le GROUP_MA G ne fait pas partie du maillage M").
+enum class GroupKind { Cells, Nodes };
+const std::vector<int>& namedGroup(const Mesh& mesh, GroupKind kind, const std::string& name,
+                                   const std::string& keyword);
+
 }  // namespace ma

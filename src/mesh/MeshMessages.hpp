@@ -21,8 +21,21 @@ inline constexpr Message<std::string, int, std::string, std::string> MODELISA4_8
 // VERI_MAIL: the file, the count, the first one.
 inline constexpr Message<std::string, long, std::string> MODELISA_VERI_MAIL_ORPHAN_NODES{
     "MODELISA_VERI_MAIL", "mesh {}: {} nodes belong to no cell (first one: {})"};
-inline constexpr Message<std::string, int, std::string> MODELISA_VERI_MAIL_REPEATED_NODE{
-    "MODELISA_VERI_MAIL", "mesh {}: {} cells have the same node twice (degenerate cells; first one: {})"};
+// VERI_MAIL: the file, the count, the first pairs / cells.
+inline constexpr Message<std::string, size_t, std::string> MODELISA8_13{
+    "MODELISA8_13",
+    "mesh {}: {} pair(s) of cells have the same nodes (double cells): {}; the domain is counted twice there (a "
+    "heavier, stiffer model), and a cell replaced by a copy of its neighbour leaves a hole"};
+// VERI_MAIL/VERIF='NON': the file.
+inline constexpr Message<std::string> MODELISA5_49{
+    "MODELISA5_49",
+    "mesh {}: VERI_MAIL/VERIF='NON': nodes of no cell, cells with a repeated node, double cells and flat cells are "
+    "not looked for (the coordinates and the cells' Jacobians still are)"};
+// VERI_MAIL: the file, the count, APLAT, the first cells with their ratio.
+inline constexpr Message<std::string, size_t, double, std::string> MODELISA8_15{
+    "MODELISA8_15",
+    "mesh {}: {} cell(s) have nearly coincident nodes, their shortest distance between two nodes below APLAT = {} "
+    "times their longest: {}"};
 
 // FORMAT='MED' without NOM_MED: the count, the mesh read.
 inline constexpr Message<size_t, std::string> MED_MULTI{
@@ -59,7 +72,9 @@ inline constexpr MessageText meshMessages[] = {
     entry(MODELISA5_8),
     entry(MODELISA4_80),
     entry(MODELISA_VERI_MAIL_ORPHAN_NODES),
-    entry(MODELISA_VERI_MAIL_REPEATED_NODE),
+    entry(MODELISA5_49),
+    entry(MODELISA8_13),
+    entry(MODELISA8_15),
     entry(MED_MULTI),
     entry(MAILLAGE_ORIENTATION),
     entry(MAILLAGE1_1),

@@ -2,10 +2,7 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <map>
-
-#include "mesh/MeshMessages.hpp"
 
 namespace ma {
 
@@ -25,28 +22,6 @@ std::string meshSummary(const Mesh& mesh, const std::string& meshName) {
     groups(mesh.cellGroups, "NOMBRE DE GROUPES DE MAILLES");
     s += std::string(80, '-') + "\n";
     return s;
-}
-
-std::vector<FormattedMessage> meshDefects(const Mesh& mesh, const std::string& path) {
-    std::vector<FormattedMessage> out;
-    std::vector<char> used(size_t(mesh.nodeCount()), 0);
-    for (int v : mesh.connectivity) used[size_t(v)] = 1;
-    const auto orphans = std::count(used.begin(), used.end(), 0);
-    if (orphans > 0) {
-        int first = int(std::find(used.begin(), used.end(), 0) - used.begin());
-        out.push_back(formatted(MODELISA_VERI_MAIL_ORPHAN_NODES, path, orphans, mesh.nodeNames[size_t(first)]));
-    }
-    int repeated = 0;
-    std::string example;
-    for (int c = 0; c < mesh.cellCount(); ++c) {
-        const auto n = mesh.cellNodes(c);
-        bool twice = false;  // pairwise: cells have at most 27 nodes
-        for (size_t i = 1; i < n.size() && !twice; ++i)
-            for (size_t j = 0; j < i && !twice; ++j) twice = n[i] == n[j];
-        if (twice && repeated++ == 0) example = mesh.cellNames[size_t(c)];
-    }
-    if (repeated > 0) out.push_back(formatted(MODELISA_VERI_MAIL_REPEATED_NODE, path, repeated, example));
-    return out;
 }
 
 }  // namespace ma

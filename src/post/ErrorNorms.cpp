@@ -40,12 +40,11 @@ struct Batches {
 // Cells of `group` that carry an element of the model.
 std::vector<int> groupElements(const Model& model, const std::string& group) {
     const Mesh& mesh = *model.mesh;
-    if (!mesh.cellGroups.has(group))
-        throw UserError(fmt::format("GROUP_MA: group {} is not in mesh {}", group, mesh.name));
+    const auto& members = namedGroup(mesh, GroupKind::Cells, group, "GROUP_MA");
     std::vector<char> inModel(size_t(mesh.cellCount()), 0);
     for (const auto& e : model.elements) inModel[size_t(e.cell)] = 1;
     std::vector<int> out;
-    for (int c : mesh.cellGroups.get(group))
+    for (int c : members)
         if (inModel[size_t(c)]) out.push_back(c);
     if (out.empty()) throw UserError(fmt::format("GROUP_MA: group {} has no element of model {}", group, model.name));
     return out;

@@ -41,12 +41,11 @@ std::vector<int> nodeList(const Mesh& mesh, const NodalField& f, const std::vect
     std::vector<int> candidates;
     for (const auto& n : a.nodes) {
         const int i = mesh.findNode(n);
-        if (i < 0) throw UserError(fmt::format("NOEUD: node {} is not in mesh {}", n, mesh.name));
+        if (i < 0) throw UserError(fmt::format("{}/NOEUD: the mesh {} has no node '{}'", a.keywordPath, mesh.name, n));
         candidates.push_back(i);
     }
     for (const auto& g : a.nodeGroups) {
-        if (!mesh.nodeGroups.has(g)) throw UserError(fmt::format("GROUP_NO: group {} is not in mesh {}", g, mesh.name));
-        const auto& members = mesh.nodeGroups.get(g);
+        const auto& members = namedGroup(mesh, GroupKind::Nodes, g, a.keywordPath + "/GROUP_NO");
         candidates.insert(candidates.end(), members.begin(), members.end());
     }
     std::vector<unsigned char> seen(size_t(mesh.nodeCount()), 0);

@@ -13,6 +13,7 @@ namespace ma {
 // One ACTION occurrence, with its field(s) already resolved.
 struct NodalExtraction {
     std::string title;                    // INTITULE
+    std::string keywordPath = "ACTION";   // the occurrence, for messages
     std::vector<std::string> nodes;       // NOEUD
     std::vector<std::string> nodeGroups;  // GROUP_NO
     // RESULTAT + NOM_CHAM: the steps to read, in the requested order ...

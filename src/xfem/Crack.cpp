@@ -9,6 +9,7 @@
 
 #include "core/Error.hpp"
 #include "mesh/ElementGeometry.hpp"
+#include "mesh/PointLocation.hpp"
 #include "mesh/ShapeFunctions.hpp"
 #include "xfem/CellGeometry.hpp"
 
@@ -58,17 +59,52 @@ std::vector<std::array<double, 3>> nodalGradient(const Mesh& mesh, const std::ve
     return grad;
 }
 
+std::string pointText(const JunctionInput& in, int dim) {
+    return dim == 3 ? fmt::format("({:g}, {:g}, {:g})", in.point[0], in.point[1], in.point[2])
+                    : fmt::format("({:g}, {:g})", in.point[0], in.point[1]);
+}
+
+std::string boxText(const Mesh& mesh) {
+    std::string s;
+    for (int j = 0; j < mesh.dim; ++j) {
+        double lo = INFINITY, hi = -INFINITY;
+        for (const auto& x : mesh.coords) lo = std::min(lo, x[size_t(j)]), hi = std::max(hi, x[size_t(j)]);
+        s += fmt::format("{}[{:g}, {:g}]", j ? " x " : "", lo, hi);
+    }
+    return s;
+}
+
+// The side of POINT (§2.1): the sign of the master's level set interpolated at the point, in the
+// cell containing it. code_aster takes the sign at the mesh node nearest to POINT (xinlsj), which
+// is the other side, or on the interface, for a point within half a cell of it; the interpolated
+// value is the point's own side. A value within kSnapTolerance of the level set's variation
+// across that cell (its size in level-set units) is on the interface: no side.
+double sideAtPoint(const Mesh& mesh, const PointInCell& at, const Crack& master, const JunctionInput& in) {
+    const double value = interpolateAt(mesh, at, master.lsn);
+    double lo = INFINITY, hi = -INFINITY;
+    for (int n : mesh.cellNodes(at.cell))
+        lo = std::min(lo, master.lsn[size_t(n)]), hi = std::max(hi, master.lsn[size_t(n)]);
+    const double tolerance = kSnapTolerance * (hi - lo);
+    if (!(std::abs(value) > tolerance))
+        throw UserError(fmt::format(
+            "{}/POINT={}: the level set of the master interface {} is {:g} at that point (interpolated in cell {} "
+            "({}) containing it): the point lies on that interface. POINT must lie strictly on one side of {}, "
+            "the side where this interface exists: |LSN| above {:g} there ({:g} times the level set's variation "
+            "across the cell)",
+            in.keywordPath, pointText(in, mesh.dim), master.name, value, mesh.cellNames[size_t(at.cell)],
+            cellTypeName(mesh.cellTypes[size_t(at.cell)]), master.name, tolerance, kSnapTolerance));
+    return value > 0 ? -1.0 : 1.0;
+}
+
 // JONFISS/JONCOEF of a branch (§2.1, §2.2).
 std::vector<JunctionMaster> junctionMasters(const Mesh& mesh, const JunctionInput& in) {
-    // Node closest to POINT (ties: first node).
-    int closest = -1;
-    double best = std::numeric_limits<double>::infinity();
-    for (int n = 0; n < mesh.nodeCount(); ++n) {
-        double d2 = 0;
-        for (int j = 0; j < 3; ++j) d2 += (mesh.coords[n][j] - in.point[j]) * (mesh.coords[n][j] - in.point[j]);
-        if (d2 < best) best = d2, closest = n;
-    }
-    if (closest < 0) throw UserError(in.keywordPath + ": the mesh has no node");
+    const PointInCell at = locatePoint(mesh, in.point);
+    if (at.cell < 0)
+        throw UserError(
+            fmt::format("{}/POINT={}: the point lies in no cell of mesh {} (bounding box {}); POINT must "
+                        "lie inside the mesh, strictly on the side of each master interface where this "
+                        "interface exists",
+                        in.keywordPath, pointText(in, mesh.dim), mesh.name, boxText(mesh)));
     std::vector<JunctionMaster> out;
     auto contains = [&](const Crack* c) {
         return std::any_of(out.begin(), out.end(), [&](const JunctionMaster& m) { return m.crack.get() == c; });
@@ -81,14 +117,8 @@ std::vector<JunctionMaster> junctionMasters(const Mesh& mesh, const JunctionInpu
         for (const auto& other : in.masters)
             if (other != master && other->hasMaster(master.get())) inherited = true;
         if (inherited) continue;
-        const double value = master->lsn[closest];
-        if (value == 0.0)
-            throw UserError(
-                fmt::format("{}/POINT: the mesh node {} closest to POINT=({}, {}, {}) lies on the interface of the "
-                            "master crack {} (LSN = 0); POINT must designate one side of the master interface",
-                            in.keywordPath, mesh.nodeNames[closest], in.point[0], in.point[1], in.point[2],
-                            master->name));
-        if (!contains(master.get())) out.push_back({master, value > 0 ? -1.0 : 1.0, true});
+        const double coef = sideAtPoint(mesh, at, *master, in);
+        if (!contains(master.get())) out.push_back({master, coef, true});
         for (const auto& chained : master->masters)
             if (!contains(chained.crack.get())) out.push_back({chained.crack, chained.coef, false});
     }

@@ -53,7 +53,8 @@ int snapLevelSet(const Mesh& mesh, std::vector<double>& lsn);
 
 // Builds a crack from its (unsnapped) nodal level set: snapping, gradient, cut cells, node
 // status with the junction correction, Heaviside cells. UserError when the interface does not
-// cut the mesh or when POINT lies on a master interface.
+// cut the mesh, when POINT lies in no cell or on a master interface (the master's level set
+// interpolated at POINT, which also gives the side).
 std::shared_ptr<Crack> buildCrack(const std::shared_ptr<const Mesh>& mesh, std::vector<double> lsn,
                                   const JunctionInput* junction);
 

@@ -70,8 +70,8 @@ TEST(MedCli, BadMeshFilesAndGroupsStopTheRunWithStatus1) {
                 "   CREA_GROUP_NO=_F(GROUP_MA='SD'))\nIMPR_RESU(FORMAT='MED', RESU=_F(MAILLAGE=MA))\nFIN()\n",
                 ma::test::astest("ssnv511a.mmed"));
     EXPECT_EQ(r.status, 1);
-    EXPECT_NE(r.mess.find("DEFI_GROUP (case.comm, line 3): CREA_GROUP_NO[1]/GROUP_MA: the cell group 'SD' does not "
-                          "exist in mesh MA"),
+    EXPECT_NE(r.mess.find("DEFI_GROUP (case.comm, line 3): CREA_GROUP_NO[1]/GROUP_MA: the mesh MA has no cell group "
+                          "'SD'"),
               std::string::npos)
         << r.mess;
     EXPECT_FALSE(std::filesystem::exists(dir + "/fort.80"));  // the run stopped before IMPR_RESU

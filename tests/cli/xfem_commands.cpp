@@ -56,14 +56,25 @@ TEST(XfemCommands, MasterMustComeFirst) {
 }
 
 TEST(XfemCommands, PointOnTheMasterInterface) {
-    // FISS1 through the node row y = 1; POINT's closest node (1, 1) lies on it.
-    const auto r = runComm(head("Y-1") +
-                               "FISS2 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', "
-                               "DEFI_FISS=_F(FONC_LN=LN2), JONCTION=_F(FISSURE=FISS1, POINT=(0.9, 1.2)))\n"
-                               "FIN()\n",
-                           kMesh);
+    // FISS1 through the node row y = 1: POINT=(0.9, 1) lies on it; (0.9, 1.2), whose closest node
+    // (1, 1) lies on it, is above it (the side is the level set's at the point, tests/cli/input_checks.cpp).
+    auto run = [](const std::string& point) {
+        return runComm(head("Y-1") +
+                           "FISS2 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', "
+                           "DEFI_FISS=_F(FONC_LN=LN2), JONCTION=_F(FISSURE=FISS1, POINT=" +
+                           point + "))\nFIN()\n",
+                       kMesh);
+    };
+    auto r = run("(0.9, 1.0)");
     EXPECT_EQ(r.status, 1) << r.output;
-    EXPECT_NE(r.output.find("lies on the interface of the master crack FISS1"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("JONCTION[1]/POINT=(0.9, 1): the level set of the master interface FISS1 is 0 at that "
+                            "point"),
+              std::string::npos)
+        << r.output;
+    r = run("(0.9, 1.2)");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("junction on FISS1: the interface exists where -1 * LSN(FISS1) < 0"), std::string::npos)
+        << r.output;
 }
 
 TEST(XfemCommands, OutsideAndUnsupported) {

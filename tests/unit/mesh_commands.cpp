@@ -314,12 +314,12 @@ TEST_F(MeshCommands, MissingOrExistingGroupsAreUserErrors) {
     occ.setValues("NOM", {std::string("X")});
     occ.setValues("INTERSEC", {std::string("LB"), std::string("NOPE")});
     EXPECT_EQ(errorOf([&] { call("DEFI_GROUP", kw, m); }),
-              "CREA_GROUP_MA[1]/INTERSEC: the cell group 'NOPE' does not exist in mesh MAILLAG");
+              "CREA_GROUP_MA[1]/INTERSEC: the mesh MAILLAG has no cell group 'NOPE'");
 
     KeywordSet no = withMesh(m);
     no.addOccurrence("CREA_GROUP_NO").setValues("GROUP_MA", {std::string("SURF"), std::string("ABSENT")});
     EXPECT_EQ(errorOf([&] { call("DEFI_GROUP", no, m); }),
-              "CREA_GROUP_NO[1]/GROUP_MA: the cell group 'ABSENT' does not exist in mesh MAILLAG");
+              "CREA_GROUP_NO[1]/GROUP_MA: the mesh MAILLAG has no cell group 'ABSENT'");
 
     KeywordSet twice = withMesh(m);
     auto& t = twice.addOccurrence("CREA_GROUP_MA");

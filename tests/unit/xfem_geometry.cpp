@@ -217,8 +217,16 @@ TEST(XfemCrack, Errors) {
     auto f1 = buildCrack(mesh, levelSet(*mesh, [](double, double y, double) { return y - 1; }), nullptr);
     JunctionInput in;
     in.masters = {f1};
-    in.point = {0.1, 1.2, 0};  // closest node (1, 1) lies on FISS1
-    EXPECT_THROW(buildCrack(mesh, levelSet(*mesh, [](double x, double, double) { return x; }), &in), UserError);
+    auto lsn2 = [&] { return levelSet(*mesh, [](double x, double, double) { return x; }); };
+    in.point = {0.1, 1.0, 0};  // on FISS1
+    EXPECT_THROW(buildCrack(mesh, lsn2(), &in), UserError);
+    in.point = {0.1, 5.5, 0};  // outside the mesh
+    EXPECT_THROW(buildCrack(mesh, lsn2(), &in), UserError);
+    // Above FISS1, though its closest node (1, 1) lies on it: the side is the level set's at the point.
+    in.point = {0.1, 1.2, 0};
+    const auto branch = buildCrack(mesh, lsn2(), &in);
+    ASSERT_EQ(branch->masters.size(), 1u);
+    EXPECT_EQ(branch->masters[0].coef, -1.0);
 }
 
 TEST(XfemModel, Ssnv511QuadSlotsAndSubcells) {
