@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <regex>
 #include <sstream>
 
@@ -69,8 +70,10 @@ for typ, val in (('MIN', -3.e-3), ('MAX', 7.e-3), ('SOMM', 0.072), ('SOMM_ABS', 
     TEST_RESU(RESU=_F(RESULTAT=U, NUME_ORDRE=1, NOM_CHAM='DEPL', TYPE_TEST=typ, NOM_CMP='DX', VALE_CALC=val,
                       REFERENCE='ANALYTIQUE', VALE_REFE=val, PRECISION=1e-12),
               CHAM_NO=_F(CHAM_GD=UN, TYPE_TEST=typ, NOM_CMP='DX', VALE_CALC=val))
-TEST_RESU(RESU=_F(RESULTAT=U, INST=0., NOM_CHAM='DEPL', TYPE_TEST='SOMM_ABS', VALE_CALC=0.336,
-                  REFERENCE='ANALYTIQUE', VALE_REFE=0.336, PRECISION=1e-12),
+TEST_RESU(RESU=(_F(RESULTAT=U, INST=0., NOM_CHAM='DEPL', TYPE_TEST='SOMM_ABS', VALE_CALC=0.336,
+                   REFERENCE='ANALYTIQUE', VALE_REFE=0.336, PRECISION=1e-12),
+                _F(RESULTAT=U, NUME_ORDRE=1, NOM_CHAM='DEPL', TYPE_TEST='MAX', NOM_CMP='DY', GROUP_NO='P1',
+                   VALE_CALC=1.e-2)),
           CHAM_NO=_F(CHAM_GD=UN, TYPE_TEST='SOMM', VALE_CALC=0.072))
 )");
     ASSERT_EQ(r.status, 0) << r.output;
@@ -91,10 +94,15 @@ TEST_RESU(RESU=_F(RESULTAT=U, INST=0., NOM_CHAM='DEPL', TYPE_TEST='SOMM_ABS', VA
     EXPECT_NEAR(sumAbs, 0.120, 1e-14);
     EXPECT_NEAR(all, 0.336, 1e-14);
     const std::string resu = r.file("out/t.resu");
-    EXPECT_EQ(count(resu, "\n OK   NON_REGRESSION"), 10) << resu;
+    EXPECT_EQ(count(resu, "\n OK   NON_REGRESSION"), 11) << resu;
     EXPECT_EQ(count(resu, "\n OK   ANALYTIQUE"), 5) << resu;
     EXPECT_EQ(count(resu, "NOOK"), 0) << resu;
     EXPECT_NE(r.output.find("reference checks                 5        0      0"), std::string::npos) << r.output;
+    // TYPE_TEST with a place: the place is ignored, with code_aster's alarm.
+    EXPECT_NE(r.output.find("<A> <CALCULEL6_96>"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("RESU[2]: TYPE_TEST tests a quantity computed over the whole field; GROUP_NO is not taken"),
+              std::string::npos)
+        << r.output;
 }
 
 // One value at a node (NOEUD, GROUP_NO of one node) and at an integration point (MAILLE + POINT),
@@ -223,4 +231,36 @@ TEST_RESU(RESU=_F(RESULTAT=U, NUME_ORDRE=1, PARA='ITER_GLOB', VALE_CALC_I=1))
     EXPECT_NE(r.output.find("miniaster's results store no parameters to test, only fields"), std::string::npos)
         << r.output;
     EXPECT_EQ(r.output.find("MECA_STATIQUE (t.comm"), std::string::npos) << "refused before the solve";
+}
+
+// The enriched components of an X-FEM result, as code_aster's DEPL holds them: ssnv173f's two blocks
+// on either side of the interface Y = 2.5, the lower one fixed, the upper one moved by DEPY = 1e-6,
+// open by DEPY: H1Y, half the jump, is DEPY / 2 at the most; N1 (a corner, far from the interface)
+// carries no H1Y.
+TEST(TestResu, EnrichedComponentsOfAnXfemResult) {
+    std::ifstream in(std::string(MINIASTER_SHARED_DIR) + "/astest/ssnv173f.comm");
+    std::stringstream original;
+    original << in.rdbuf();
+    const std::string text = original.str();
+    const auto end = text.find("MA_XFEM=POST_MAIL_XFEM");
+    ASSERT_NE(end, std::string::npos);
+    const std::string mesh = std::string("--mesh '") + MINIASTER_SHARED_DIR + "/astest/ssnv173f.mmed'";
+    auto r = runComm(text.substr(0, end) + R"(
+TEST_RESU(RESU=_F(RESULTAT=UTOT1, NUME_ORDRE=1, NOM_CHAM='DEPL', TYPE_TEST='MAX', NOM_CMP='H1Y', VALE_CALC=5.e-7,
+                  REFERENCE='ANALYTIQUE', VALE_REFE=5.e-7, PRECISION=1e-9))
+FIN()
+)",
+                     mesh);
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.file("out/t.resu").find("\n OK   ANALYTIQUE       XXXX             5E-07 "), std::string::npos)
+        << r.file("out/t.resu");
+    auto bad = runComm(text.substr(0, end) + R"(
+TEST_RESU(RESU=_F(RESULTAT=UTOT1, NUME_ORDRE=1, NOM_CHAM='DEPL', NOEUD='N1', NOM_CMP='H1Y', VALE_CALC=5.e-7))
+FIN()
+)",
+                       mesh);
+    EXPECT_EQ(bad.status, 1) << bad.output;
+    EXPECT_NE(bad.output.find("RESU[1]: node N1 does not carry component H1Y in this field (code_aster CALCULEL6_93)"),
+              std::string::npos)
+        << bad.output;
 }
