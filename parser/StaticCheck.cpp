@@ -17,7 +17,7 @@ namespace {
 
 // The syntax-tree walk. `catalog`: command -> (level, accepts context keywords); a level maps
 // each keyword name to (supported, sub-level of a factor keyword or None, check of its literal
-// values or None). Returns [(line, command, cause)] in line order.
+// values or None; for an unsupported keyword, the reason it is refused). Returns [(line, command, cause)] in line order.
 const char* kChecker = R"PY(
 import ast
 
@@ -61,7 +61,12 @@ def _literal(node):
     return items if ok and items else None
 
 def _check_value(kw, path, command, line, level, problems):
-    checker = level[kw.arg][2]
+    supported, _, checker = level[kw.arg]
+    if not supported:  # checker: the reason, as the run gives it; None stands for an absent keyword
+        if not (isinstance(kw.value, ast.Constant) and kw.value.value is None):
+            problems.append(
+                (line, command, "keyword %s is not supported by miniaster (%s)" % (path, checker)))
+        return
     items = _literal(kw.value) if checker is not None else None
     cause = checker(items, path) if items is not None else ""
     if cause:
@@ -145,9 +150,11 @@ void addLevel(const std::vector<cata::Keyword>& content, py::dict& level) {
             addLevel(k.content, level);
             continue;
         }
+        const bool supported = k.kind != cata::Keyword::Kind::Unsupported;
         if (level.contains(k.name.c_str())) {
             py::tuple seen = level[k.name.c_str()];
-            level[k.name.c_str()] = py::make_tuple(seen[0], seen[1], py::none());
+            const bool either = seen[0].cast<bool>() || supported;
+            level[k.name.c_str()] = py::make_tuple(either, seen[1], either ? py::object(py::none()) : seen[2]);
             continue;
         }
         py::object sub = py::none();
@@ -156,7 +163,8 @@ void addLevel(const std::vector<cata::Keyword>& content, py::dict& level) {
             addLevel(k.content, d);
             sub = d;
         }
-        level[k.name.c_str()] = py::make_tuple(k.kind != cata::Keyword::Kind::Unsupported, sub, valueChecker(k));
+        // An unsupported keyword carries its reason instead of a value check.
+        level[k.name.c_str()] = py::make_tuple(supported, sub, supported ? valueChecker(k) : py::str(k.why));
     }
 }
 

@@ -38,6 +38,7 @@ void POST_MAIL_XFEM(Catalog&);
 void POST_RELEVE_T(Catalog&);
 void PRE_GIBI(Catalog&);
 void STAT_NON_LINE(Catalog&);
+void TEST_RESU(Catalog&);
 void TEST_TABLE(Catalog&);
 
 struct CommandFile {
@@ -76,6 +77,7 @@ inline const std::vector<CommandFile>& commandFiles() {
         {"POST_RELEVE_T", POST_RELEVE_T},
         {"PRE_GIBI", PRE_GIBI},
         {"STAT_NON_LINE", STAT_NON_LINE},
+        {"TEST_RESU", TEST_RESU},
         {"TEST_TABLE", TEST_TABLE},
     };
     return files;

@@ -15,6 +15,9 @@ inline constexpr Message<> TEST0_12{
     "TEST0_12",
     "The non-regression value (VALE_CALC) is zero or below the machine precision: the check is skipped (SKIP).\n"
     "Give ORDRE_GRANDEUR with CRITERE='ABSOLU' to make it effective."};
+// TEST_RESU with TYPE_TEST: the occurrence's keyword path, the place keywords it ignores.
+inline constexpr Message<std::string, std::string> CALCULEL6_96{
+    "CALCULEL6_96", "{}: TYPE_TEST tests a quantity computed over the whole field; {} is not taken into account."};
 
 // IMPR_TABLE: the missing columns, the table.
 inline constexpr Message<std::string, std::string> TABLE0_7{
@@ -36,8 +39,8 @@ inline constexpr Message<std::string, std::string, size_t, std::string> ALGELINE
     "linear cells)"};
 
 inline constexpr MessageText postMessages[] = {
-    entry(TEST0_11),    entry(TEST0_12),    entry(TABLE0_7),    entry(RESULT1_6),
-    entry(PREPOST6_35), entry(PREPOST2_59), entry(ALGELINE_64),
+    entry(TEST0_11),  entry(TEST0_12),    entry(CALCULEL6_96), entry(TABLE0_7),
+    entry(RESULT1_6), entry(PREPOST6_35), entry(PREPOST2_59),  entry(ALGELINE_64),
 };
 
 }  // namespace ma

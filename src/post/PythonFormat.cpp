@@ -68,4 +68,13 @@ std::string printfReal(const char* format, double x) {
     return buf;
 }
 
+std::string ljust(const std::string& s, size_t width) {
+    return s.size() >= width ? s : s + std::string(width - s.size(), ' ');
+}
+
+std::string rstrip(std::string s) {
+    while (!s.empty() && s.back() == ' ') s.pop_back();
+    return s;
+}
+
 }  // namespace ma

@@ -3,6 +3,7 @@
 // TEST_TABLE lines use Python 3's repr of a float (shortest round-trip digits); IMPR_TABLE uses
 // C/Python '%12.5E'. Reproducing these byte for byte is what lets users diff our .resu with
 // code_aster's.
+#include <cstddef>
 #include <string>
 
 namespace ma {
@@ -18,5 +19,9 @@ std::string testValueText(double x);
 // C printf of one double with a format such as "%12.5E" or "%13.6e" (the formats code_aster's
 // printers use; Python's %-operator follows C for these).
 std::string printfReal(const char* format, double x);
+
+// Python's str.ljust(width) and str.rstrip(' '): the padding of code_aster's printed columns.
+std::string ljust(const std::string& s, size_t width);
+std::string rstrip(std::string s);
 
 }  // namespace ma

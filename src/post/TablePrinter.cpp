@@ -11,7 +11,6 @@
 namespace ma {
 namespace {
 
-std::string ljust(const std::string& s, size_t w) { return s.size() >= w ? s : s + std::string(w - s.size(), ' '); }
 std::string rjust(const std::string& s, size_t w) { return s.size() >= w ? s : std::string(w - s.size(), ' ') + s; }
 
 // Width of the printf real format: that of 0 written with it ("%12.5E" -> 12, " %12.5E" -> 13).

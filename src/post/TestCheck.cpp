@@ -12,15 +12,10 @@
 #include "core/Messages.hpp"
 #include "post/PostMessages.hpp"
 #include "post/PythonFormat.hpp"
+#include "post/TestHeader.hpp"
 
 namespace ma {
 namespace {
-
-std::string ljust(const std::string& s, size_t w) { return s.size() >= w ? s : s + std::string(w - s.size(), ' '); }
-std::string rstrip(std::string s) {
-    while (!s.empty() && s.back() == ' ') s.pop_back();
-    return s;
-}
 
 const char* kindName(ColumnType::Kind k) {
     switch (k) {
@@ -276,8 +271,6 @@ CheckOutput formatCheck(const CheckInput& in) {
     return out;
 }
 
-namespace {
-
 Reduction reductionOf(const std::string& typeTest) {
     if (typeTest.empty()) return Reduction::None;
     if (typeTest == "MIN") return Reduction::Min;
@@ -287,18 +280,15 @@ Reduction reductionOf(const std::string& typeTest) {
     throw UserError("TYPE_TEST: unknown value '" + typeTest + "' (MIN, MAX, SOMM, SOMM_ABS)");
 }
 
+namespace {
+
 Cell absolute(const Cell& c) {
     if (auto* d = std::get_if<double>(&c)) return std::abs(*d);
     if (auto* i = std::get_if<long long>(&c)) return *i < 0 ? -*i : *i;
     return c;
 }
 
-std::string describe(const TestTableRequest& rq, const CheckInput& in, const CheckOutput& out) {
-    std::string what =
-        fmt::format("{} {} {}{}{}", rq.where, rq.tableName, rq.column, rq.typeTest.empty() ? "" : " ", rq.typeTest);
-    for (const auto& f : rq.filters)
-        what += fmt::format(" [{} {}{}{}]", f.column, f.comparison, isEmpty(f.value) ? "" : " ",
-                            isEmpty(f.value) ? std::string() : describeCell(f.value));
+std::string describe(const std::string& what, const CheckInput& in, const CheckOutput& out) {
     if (out.status == TestLine::Status::Skip) return what + ": skipped (VALE_CALC is zero, no ORDRE_GRANDEUR)";
     auto trimmed = [](const std::string& t) { return t.substr(std::min(t.find_first_not_of(' '), t.size())); };
     return fmt::format("{}: computed {}, expected {}, error {} {} tolerance {}", what, describeCell(in.computed),
@@ -306,42 +296,40 @@ std::string describe(const TestTableRequest& rq, const CheckInput& in, const Che
                        out.status == TestLine::Status::Ok ? "<=" : ">", out.shownTolerance);
 }
 
+std::string describeTable(const TestTableRequest& rq) {
+    std::string what =
+        fmt::format("{} {} {}{}{}", rq.where, rq.tableName, rq.column, rq.typeTest.empty() ? "" : " ", rq.typeTest);
+    for (const auto& f : rq.filters)
+        what += fmt::format(" [{} {}{}{}]", f.column, f.comparison, isEmpty(f.value) ? "" : " ",
+                            isEmpty(f.value) ? std::string() : describeCell(f.value));
+    return what;
+}
+
 }  // namespace
 
-std::vector<TestLine> runTestTable(const Table& table, const TestTableRequest& rq) {
-    if (rq.calc.empty()) throw UserError("TEST_TABLE needs VALE_CALC (or VALE_CALC_I, VALE_CALC_K)");
-    msg().result("\n" + std::string(80, '-') + "\n");
-
-    const ColumnType::Kind kind = kindOf(rq.calc.front());
+CheckScale checkScale(const TestChecks& rq) {
+    if (rq.calc.empty()) throw UserError("VALE_CALC (or VALE_CALC_I, VALE_CALC_K) is needed");
     const bool hasReference = !rq.legacyVale && rq.reference.has_value();
     if (hasReference && rq.refe.size() != rq.calc.size())
         throw UserError(fmt::format("REFERENCE given: VALE_REFE needs as many values as VALE_CALC ({} and {})",
                                     rq.refe.size(), rq.calc.size()));
-    double order = 1.0;
-    bool skip = false;
-    if (!rq.legacyVale && kind == ColumnType::Real && std::abs(std::get<double>(rq.calc.front())) <= DBL_EPSILON) {
-        if (rq.orderOfMagnitude) order = *rq.orderOfMagnitude;
-        else skip = true;
+    CheckScale scale;
+    if (!rq.legacyVale && kindOf(rq.calc.front()) == ColumnType::Real &&
+        std::abs(std::get<double>(rq.calc.front())) <= DBL_EPSILON) {
+        if (rq.orderOfMagnitude) scale.order = *rq.orderOfMagnitude;
+        else scale.skip = true;
     }
-    if (skip && !hasReference) msg().alarm(TEST0_11);
+    if (scale.skip && !hasReference) msg().alarm(TEST0_11);
+    return scale;
+}
 
-    std::string h1 = ljust("---- TABLE", 21) + ljust(" NOM_PARA", 17);
-    std::string h2 = ljust("     " + ljust(rq.tableName, 8), 21) + ljust(" " + rq.column.substr(0, 16), 17);
-    if (!rq.typeTest.empty()) {
-        h1 += " TYPE_TEST";
-        h2 += " " + rq.typeTest;
-    }
-    msg().result(" " + rstrip(h1) + "\n " + rstrip(h2) + "\n");
-
-    const Reduction reduction = reductionOf(rq.typeTest);
-    const std::vector<size_t> rows = filterRowsForTest(table, rq.filters);
-    Cell computed = testedValue(table, rows, rq.column, reduction, kind);
-
+std::vector<TestLine> runChecks(const TestChecks& rq, const CheckScale& scale, const Cell& computed, bool closest,
+                                const std::string& what) {
     const std::string legend = sanitizeLegend(rq.legend.value_or("XXXX"));
     std::vector<TestLine> recorded;
     auto check = [&](const std::string& type, const std::vector<Cell>& expectedList, double tolerance, bool label,
                      bool skipLine, double og) {
-        const size_t pick = reduction == Reduction::None ? chooseExpected(expectedList, computed) : 0;
+        const size_t pick = closest ? chooseExpected(expectedList, computed) : 0;
         CheckInput in;
         in.reference = type;
         in.legend = legend;
@@ -364,7 +352,7 @@ std::vector<TestLine> runTestTable(const Table& table, const TestTableRequest& r
         CheckOutput out = formatCheck(in);
         if (skipLine) msg().alarm(TEST0_12);
         msg().result(out.text);
-        TestLine line{type, out.status, describe(rq, in, out)};
+        TestLine line{type, out.status, describe(what, in, out)};
         testReport().add(line);
         recorded.push_back(line);
     };
@@ -373,9 +361,26 @@ std::vector<TestLine> runTestTable(const Table& table, const TestTableRequest& r
         // VALE= (before 2012, §1.8): one check against VALE, tolerance PRECISION.
         check(rq.reference.value_or("NON_REGRESSION"), rq.calc, rq.precision, true, false, 1.0);
     } else {
-        check("NON_REGRESSION", rq.calc, rq.machineTolerance, true, skip, order);
-        if (hasReference) check(*rq.reference, rq.refe, rq.precision, false, false, 1.0);
+        check("NON_REGRESSION", rq.calc, rq.machineTolerance, true, scale.skip, scale.order);
+        if (rq.reference) check(*rq.reference, rq.refe, rq.precision, false, false, 1.0);
     }
+    return recorded;
+}
+
+std::vector<TestLine> runTestTable(const Table& table, const TestTableRequest& rq) {
+    if (rq.calc.empty()) throw UserError("TEST_TABLE needs VALE_CALC (or VALE_CALC_I, VALE_CALC_K)");
+    msg().result("\n" + std::string(80, '-') + "\n");
+    const CheckScale scale = checkScale(rq);
+
+    TestHeader header("TABLE", rq.tableName);
+    header.add("NOM_PARA", rq.column);
+    if (!rq.typeTest.empty()) header.add("TYPE_TEST", rq.typeTest);
+    msg().result(header.text());
+
+    const Reduction reduction = reductionOf(rq.typeTest);
+    const std::vector<size_t> rows = filterRowsForTest(table, rq.filters);
+    const Cell computed = testedValue(table, rows, rq.column, reduction, kindOf(rq.calc.front()));
+    auto recorded = runChecks(rq, scale, computed, reduction == Reduction::None, describeTable(rq));
     msg().result("  \n");
     return recorded;
 }

@@ -55,12 +55,9 @@ std::string sanitizeLegend(const std::string& legend);
 // Among several expected values, the one tresu_print keeps (§1.3, including its quirk).
 size_t chooseExpected(const std::vector<Cell>& expected, const Cell& computed);
 
-// A whole TEST_TABLE call.
-struct TestTableRequest {
-    std::string tableName;  // printed in the header (legacy naming: DEPZON_1)
-    std::string column;     // NOM_PARA
-    std::string typeTest;   // MIN MAX SOMM SOMM_ABS, or empty
-    std::vector<TestFilter> filters;
+// The checks of one TEST_* occurrence (TEST_TABLE, TEST_RESU): the expected values and how they are
+// compared, whatever the tested value is.
+struct TestChecks {
     std::vector<Cell> calc;                  // VALE_CALC / _I / _K (or legacy VALE)
     std::vector<Cell> refe;                  // VALE_REFE / _I / _K
     bool legacyVale = false;                 // VALE= syntax (§1.8): one check against it, tolerance PRECISION
@@ -73,6 +70,32 @@ struct TestTableRequest {
     double precision = 1.0e-3;               // PRECISION
     std::string where;                       // "TEST_TABLE (.comm line 123)" for the registry descriptions
 };
+
+// A null VALE_CALC: the NON_REGRESSION check is scaled by ORDRE_GRANDEUR, or skipped.
+struct CheckScale {
+    double order = 1.0;
+    bool skip = false;
+};
+// Validates the expected values (as many VALE_REFE as VALE_CALC) and emits TEST0_11 for a skipped
+// non-regression check without reference, before the header is printed (as code_aster does).
+CheckScale checkScale(const TestChecks& checks);
+
+// Prints the NON_REGRESSION line and the reference line of one tested value to the result file and
+// records them in testReport(), described as `what`. `closest`: among several expected values, the
+// one tresu_print keeps (chooseExpected); otherwise the first.
+std::vector<TestLine> runChecks(const TestChecks& checks, const CheckScale& scale, const Cell& computed, bool closest,
+                                const std::string& what);
+
+// A whole TEST_TABLE call.
+struct TestTableRequest : TestChecks {
+    std::string tableName;  // printed in the header (legacy naming: DEPZON_1)
+    std::string column;     // NOM_PARA
+    std::string typeTest;   // MIN MAX SOMM SOMM_ABS, or empty
+    std::vector<TestFilter> filters;
+};
+
+// The TYPE_TEST keyword's reduction (None for an empty text).
+Reduction reductionOf(const std::string& typeTest);
 
 // Runs the checks, writes the report block to the result file (msg().result), emits the TEST0_11 /
 // TEST0_12 alarms and records every line in testReport(). Returns the recorded lines.
