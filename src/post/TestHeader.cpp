@@ -9,14 +9,16 @@ TestHeader::TestHeader(const std::string& kind, const std::string& name)
     fields_.emplace_back(kind == "TABLE" ? "TABLE" : kind == "RESULTAT" ? "RESULTAT" : "CHAM_GD", name);
 }
 
+// Pieces appended one by one: gcc 12's -Wrestrict misfires on operator+ chains of short strings.
 void TestHeader::add(const std::string& label, const std::string& value) {
-    labels_ += ljust(" " + label, 17);
-    values_ += ljust(" " + value.substr(0, 16), 17);
+    labels_.append(" ").append(ljust(label, 16));
+    values_.append(" ").append(ljust(value.substr(0, 16), 16));
     fields_.emplace_back(label, value);
 }
 
 std::string TestHeader::text(bool labelBlank) const {
-    return (labelBlank ? " " : "") + rstrip(labels_) + "\n " + rstrip(values_) + "\n";
+    std::string out = labelBlank ? " " : "";
+    return out.append(rstrip(labels_)).append("\n ").append(rstrip(values_)).append("\n");
 }
 
 std::string TestHeader::describe() const {
