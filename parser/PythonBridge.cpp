@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
+#include <set>
 #include <unistd.h>
 
 #include "core/Error.hpp"
@@ -287,6 +288,23 @@ void echoCommand(const CommandContext& ctx, const KeywordSet& kw, const py::dict
     }
 }
 
+// DETRUIRE: the names the command file gave these concepts leave its namespace (a later use is a
+// NameError, the name can be given again); the memory goes with the last reference, so a mesh a
+// result still uses stays until that result goes too.
+void destroyConcepts(const KeywordSet& kw, const py::object& frame) {
+    std::set<const Concept*> targets;
+    for (const auto& occ : kw.factor("CONCEPT"))
+        for (const auto& c : occ.objects<Concept>("NOM")) targets.insert(c.get());
+    py::dict globals = frame.attr("f_globals");
+    std::vector<std::string> names;
+    for (const auto& [key, value] : globals)
+        if (py::isinstance<ConceptHandle>(value) && targets.count(value.cast<ConceptHandle&>().object.get()))
+            names.push_back(key.cast<std::string>());
+    for (const auto& n : names) globals.attr("pop")(n);
+    msg().infof("    {} removed from the command file's names",
+                names.empty() ? "nothing" : fmt::format("{}", fmt::join(names, ", ")));
+}
+
 // Runs the validated call: DEBUT, FIN, FORMULE and PRE_GIBI here, the others through the registry
 // (or not at all with --check-syntax). Checks the result's type against the catalog.
 ConceptPtr execute(CommandContext& ctx, const KeywordSet& kw, const py::dict& context, py::object frame,
@@ -297,12 +315,19 @@ ConceptPtr execute(CommandContext& ctx, const KeywordSet& kw, const py::dict& co
     if (name == "DEBUT") {
         if (run.debutSeen) throw UserError("DEBUT is called twice");
         run.debutSeen = true;
+        if (kw.has("IGNORE_ALARM")) {
+            msg().ignoreAlarms(kw.texts("IGNORE_ALARM"));
+            msg().infof("    alarms {} are not printed (DEBUT/IGNORE_ALARM); their count is given at the end",
+                        fmt::join(kw.texts("IGNORE_ALARM"), ", "));
+        }
     } else if (name == "FIN") {
         run.finSeen = true;
         run.recordTiming(name, 0.0);
         throw EndOfRun{};
     } else if (name == "FORMULE") {
         result = makeFormula(kw, context, frame.attr("f_globals").cast<py::dict>(), ctx.line);
+    } else if (name == "DETRUIRE") {
+        if (!run.checkOnly) destroyConcepts(kw, frame);
     } else if (name == "PRE_GIBI") {
         msg().info("    PRE_GIBI is a no-op in miniaster: LIRE_MAILLAGE reads the MED mesh of unit " +
                    std::to_string(kw.integer("UNITE_MAILLAGE")) + " instead of a converted GIBI mesh");

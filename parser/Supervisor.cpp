@@ -354,6 +354,8 @@ int finishRun(const Options& opt, const RunState& run, RunOutputs& outputs) {
     const auto& tests = testReport();
     if (!tests.empty()) msg().info("\n" + tests.summary());
     msg().info(timingSummary(run));
+    for (const auto& [id, count] : msg().ignoredAlarms())
+        msg().infof("\n <I> alarm {} raised {} time(s), not printed (DEBUT/IGNORE_ALARM)", id, count);
     if (run.finSeen && !run.failure) msg().info("\n <I> <FIN> ARRET NORMAL DANS \"FIN\" PAR APPEL A \"JEFINI\".");
 
     std::string diagnostic;

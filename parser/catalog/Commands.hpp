@@ -23,6 +23,7 @@ void DEFI_FONCTION(Catalog&);
 void DEFI_GROUP(Catalog&);
 void DEFI_LIST_REEL(Catalog&);
 void DEFI_MATERIAU(Catalog&);
+void DETRUIRE(Catalog&);
 void FIN(Catalog&);
 void FORMULE(Catalog&);
 void IMPR_CO(Catalog&);
@@ -62,6 +63,7 @@ inline const std::vector<CommandFile>& commandFiles() {
         {"DEFI_GROUP", DEFI_GROUP},
         {"DEFI_LIST_REEL", DEFI_LIST_REEL},
         {"DEFI_MATERIAU", DEFI_MATERIAU},
+        {"DETRUIRE", DETRUIRE},
         {"FIN", FIN},
         {"FORMULE", FORMULE},
         {"IMPR_CO", IMPR_CO},

@@ -11,8 +11,10 @@ void DEBUT(Catalog& c) {
              .rules({auMoinsUn({"NIV_PUB_WEB", "NOM"})}),
          fact("DEBUG").keywords({yesNo("SDVERI"), yesNo("JEVEUX"), yesNo("JXVERI"), yesNo("HIST_ETAPE")}),
          // miniaster always runs command by command (code_aster's PAR_LOT='NON').
-         yesNo("PAR_LOT"), yesNo("IMPR_MACRO")},
-        unsupported({"BASE", "MEMOIRE", "RESERVE_CPU", "IGNORE_ALARM", "LANG", "ERREUR", "MESURE_TEMPS"},
+         yesNo("PAR_LOT"), yesNo("IMPR_MACRO"),
+         // alarms neither printed nor counted; their number is given at the end of the .mess
+         TXM("IGNORE_ALARM").many()},
+        unsupported({"BASE", "MEMOIRE", "RESERVE_CPU", "LANG", "ERREUR", "MESURE_TEMPS"},
                     "no effect in miniaster, remove it"),
     })));
 }

@@ -71,6 +71,30 @@ std::shared_ptr<const NodalField> restrictComponents(const NodalField& f, const 
     return out;
 }
 
+// The same for a field at Gauss points: every point kept, the NOM_CMP columns only.
+std::shared_ptr<const GaussField> restrictComponents(const GaussField& f, const KeywordSet& occ) {
+    auto out = std::make_shared<GaussField>(f);
+    out->components.clear();
+    std::vector<size_t> keep;
+    for (const auto& c : occ.texts("NOM_CMP"))
+        if (const int k = f.componentIndex(c); k >= 0) {
+            keep.push_back(size_t(k));
+            out->components.push_back(c);
+        }
+    if (keep.empty()) throw UserError(occ.pathOf("NOM_CMP") + ": none of these components is in the field");
+    const size_t nc = f.components.size();
+    out->values.assign(size_t(f.pointCount()) * keep.size(), 0.0);
+    for (size_t p = 0; p < size_t(f.pointCount()); ++p)
+        for (size_t j = 0; j < keep.size(); ++j) out->values[p * keep.size() + j] = f.values[p * nc + keep[j]];
+    return out;
+}
+
+void writeGauss(med::MedWriter& w, const std::string& name, const std::string& meshName, const GaussField& g,
+                const KeywordSet& occ, int numdt, int numit, double dt) {
+    if (occ.has("NOM_CMP")) w.writeGaussField(name, meshName, *restrictComponents(g, occ), numdt, numit, dt);
+    else w.writeGaussField(name, meshName, g, numdt, numit, dt);
+}
+
 void writeNodal(med::MedWriter& w, const std::string& name, const std::string& meshName, const NodalField& f,
                 const KeywordSet& occ, int numdt, int numit, double dt) {
     if (occ.has("NOM_CMP")) w.writeNodalField(name, meshName, *restrictComponents(f, occ), numdt, numit, dt);
@@ -94,7 +118,7 @@ void printResult(med::MedWriter& w, const Result& result, const KeywordSet& occ)
             if (auto f = step->nodal(nomCham)) {
                 writeNodal(w, medName, meshName, *f, occ, step->order, step->order, step->inst);
             } else if (auto g = step->gauss(nomCham)) {
-                w.writeGaussField(medName, meshName, *g, step->order, step->order, step->inst);
+                writeGauss(w, medName, meshName, *g, occ, step->order, step->order, step->inst);
             } else {
                 msg().alarm(RESULT1_6, occ.path(), nomCham, step->order, result.name);
                 continue;
@@ -116,7 +140,7 @@ void printField(med::MedWriter& w, const ConceptPtr& field, const KeywordSet& oc
         if (!g->mesh) throw UserError(occ.pathOf("CHAM_GD") + ": the field has no mesh");
         const std::string meshName = meshNameOf(*g->mesh);
         w.writeMesh(*g->mesh, meshName);
-        w.writeGaussField(g->name, meshName, *g, -1, -1, 0.0);
+        writeGauss(w, g->name, meshName, *g, occ, -1, -1, 0.0);
         msg().infof("    field {} printed", g->name);
     } else {
         throw UserError(occ.pathOf("CHAM_GD") + ": this kind of field cannot be printed in MED");

@@ -63,8 +63,17 @@ void Messages::emergency(const std::string& text) {
     }
 }
 
+void Messages::ignoreAlarms(const std::vector<std::string>& ids) {
+    std::lock_guard lock(mutex_);
+    for (const auto& id : ids) ignored_.emplace(id, 0);
+}
+
 void Messages::alarmBox(const std::string& id, const std::string& text) {
     std::lock_guard lock(mutex_);
+    if (auto it = ignored_.find(id); it != ignored_.end()) {
+        ++it->second;
+        return;
+    }
     ++alarms_;
     std::string box = "   !" + std::string(70, '-') + "!\n";
     std::string out = box + "   ! <A> <" + id + ">\n";
@@ -97,6 +106,7 @@ void Messages::reset() {
     mess_.clear();
     resu_.clear();
     alarms_ = 0;
+    ignored_.clear();
 }
 
 }  // namespace ma

@@ -3,8 +3,10 @@
 // Everything a command wants the user to read goes through here.
 #include <fmt/format.h>
 
+#include <map>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "core/Message.hpp"
 
@@ -45,6 +47,10 @@ public:
     void emergency(const std::string& text);
 
     int alarmCount() const { return alarms_; }
+    // DEBUT(IGNORE_ALARM=...): these alarms are neither printed nor counted for the diagnostic;
+    // ignoredAlarms() gives how many of each were raised (for the end of the log).
+    void ignoreAlarms(const std::vector<std::string>& ids);
+    const std::map<std::string, int>& ignoredAlarms() const { return ignored_; }
     const std::string& messText() const { return mess_; }
     const std::string& resuText() const { return resu_; }
     void setEcho(bool echo) { echo_ = echo; }
@@ -60,6 +66,7 @@ private:
     int streamError_ = 0;
     std::string mess_, resu_;
     int alarms_ = 0;
+    std::map<std::string, int> ignored_;  // id -> times raised
     bool echo_ = true;
 };
 

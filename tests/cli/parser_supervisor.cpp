@@ -234,3 +234,50 @@ TEST(ParserSupervisor, SubcellQuadratureOption) {
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.output.find("miniaster: --subcell-quadrature needs a value"), std::string::npos) << r.output;
 }
+
+// DEBUT(IGNORE_ALARM=...): ssnv511a's three TEST0_12 alarms (VALE_CALC 0 skipped) are neither
+// printed nor counted: the diagnostic is OK, their number is given at the end.
+TEST(ParserSupervisor, IgnoredAlarmsAreCountedNotPrinted) {
+    std::ifstream in(std::string(MINIASTER_SHARED_DIR) + "/astest/ssnv511a.comm");
+    std::string comm((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string debut = "DEBUT(CODE=_F(NIV_PUB_WEB='INTERNET',),";
+    ASSERT_NE(comm.find(debut), std::string::npos);
+    comm.replace(comm.find(debut), debut.size(),
+                 "DEBUT(CODE=_F(NIV_PUB_WEB='INTERNET',), IGNORE_ALARM=('TEST0_12', 'XFEM_22'),");
+    auto r = runComm(comm, std::string("--mesh '") + MINIASTER_SHARED_DIR + "/astest/ssnv511a.mmed'");
+    EXPECT_EQ(r.status, 0) << r.output;
+    const std::string mess = r.file("out/t.mess");
+    EXPECT_EQ(mess.find("<A> <TEST0_12>"), std::string::npos) << mess;
+    EXPECT_NE(mess.find("<I> alarm TEST0_12 raised 3 time(s), not printed (DEBUT/IGNORE_ALARM)"), std::string::npos);
+    EXPECT_NE(mess.find("<I> alarm XFEM_22 raised 0 time(s)"), std::string::npos);
+    EXPECT_NE(mess.find("--- DIAGNOSTIC JOB : OK\n"), std::string::npos) << mess;
+}
+
+// DETRUIRE: the name leaves the command file (a later use is a NameError, the name can be given
+// again); a concept another one uses lives on (a model on a destroyed mesh keeps working).
+TEST(ParserSupervisor, DestroyedConceptsLeaveTheNamespace) {
+    auto r = runComm(R"(
+DEBUT()
+MA = LIRE_MAILLAGE(FORMAT='MED')
+MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='D_PLAN'))
+C = DEFI_CONSTANTE(VALE=1.0)
+DETRUIRE(CONCEPT=(_F(NOM=C), _F(NOM=(MA,))))
+for name in ('C', 'MA'):
+    try:
+        eval(name)
+        print('still there:', name)
+    except NameError:
+        print('gone:', name)
+C = DEFI_CONSTANTE(VALE=2.0)
+print('C again', C(0.0))
+CH = AFFE_CHAR_MECA(MODELE=MO, DDL_IMPO=_F(GROUP_MA='LG', DX=0.0))
+FIN()
+)",
+                     std::string("--mesh '") + MINIASTER_SHARED_DIR + "/astest/ssnv511a.mmed'");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("gone: C\n"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("gone: MA\n"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("C again 2.0"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("    MA, C removed from the command file's names"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("CH = AFFE_CHAR_MECA("), std::string::npos);  // MO's mesh lives on
+}

@@ -369,6 +369,19 @@ TEST_F(MedCommands, GaussFieldWithLocalisations) {
     // Values of cell M33 (the odd one): 3 points.
     EXPECT_NE(dump.find("3200.000000  -0.000000"), std::string::npos) << dump;
     EXPECT_NE(dump.find("3202.000000  -2.000000"), std::string::npos) << dump;
+
+    // NOM_CMP selects the columns of a field at Gauss points too (it was ignored).
+    KeywordSet only;
+    only.setValues("UNITE", {81LL});
+    auto& occ = only.addOccurrence("RESU");
+    occ.setValues("RESULTAT", {ConceptPtr(res)});
+    occ.setValues("NOM_CMP", {std::string("SIYY")});
+    call("IMPR_RESU", only);
+    const auto one = test::runCommand("mdump4 '" + dir + "/fort.81' NODALE FULL_INTERLACE 0");
+    EXPECT_NE(one.find("Nom des composantes : |SIYY            |"), std::string::npos) << one;
+    EXPECT_EQ(one.find("SIXX"), std::string::npos) << one;
+    EXPECT_NE(one.find("-2.000000"), std::string::npos) << one;
+    EXPECT_EQ(one.find("3202.000000"), std::string::npos) << one;
 }
 
 TEST_F(MedCommands, BadInputGivesClearErrors) {
