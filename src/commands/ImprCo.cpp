@@ -79,13 +79,7 @@ ConceptPtr imprCo(const KeywordSet& kw, CommandContext& ctx) {
     std::string text;
     for (const auto& occ : kw.factor("CONCEPT"))
         for (const auto& c : occ.objects<Concept>("NOM")) text += listing(*c, content);
-    const long long unit = kw.integer("UNITE");
-    if (unit == 8) {
-        msg().result(text);
-    } else {
-        if (!ctx.units) throw UserError("IMPR_CO: no logical units are defined for this run");
-        appendToUnit("IMPR_CO", ctx.units->output(int(unit)), text);
-    }
+    printOnUnit("IMPR_CO", kw.integer("UNITE"), ctx.units, text);
     return nullptr;
 }
 

@@ -166,13 +166,7 @@ ConceptPtr imprResuText(const KeywordSet& kw, CommandContext& ctx) {
         msg().infof("    mesh {} printed ({} nodes, {} cells)", meshNameOf(*mesh), mesh->nodeCount(),
                     mesh->cellCount());
     }
-    const long long unit = kw.integer("UNITE");
-    if (unit == 8) {
-        msg().result(text);
-    } else {
-        if (!ctx.units) throw UserError("IMPR_RESU: no logical units are defined for this run");
-        appendToUnit("IMPR_RESU", ctx.units->output(int(unit)), text);
-    }
+    printOnUnit("IMPR_RESU", kw.integer("UNITE"), ctx.units, text);
     return nullptr;
 }
 

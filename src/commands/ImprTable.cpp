@@ -43,14 +43,8 @@ ConceptPtr imprTable(const KeywordSet& kw, CommandContext& ctx) {
     const std::string text = formatTable(printed, options);
 
     const long long unit = kw.integer("UNITE");
-    if (unit == 8) {
-        msg().result(text);
-    } else {
-        if (!ctx.units) throw UserError("IMPR_TABLE: no logical units are defined for this run");
-        const std::string path = ctx.units->output(int(unit));
-        appendToUnit("IMPR_TABLE", path, text);
+    if (const std::string path = printOnUnit("IMPR_TABLE", unit, ctx.units, text); !path.empty())
         msg().infof("    table {} printed on unit {} ({})", table->name, unit, path);
-    }
     return nullptr;
 }
 

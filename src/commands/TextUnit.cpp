@@ -7,6 +7,7 @@
 
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
+#include "core/Messages.hpp"
 #include "core/Mpi.hpp"
 
 namespace ma {
@@ -25,6 +26,17 @@ void appendToUnit(const std::string& command, const std::string& path, const std
     content += text;
     writeFileAtomically(path, content);
     openedThisRun.insert(path);
+}
+
+std::string printOnUnit(const std::string& command, long long unit, const Units* units, const std::string& text) {
+    if (unit == 8) {
+        msg().result(text);
+        return "";
+    }
+    if (!units) throw UserError(command + ": no logical units are defined for this run");
+    const std::string path = units->output(int(unit));
+    appendToUnit(command, path, text);
+    return path;
 }
 
 }  // namespace ma
