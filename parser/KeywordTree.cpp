@@ -116,7 +116,7 @@ std::string boundedText(const std::string& text, size_t limit) {
 std::string formatKeywordValue(const KeywordValue& v) {
     if (std::holds_alternative<long long>(v)) return std::to_string(std::get<long long>(v));
     if (std::holds_alternative<double>(v)) return fmt::format("{}", std::get<double>(v));
-    if (std::holds_alternative<std::string>(v)) return "'" + boundedText(std::get<std::string>(v)) + "'";
+    if (std::holds_alternative<std::string>(v)) return fmt::format("'{}'", boundedText(std::get<std::string>(v)));
     const auto& c = std::get<ConceptPtr>(v);
     return c ? c->name : "None";
 }
