@@ -253,9 +253,8 @@ TEST(StaticCheck, UnknownCommandNearTheEndStopsTheRunBeforeAnyWork) {
                         "in CREA_GROUP_NO[2]: "),
               std::string::npos)
         << readText(dir + "/t.mess");
-    EXPECT_NE(
-        readText(dir + "/t.mess").find("    line 8: CALC_G: command CALC_G is not supported by miniaster\n"),
-        std::string::npos);
+    EXPECT_NE(readText(dir + "/t.mess").find("    line 8: CALC_G: command CALC_G is not supported by miniaster\n"),
+              std::string::npos);
 
     comm =
         "DEBUT()\nargs = dict(FORMAT='MED')\nMA = LIRE_MAILLAGE(**args)\n"
