@@ -165,4 +165,30 @@ TEST(CalcChampClassical, PatchTestStressesAtNodesAndInTheMedFile) {
     EXPECT_NE(vtu.find("SIEF_ELNO"), std::string::npos) << out;
 }
 
+// What miniaster's CALC_CHAMP does not compute is refused by the static check, before any command.
+TEST(CalcChampStatic, UnsupportedOptionsAreRefusedBeforeTheSolve) {
+    const auto dir = ma::test::freshDir();
+    std::string comm = readAll(ma::test::astest("ssnv511e.comm"));
+    const auto fin = comm.rfind("\nFIN(");
+    ASSERT_NE(fin, std::string::npos);
+    const std::string extra =
+        "UTOT1=CALC_CHAMP(reuse=UTOT1, RESULTAT=UTOT1, CONTRAINTE='SIGM_NOEU', FORCE='REAC_NODA')\n"
+        "R=CALC_CHAMP(RESULTAT=UTOT1, CONTRAINTE='EFGE_ELNO')\n";
+    ma::test::writeText(dir / "t.comm", comm.substr(0, fin + 1) + extra + comm.substr(fin + 1));
+    const auto r = ma::test::runMiniaster(dir, "t.comm", "--mesh '" + ma::test::astest("ssnv511a.mmed") + "'");
+    EXPECT_EQ(r.status, 1) << r.output;
+    const std::string mess = r.file("out/t.mess");
+    EXPECT_NE(mess.find("problems found in the command file before its first command (none was run)"),
+              std::string::npos)
+        << mess;
+    EXPECT_NE(mess.find(": CALC_CHAMP: keyword FORCE is not supported by miniaster (miniaster's CALC_CHAMP computes "
+                        "CONTRAINTE"),
+              std::string::npos)
+        << mess;
+    EXPECT_NE(mess.find(": CALC_CHAMP: keyword CONTRAINTE: value 'EFGE_ELNO' is not supported by miniaster"),
+              std::string::npos)
+        << mess;
+    EXPECT_EQ(mess.find("STAT_NON_LINE("), std::string::npos);  // nothing ran
+}
+
 }  // namespace
