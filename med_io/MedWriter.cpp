@@ -404,6 +404,10 @@ void MedWriter::writeNodalField(const std::string& fieldName, const std::string&
 int MedWriter::writeGaussField(const std::string& fieldName, const std::string& meshName, const GaussField& field,
                                int numdt, int numit, double dt) {
     if (!field.mesh) throw UserError("field " + fieldName + " has no mesh");
+    if (field.atNodes) {
+        writeNodeElementField(fieldName, meshName, field, numdt, numit, dt);
+        return 0;
+    }
     const Mesh& mesh = *field.mesh;
     const int nc = int(field.components.size());
     const size_t npoints = field.pointWeights.size();
@@ -475,6 +479,45 @@ int MedWriter::writeGaussField(const std::string& fieldName, const std::string& 
         }
     }
     return skipped;
+}
+
+void MedWriter::writeNodeElementField(const std::string& fieldName, const std::string& meshName,
+                                      const GaussField& field, int numdt, int numit, double dt) {
+    const Mesh& mesh = *field.mesh;
+    const size_t nc = field.components.size();
+    const std::vector<int> rankInType = ranksInType(mesh);
+    std::map<CellType, std::vector<int>> byType;  // elements, in MED order within their type
+    for (size_t e = 0; e < field.cells.size(); ++e) byType[mesh.cellTypes[size_t(field.cells[e])]].push_back(int(e));
+    impl_->ensureField(fieldName, meshName, field.components);
+    for (auto& [type, elems] : byType) {
+        std::sort(elems.begin(), elems.end(), [&](int a, int b) {
+            return rankInType[size_t(field.cells[size_t(a)])] < rankInType[size_t(field.cells[size_t(b)])];
+        });
+        const int nper = nodeCount(type);
+        const auto order = medNodeOf(type);
+        int typeCount = 0;
+        for (auto t : mesh.cellTypes) typeCount += t == type;
+        std::vector<med_int> members;
+        std::vector<med_float> values(elems.size() * size_t(nper) * nc);
+        for (size_t i = 0; i < elems.size(); ++i) {
+            const int e = elems[i];
+            members.push_back(rankInType[size_t(field.cells[size_t(e)])] + 1);
+            for (int j = 0; j < nper; ++j) {
+                const size_t medIndex = order.empty() ? size_t(j) : size_t(order[size_t(j)]);
+                const size_t from = (size_t(field.pointOffsets[size_t(e)]) + size_t(j)) * nc;
+                for (size_t c = 0; c < nc; ++c) values[(i * size_t(nper) + medIndex) * nc + c] = field.values[from + c];
+            }
+        }
+        const std::string profile =
+            int(members.size()) == typeCount ? std::string(MED_NO_PROFILE) : impl_->profile(members);
+        if (MEDfieldValueWithProfileWr(impl_->fid(), fieldName.c_str(), numdt, numit, dt, MED_NODE_ELEMENT,
+                                       med_geometry_type(type), MED_COMPACT_STMODE, profile.c_str(),
+                                       MED_NO_LOCALIZATION, MED_FULL_INTERLACE, MED_ALL_CONSTITUENT,
+                                       med_int(members.size()),
+                                       reinterpret_cast<const unsigned char*>(values.data())) < 0)
+            throwMedError(fmt::format("MED file '{}': cannot write ELNO field {} on {} cells at step ({}, {})",
+                                      impl_->target.finalPath(), fieldName, cellTypeName(type), numdt, numit));
+    }
 }
 
 }  // namespace ma::med

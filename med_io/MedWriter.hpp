@@ -41,6 +41,10 @@ public:
     // written (cell types without a reference element); an alarm names them.
     int writeGaussField(const std::string& fieldName, const std::string& meshName, const GaussField& field, int numdt,
                         int numit, double dt);
+    // An ELNO field (GaussField::atNodes): the values at each cell's nodes on MED_NODE_ELEMENT, in
+    // MED node order, one block per cell type (with a profile when not every cell of it).
+    void writeNodeElementField(const std::string& fieldName, const std::string& meshName, const GaussField& field,
+                               int numdt, int numit, double dt);
 
     // Closes the file and moves it to its final name.
     void commit();

@@ -40,7 +40,6 @@ const std::vector<std::string>& unsupportedCommands() {
     static const std::vector<std::string> names{
         "POURSUITE",
         "INCLUDE",
-        "CALC_CHAMP",
         "CALC_CHAM_ELEM",
         "TEST_FONCTION",
         "DYNA_NON_LINE",

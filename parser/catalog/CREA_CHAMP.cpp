@@ -9,7 +9,7 @@ void CREA_CHAMP(Catalog& c) {
                   {TXM("TYPE_CHAM").mandatory()
                        .into({"NOEU_DEPL_R", "ELGA_SIEF_R", "ELGA_EPSI_R", "ELNO_SIEF_R", "NOEU_SIEF_R",
                               "ELGA_VARI_R", "NOEU_GEOM_R", "CART_DEPL_R"})
-                       .notSupported({"ELGA_EPSI_R", "ELNO_SIEF_R", "NOEU_SIEF_R", "ELGA_VARI_R", "NOEU_GEOM_R",
+                       .notSupported({"ELGA_EPSI_R", "ELGA_VARI_R", "NOEU_GEOM_R",
                                       "CART_DEPL_R"}),
                    TXM("OPERATION").mandatory()
                        .into({"EXTR", "AFFE", "ASSE", "EVAL", "DISC", "COMB", "R2C", "C2R", "NORMALE", "ASSE_DEPL"})

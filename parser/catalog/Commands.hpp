@@ -13,6 +13,7 @@ void AFFE_CHAR_MECA(Catalog&);
 void AFFE_CHAR_MECA_F(Catalog&);
 void AFFE_MATERIAU(Catalog&);
 void AFFE_MODELE(Catalog&);
+void CALC_CHAMP(Catalog&);
 void CALC_TABLE(Catalog&);
 void CREA_CHAMP(Catalog&);
 void DEBUT(Catalog&);
@@ -53,6 +54,7 @@ inline const std::vector<CommandFile>& commandFiles() {
         {"AFFE_CHAR_MECA_F", AFFE_CHAR_MECA_F},
         {"AFFE_MATERIAU", AFFE_MATERIAU},
         {"AFFE_MODELE", AFFE_MODELE},
+        {"CALC_CHAMP", CALC_CHAMP},
         {"CALC_TABLE", CALC_TABLE},
         {"CREA_CHAMP", CREA_CHAMP},
         {"DEBUT", DEBUT},

@@ -1,5 +1,5 @@
 // CREA_CHAMP OPERATION='EXTR': a copy of a field stored in a result (commands_spec §6), chosen
-// by NUME_ORDRE or by INST (CRITERE/PRECISION).
+// by NUME_ORDRE or by INST (CRITERE/PRECISION); NOEU, ELGA or ELNO (CALC_CHAMP's SIGM_ELNO).
 #include <fmt/format.h>
 
 #include "core/Messages.hpp"
@@ -38,11 +38,13 @@ ConceptPtr creaChamp(const KeywordSet& kw, CommandContext&) {
                     step->inst, copy->componentCount());
         return copy;
     }
-    if (type.rfind("ELGA_", 0) == 0) {
+    if (type.rfind("ELGA_", 0) == 0 || type.rfind("ELNO_", 0) == 0) {
+        const bool atNodes = type.rfind("ELNO_", 0) == 0;
         auto f = step->gauss(field);
-        if (!f)
-            throw UserError(fmt::format("CREA_CHAMP: result {} has no field {} at integration points at NUME_ORDRE {}",
-                                        result->name, field, step->order));
+        if (!f || f->atNodes != atNodes)
+            throw UserError(fmt::format("CREA_CHAMP: result {} has no field {} {} at NUME_ORDRE {}", result->name,
+                                        field, atNodes ? "at the cells' nodes (ELNO)" : "at integration points",
+                                        step->order));
         const std::string quantity = type.substr(5);  // SIEF_R
         if (f->quantity != quantity)
             throw UserError(fmt::format("CREA_CHAMP: TYPE_CHAM='{}' does not match field {} of {} (quantity {})", type,

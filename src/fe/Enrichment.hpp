@@ -23,6 +23,10 @@ public:
     virtual bool isEnriched(int cell) const = 0;
     // Integration description of an enriched element (volume or skin cell).
     virtual void integration(int cell, ElementIntegration& out) const = 0;
+    // Parent local nodes that are vertices of each integration sub-cell of an enriched `cell`, in
+    // sub-cell order (ElementIntegration::pointSubcell); empty for a classical cell. CALC_CHAMP's
+    // ELNO fields average the sub-cells around each parent node (post/NodeValues.hpp).
+    virtual std::vector<std::vector<int>> subcellParentNodes(int /*cell*/) const { return {}; }
     // Smallest retained volume fraction of an enrichment support, for the log (conditioning).
     virtual double smallestRetainedFraction() const { return 1.0; }
     // Heaviside slots (node, k >= 1) that a node carries (nodeSlots) but that no element uses:

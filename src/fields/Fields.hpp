@@ -51,8 +51,12 @@ public:
     std::vector<int> pointSubcell;                      // sub-cell index within the element (0 when not X-FEM)
     std::vector<std::array<double, 3>> pointRefCoords;  // in the parent reference element (MED localisation)
     std::vector<double> values;                         // pointCount * components.size()
+    // ELNO (SIGM_ELNO...): the points of an element are its cell's nodes in the mesh's local order
+    // (pointRefCoords = the reference nodes), printed in MED on MED_NODE_ELEMENT.
+    bool atNodes = false;
 
     int pointCount() const { return static_cast<int>(pointWeights.size()); }
+    int componentCount() const { return static_cast<int>(components.size()); }
     int componentIndex(const std::string& comp) const;
 };
 

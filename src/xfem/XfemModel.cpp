@@ -359,6 +359,18 @@ std::vector<std::pair<int, int>> XfemModel::inactiveSlots() const {
     return out;
 }
 
+std::vector<std::vector<int>> XfemModel::subcellParentNodes(int cell) const {
+    std::vector<std::vector<int>> out;
+    const CellCut* c = cut(cell);
+    if (!c) return out;
+    for (const auto& sub : c->subcells) {
+        auto& nodes = out.emplace_back();
+        for (int v = 0; v < c->vertexCount(); ++v)
+            if (const int a = c->points[size_t(sub.vertices[size_t(v)])].parentNode; a >= 0) nodes.push_back(a);
+    }
+    return out;
+}
+
 void XfemModel::integration(int cell, ElementIntegration& out) const {
     if (!isEnriched(cell)) throw InternalError("XfemModel::integration on a classical cell");
     const CellCut& cut = cuts_[cellIndex_[cell]];

@@ -53,6 +53,7 @@ public:
     int nodeSlots(int node) const override;
     bool isEnriched(int cell) const override;
     void integration(int cell, ElementIntegration& out) const override;
+    std::vector<std::vector<int>> subcellParentNodes(int cell) const override;
     double smallestRetainedFraction() const override { return smallestFraction_; }
 
     // Heaviside slots that exist on a node but carry no function there (inactive cracks of the

@@ -90,6 +90,7 @@ DEP = POST_RELEVE_T(ACTION=(_F(INTITULE='DEPLE', GROUP_NO=('NFISSU',), RESULTAT=
 UC = CREA_CHAMP(OPERATION='EXTR', TYPE_CHAM='NOEU_DEPL_R', RESULTAT=U1, NOM_CHAM='DEPL', NUME_ORDRE=1)
 SC = CREA_CHAMP(OPERATION='EXTR', TYPE_CHAM='ELGA_SIEF_R', RESULTAT=U3, NOM_CHAM='SIEF_ELGA', INST=1.0,
                 CRITERE='ABSOLU', PRECISION=1e-8)
+U3 = CALC_CHAMP(reuse=U3, RESULTAT=U3, CONTRAINTE=('SIGM_ELGA', 'SIGM_ELNO', 'SIGM_NOEU'), INST=1.0, GROUP_MA='SURF')
 DEP2 = POST_RELEVE_T(ACTION=_F(INTITULE='C', GROUP_NO='SD', CHAM_GD=UC, TOUT_CMP='OUI', OPERATION='EXTRACTION'))
 SXX = FORMULE(VALE='-1e6', NOM_PARA=('X', 'Y'))
 T1 = POST_ERREUR(OPTION='ENER_RELA', CHAM_GD=SC, MODELE=MX, DEFORMATION='PETIT', CHAM_MATER=CM, GROUP_MA='SURF',
@@ -170,7 +171,7 @@ TEST(ParserCatalog, AFormatRThatIsNotFortranIsRefusedBeforeAnyCommandRuns) {
     auto r = runComm(std::string(kEveryCommand)
                          .replace(std::string(kEveryCommand).find("FORMAT_R='1PE12.5'"), 18, "FORMAT_R='1PQ12.5'"));
     EXPECT_EQ(r.status, 1) << r.output;
-    EXPECT_NE(r.output.find("<F> <ERROR> IMPR_TABLE (t.comm, line 102): keyword FORMAT_R: value '1PQ12.5' is not a "
+    EXPECT_NE(r.output.find("<F> <ERROR> IMPR_TABLE (t.comm, line 103): keyword FORMAT_R: value '1PQ12.5' is not a "
                             "Fortran real format such as 'E12.5', '1PE12.5', 'D15.8', 'F10.3' or 'G14.7'"),
               std::string::npos)
         << r.output;

@@ -1,0 +1,36 @@
+// CALC_CHAMP: stresses derived from a static result's SIEF_ELGA, stored in the result.
+#include "parser/catalog/common/Types.hpp"
+
+namespace ma::catalog_entries {
+
+void CALC_CHAMP(Catalog& c) {
+    const std::string later = "miniaster's CALC_CHAMP computes CONTRAINTE (SIGM_ELGA/ELNO/NOEU, SIEF_ELNO/NOEU)";
+    c.add(cmd("CALC_CHAMP")
+              .reuse(Reuse::Optional)
+              .keywords(join({
+                  {CO("RESULTAT", kAnyResult).mandatory(), CO("MODELE", {kModel}),
+                   CO("CHAM_MATER", {kMaterialField}), TXM("TOUT_ORDRE").into({"OUI"}), I("NUME_ORDRE").many(),
+                   R("INST").many(), critere(), R("PRECISION").def(1.0e-6), TXM("TOUT").into({"OUI"}),
+                   TXM("GROUP_MA").many(),
+                   TXM("CONTRAINTE")
+                       .many()
+                       .into({"EFGE_ELGA", "EFGE_ELNO", "EFGE_NOEU", "SIEF_ELGA", "SIEF_ELNO", "SIEF_NOEU",
+                              "SIGM_ELGA", "SIGM_ELNO", "SIGM_NOEU", "SIPM_ELNO", "SIPO_ELNO", "SIPO_NOEU",
+                              "SIRO_ELEM", "STRX_ELGA"})
+                       .notSupported({"EFGE_ELGA", "EFGE_ELNO", "EFGE_NOEU", "SIEF_ELGA", "SIPM_ELNO", "SIPO_ELNO",
+                                      "SIPO_NOEU", "SIRO_ELEM", "STRX_ELGA"}),
+                   info(), titre()},
+                  unsupported({"DEFORMATION", "CRITERES", "FORCE", "ENERGIE", "VARI_INTERNE", "PROPRIETES",
+                               "CHAM_UTIL", "EXCIT"},
+                              later),
+                  unsupported({"CARA_ELEM", "NUME_MODE", "NOEUD_CMP", "NOM_CAS", "FREQ", "LIST_INST", "LIST_FREQ",
+                               "LIST_ORDRE", "MAILLE"},
+                              "miniaster's CALC_CHAMP selects the orders by TOUT_ORDRE, NUME_ORDRE or INST and the "
+                              "cells by TOUT or GROUP_MA"),
+              }))
+              .rules({exclus({"TOUT_ORDRE", "NUME_ORDRE", "INST"}), exclus({"TOUT", "GROUP_MA"}),
+                      auMoinsUn({"CONTRAINTE"})})
+              .resultFrom([](const KeywordSet& kw) { return kw.rawObject("RESULTAT")->typeName(); }));
+}
+
+}  // namespace ma::catalog_entries
