@@ -5,6 +5,7 @@
 
 #include "cli/MpiConfinement.hpp"
 #include "cli/MpiLaunch.hpp"
+#include "cli/MpirunChild.hpp"
 #include "cli/ResultTools.hpp"
 #include "core/Mpi.hpp"
 #include "med_io/MedLibrary.hpp"
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
     if (command == "run")
         if (const int status = ma::cli::launchProcessesIfAsked(argc, argv); status >= 0) return status;
     if (command == "run") ma::armStopSignals();  // a stop during MPI_Init is handled once the run starts
+    if (command == "run" && ma::mpi::launchedByMpirun()) ma::cli::stopWithMpirun();
     ma::med::initialiseBeforeMpi();
     try {
         ma::mpi::initialise(&argc, &argv);

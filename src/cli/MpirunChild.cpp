@@ -1,6 +1,7 @@
 #include "cli/MpirunChild.hpp"
 
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -63,9 +64,14 @@ int runMpirun(std::vector<char*>& argv) {
     sigaddset(&stops, SIGCHLD);
     sigprocmask(SIG_BLOCK, &stops, &previous);
     std::fflush(stdout);
+    const pid_t launcher = ::getpid();
     const pid_t child = ::fork();
     if (child == 0) {
         sigprocmask(SIG_SETMASK, &previous, nullptr);
+        // In its own process group, mpirun outlived a launcher killed with its group (SIGKILL):
+        // it and the processes ran on for ever. It goes with the launcher now.
+        ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+        if (::getppid() != launcher) ::_exit(1);
         ::setpgid(0, 0);  // Ctrl-C on the terminal reaches the launcher only, which forwards it
         execvp(argv[0], argv.data());
         std::fprintf(stderr, "miniaster: cannot start mpirun: %s (Debian package openmpi-bin)\n", std::strerror(errno));
@@ -101,6 +107,12 @@ int runMpirun(std::vector<char*>& argv) {
         }
         if (forwarded && waited > kGraceSeconds + kKillSeconds) ::kill(-child, SIGKILL);
     }
+}
+
+void stopWithMpirun() {
+    const pid_t parent = ::getppid();
+    ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (::getppid() != parent) ::raise(SIGTERM);  // it ended before the call
 }
 
 }  // namespace ma::cli

@@ -13,4 +13,10 @@ namespace ma::cli {
 // returns the run's exit status: mpirun's 0, 1 or 2; 1 for any other end (said on stderr).
 int runMpirun(std::vector<char*>& argv);
 
+// A process of the job (under mpirun): SIGTERM when its mpirun ends first, so that a launcher or a
+// mpirun killed with SIGKILL (which forwards nothing) leaves no process running on (the stop is
+// handled as any SIGTERM: the INTERRUPTED paragraph). mpirun itself gets SIGKILL when the launcher
+// that started it dies (runMpirun).
+void stopWithMpirun();
+
 }  // namespace ma::cli

@@ -195,7 +195,18 @@ TEST(Environment, SessionFolderOfAKilledRunIsRemovedByTheNextRun) {
     ASSERT_TRUE(fs::exists(dir / "started")) << readAll(dir / "log.txt");
     kill(-child, SIGKILL);
     waitpid(child, nullptr, 0);
-    std::this_thread::sleep_for(std::chrono::milliseconds(300));  // the processes of the group end
+    // mpirun (its own process group) goes with the launcher, the processes with mpirun (their
+    // SIGTERM: INTERRUPTED); none may run on (they used to spin for ever).
+    auto running = [&] {
+        int n = 0;
+        for (const auto& e : fs::directory_iterator("/proc")) {
+            std::error_code ec;
+            n += fs::read_symlink(e.path() / "cwd", ec) == dir;
+        }
+        return n;
+    };
+    for (int i = 0; i < 100 && running() > 0; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    EXPECT_EQ(running(), 0);
     std::vector<std::string> left;
     for (const auto& e : fs::directory_iterator(dir / "tmp")) left.push_back(e.path().filename().string());
     ASSERT_EQ(left.size(), 1u);
