@@ -82,6 +82,6 @@ std::vector<Placement> placements() {
 }
 
 INSTANTIATE_TEST_SUITE_P(Ssnv511, NodeRows, ::testing::ValuesIn(placements()),
-                         [](const ::testing::TestParamInfo<Placement>& info) { return name(info.param); });
+                         [](const ::testing::TestParamInfo<Placement>& placement) { return name(placement.param); });
 
 }  // namespace
