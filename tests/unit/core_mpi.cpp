@@ -94,10 +94,10 @@ TEST(Mpi, RunAgreementStopsTheOthersCollectivesAndStays) {
     }
     ASSERT_TRUE(agreed.has_value());
     EXPECT_EQ(agreed->text, "process " + std::to_string(last) + " failed");
-    if (mpi::size() > 1) EXPECT_EQ(agreed->rank, last);
+    if (mpi::size() > 1) { EXPECT_EQ(agreed->rank, last); }
     const auto again = mpi::agreeOnRun(std::nullopt);
     EXPECT_EQ(again.has_value(), mpi::size() > 1);  // one process: nothing is kept
-    if (again) EXPECT_EQ(again->text, agreed->text);
+    if (again) { EXPECT_EQ(again->text, agreed->text); }
 }
 
 }  // namespace
