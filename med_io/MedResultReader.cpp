@@ -124,6 +124,7 @@ std::shared_ptr<GaussField> readCellPoints(const StepPlace& at, const std::share
                                const int cell = first + k;
                                if (k < 0 || cell >= mesh->cellCount() || mesh->cellTypes[size_t(cell)] != type)
                                    unreadable(at.file.path(), at.where() + " (cell number)");
+                               g->atNodes = entity == MED_NODE_ELEMENT;
                                g->cells.push_back(cell);
                                g->pointOffsets.push_back(g->pointOffsets.back() + npoints);
                                g->pointWeights.insert(g->pointWeights.end(), size_t(npoints), 1.0);

@@ -1,10 +1,12 @@
-// CALC_CHAMP: stresses derived from a static result's SIEF_ELGA, stored in the result.
+// CALC_CHAMP: stresses derived from a static result's SIEF_ELGA and its nodal forces, stored in the result.
 #include "parser/catalog/common/Types.hpp"
 
 namespace ma::catalog_entries {
 
 void CALC_CHAMP(Catalog& c) {
-    const std::string later = "miniaster's CALC_CHAMP computes CONTRAINTE (SIGM_ELGA/ELNO/NOEU, SIEF_ELNO/NOEU)";
+    const std::string later =
+        "miniaster's CALC_CHAMP computes CONTRAINTE (SIGM_ELGA/ELNO/NOEU, SIEF_ELNO/NOEU) and FORCE (FORC_NODA, "
+        "REAC_NODA)";
     c.add(cmd("CALC_CHAMP")
               .reuse(Reuse::Optional)
               .keywords(join({
@@ -19,9 +21,14 @@ void CALC_CHAMP(Catalog& c) {
                               "SIRO_ELEM", "STRX_ELGA"})
                        .notSupported({"EFGE_ELGA", "EFGE_ELNO", "EFGE_NOEU", "SIEF_ELGA", "SIPM_ELNO", "SIPO_ELNO",
                                       "SIPO_NOEU", "SIRO_ELEM", "STRX_ELGA"}),
+                   TXM("FORCE").many().into({"FORC_NODA", "REAC_NODA"}),
+                   fact("EXCIT")
+                       .many()
+                       .keywords({CO("CHARGE", {kMechanicalLoad}).mandatory(), CO("FONC_MULT", kAnyFunction),
+                                  R("COEF_MULT"), TXM("TYPE_CHARGE").into({"FIXE_CSTE"}).def("FIXE_CSTE")})
+                       .rules({exclus({"FONC_MULT", "COEF_MULT"})}),
                    info(), titre()},
-                  unsupported({"DEFORMATION", "CRITERES", "FORCE", "ENERGIE", "VARI_INTERNE", "PROPRIETES",
-                               "CHAM_UTIL", "EXCIT"},
+                  unsupported({"DEFORMATION", "CRITERES", "ENERGIE", "VARI_INTERNE", "PROPRIETES", "CHAM_UTIL"},
                               later),
                   unsupported({"CARA_ELEM", "NUME_MODE", "NOEUD_CMP", "NOM_CAS", "FREQ", "LIST_INST", "LIST_FREQ",
                                "LIST_ORDRE", "MAILLE"},
@@ -29,7 +36,7 @@ void CALC_CHAMP(Catalog& c) {
                               "cells by TOUT or GROUP_MA"),
               }))
               .rules({exclus({"TOUT_ORDRE", "NUME_ORDRE", "INST"}), exclus({"TOUT", "GROUP_MA"}),
-                      auMoinsUn({"CONTRAINTE"})})
+                      auMoinsUn({"CONTRAINTE", "FORCE"})})
               .resultFrom([](const KeywordSet& kw) { return kw.rawObject("RESULTAT")->typeName(); }));
 }
 

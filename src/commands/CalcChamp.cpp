@@ -1,12 +1,17 @@
-// CALC_CHAMP: fields derived from a static result's SIEF_ELGA (post/NodeValues.hpp), stored in the
-// result under their NOM_CHAM for the orders and cells chosen. The engine is in src/post.
+// CALC_CHAMP: fields derived from a static result's SIEF_ELGA (post/NodeValues.hpp) and its nodal
+// forces (post/NodalForces.hpp), stored in the result under their NOM_CHAM for the orders and cells
+// chosen. The engine is in src/post.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <optional>
+
+#include "commands/MechanicsKeywords.hpp"
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "fe/Result.hpp"
 #include "parser/CommandRegistry.hpp"
+#include "post/NodalForces.hpp"
 #include "post/NodeValues.hpp"
 
 namespace ma {
@@ -77,6 +82,26 @@ void stressFields(ResultStep& step, const Result& result, const std::vector<std:
     }
 }
 
+// The FORCE fields of one step; the sum of each displacement component of REAC_NODA in the .mess
+// (the reactions balance the loads: it is minus the resultant of the applied loads).
+void forceFields(ResultStep& step, const post::NodalForces& forces, const std::vector<std::string>& asked) {
+    for (const auto& name : asked) {
+        auto field = name == "FORC_NODA" ? forces.internalForces(step) : forces.reactions(step);
+        if (name == "REAC_NODA") {
+            std::string sums;
+            for (const char* c : {"DX", "DY", "DZ"})
+                if (const int k = field->componentIndex(c); k >= 0) {
+                    double sum = 0.0;
+                    for (int n = 0; n < field->mesh->nodeCount(); ++n)
+                        if (field->has(n, k)) sum += field->at(n, k);
+                    sums += fmt::format(" {} {:.6e}", c, sum);
+                }
+            msg().infof("    REAC_NODA NUME_ORDRE {}: sum over the nodes{}", step.order, sums);
+        }
+        store(step.nodalFields, name, std::move(field));
+    }
+}
+
 ConceptPtr calcChamp(const KeywordSet& kw, CommandContext& ctx) {
     auto input = kw.object<Result>("RESULTAT");
     if (ctx.reused && ctx.reused != input) throw UserError("CALC_CHAMP: reuse= must name the result given by RESULTAT");
@@ -86,10 +111,18 @@ ConceptPtr calcChamp(const KeywordSet& kw, CommandContext& ctx) {
     if (!input->mesh) throw UserError(kw.pathOf("RESULTAT") + ": result " + input->name + " has no mesh");
     // Without reuse=, a new result sharing the input's fields, the new ones added to it.
     auto result = ctx.reused ? input : std::make_shared<Result>(*input);
-    const auto asked = kw.texts("CONTRAINTE");
+    const auto stresses = kw.has("CONTRAINTE") ? kw.texts("CONTRAINTE") : std::vector<std::string>{};
+    const auto force = kw.has("FORCE") ? kw.texts("FORCE") : std::vector<std::string>{};
     const auto keep = chosenCells(*result, kw);
     const auto steps = chosenSteps(*result, kw);
-    for (ResultStep* step : steps) stressFields(*step, *result, asked, keep, kw);
+    std::optional<post::NodalForces> forces;
+    if (!force.empty()) forces.emplace(*result, kw.has("EXCIT") ? mechanics::loadCases(kw) : result->loads, keep);
+    for (ResultStep* step : steps) {
+        if (!stresses.empty()) stressFields(*step, *result, stresses, keep, kw);
+        if (forces) forceFields(*step, *forces, force);
+    }
+    auto asked = stresses;
+    asked.insert(asked.end(), force.begin(), force.end());
     msg().infof("    {} computed at {} order(s) of {}", fmt::join(asked, ", "), steps.size(), input->name);
     return result;
 }

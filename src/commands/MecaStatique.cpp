@@ -36,7 +36,7 @@ ConceptPtr mecaStatique(const KeywordSet& kw, CommandContext& ctx) {
     const auto loads = mechanics::loadCases(kw);
     mechanics::refuseContactLoads(loads, "MECA_STATIQUE");
     MechanicalProblem problem(model, material, loads, mechanics::solverOptions(kw, ctx.info));
-    auto result = mechanics::mechanicalResult("evol_elas", model, material);
+    auto result = mechanics::mechanicalResult("evol_elas", model, material, loads);
     const ConvergenceOptions linear;  // one solve, no convergence test: the problem is linear
     const bool stresses = kw.text("OPTION") == "SIEF_ELGA";
     int order = 0;

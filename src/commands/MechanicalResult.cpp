@@ -3,11 +3,13 @@
 namespace ma::mechanics {
 
 std::shared_ptr<Result> mechanicalResult(std::string kind, const std::shared_ptr<Model>& model,
-                                         const std::shared_ptr<MaterialField>& material) {
+                                         const std::shared_ptr<MaterialField>& material,
+                                         const std::vector<LoadCase>& loads) {
     auto result = std::make_shared<Result>(std::move(kind));
     result->mesh = model->mesh;
     result->model = model;
     result->material = material;
+    result->loads = loads;
     return result;
 }
 

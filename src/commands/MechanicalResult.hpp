@@ -9,9 +9,10 @@
 
 namespace ma::mechanics {
 
-// An empty result of `kind` ("evol_elas", "evol_noli") on this model and material.
+// An empty result of `kind` ("evol_elas", "evol_noli") on this model, material and loads.
 std::shared_ptr<Result> mechanicalResult(std::string kind, const std::shared_ptr<Model>& model,
-                                         const std::shared_ptr<MaterialField>& material);
+                                         const std::shared_ptr<MaterialField>& material,
+                                         const std::vector<LoadCase>& loads);
 
 // Archives the problem's current state as NUME_ORDRE `order` at `inst`: DEPL when `displacement`,
 // SIEF_ELGA when `stresses`.

@@ -125,6 +125,7 @@ inline std::vector<LoadCase> loadCases(const KeywordSet& kw) {
         LoadCase lc;
         lc.load = occ.object<MechanicalLoad>("CHARGE");
         if (occ.has("FONC_MULT")) lc.multiplier = occ.object<Function>("FONC_MULT");
+        if (occ.has("COEF_MULT")) lc.coefficient = occ.real("COEF_MULT");
         out.push_back(lc);
     }
     return out;

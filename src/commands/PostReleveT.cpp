@@ -41,6 +41,15 @@ std::vector<const ResultStep*> selectSteps(const KeywordSet& a, const Result& re
     return out;
 }
 
+// POINT of MOMENT: 2 or 3 coordinates (z = 0 with 2).
+std::array<double, 3> momentPoint(const KeywordSet& a) {
+    const auto p = a.reals("POINT");
+    if (p.size() != 2 && p.size() != 3)
+        throw UserError(
+            fmt::format("{}: {} value(s) given, 2 or 3 coordinates are needed", a.pathOf("POINT"), p.size()));
+    return {p[0], p[1], p.size() == 3 ? p[2] : 0.0};
+}
+
 ConceptPtr postReleveT(const KeywordSet& kw, CommandContext& ctx) {
     std::vector<NodalExtraction> actions;
     for (const auto& a : kw.factor("ACTION")) {
@@ -48,7 +57,7 @@ ConceptPtr postReleveT(const KeywordSet& kw, CommandContext& ctx) {
         if (operations.size() != 1 || operations[0] != "EXTRACTION")
             throw NotImplemented(
                 fmt::format("{}: only OPERATION='EXTRACTION' is supported by miniaster", a.pathOf("OPERATION")));
-        for (const char* k : {"INVARIANT", "ELEM_PRINCIPAUX", "RESULTANTE", "MOMENT", "GROUP_MA", "MAILLE", "CHEMIN"})
+        for (const char* k : {"INVARIANT", "ELEM_PRINCIPAUX", "GROUP_MA", "MAILLE", "CHEMIN"})
             if (a.has(k)) throw NotImplemented(a.pathOf(k) + " is not supported by miniaster");
         if (a.text("REPERE") != "GLOBAL")
             throw NotImplemented(a.pathOf("REPERE") + ": only REPERE='GLOBAL' is supported by miniaster");
@@ -69,8 +78,13 @@ ConceptPtr postReleveT(const KeywordSet& kw, CommandContext& ctx) {
             x.field = field;
         }
         x.allComponents = a.has("TOUT_CMP");
-        if (!x.allComponents) {
-            if (!a.has("NOM_CMP")) throw UserError(a.path() + ": give TOUT_CMP='OUI' or NOM_CMP");
+        x.resultant = a.has("RESULTANTE");
+        if (x.resultant) {
+            x.components = a.texts("RESULTANTE");
+            if (a.has("MOMENT")) x.point = momentPoint(a);
+            x.moment = a.has("MOMENT");
+        } else if (!x.allComponents) {
+            if (!a.has("NOM_CMP")) throw UserError(a.path() + ": give TOUT_CMP='OUI', NOM_CMP or RESULTANTE");
             x.components = a.texts("NOM_CMP");
         }
         actions.push_back(std::move(x));

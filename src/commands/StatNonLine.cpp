@@ -169,7 +169,7 @@ ConceptPtr statNonLine(const KeywordSet& kw, CommandContext& ctx) {
                                         definition->model->name, model->name));
         contactTerms = contact::attachContact(problem, *material, definition);
     }
-    auto result = mechanics::mechanicalResult("evol_noli", model, material);
+    auto result = mechanics::mechanicalResult("evol_noli", model, material, loads);
     int order = 0;
     auto store = [&](double inst, bool stresses) {
         mechanics::archiveState(*result, problem, order++, inst, archiving.keeps("DEPL"),

@@ -12,7 +12,8 @@ namespace {
 // the worker owns.
 class InternalForceKernel {
 public:
-    InternalForceKernel(const std::vector<double>& u, std::vector<double>& f) : u_(u), f_(f) {}
+    InternalForceKernel(const std::vector<double>& u, std::vector<double>& f, const std::vector<char>* cells)
+        : u_(u), f_(f), cells_(cells) {}
 
     struct Part {  // one worker's element vectors of the current batch
         std::vector<int> dofs;
@@ -28,6 +29,7 @@ public:
 
     template <class Ref, class Geometry>
     Entry classical(const Ref&, const Geometry& g, const ElementContext& el, Part& part) const {
+        if (!chosen(el.cell)) return none(part);
         int edofs[Ref::dofs];
         classicalDofs<Ref>(el.mesh, el.numbering, el.cell, edofs);
         double ue[Ref::dofs], fl[Ref::dofs] = {};
@@ -37,6 +39,7 @@ public:
     }
 
     Entry general(const ElementIntegration& ei, const PointGeometry& geo, const ElementContext& el, Part& part) const {
+        if (!chosen(el.cell)) return none(part);
         ElementScratch& w = el.scratch;
         localDofs(el.mesh, el.numbering, ei, w.dofs);
         generalInternalForce(ei, geo, w.dofs, u_, el.law, el.dim, w.values);
@@ -51,6 +54,7 @@ public:
     }
 
 private:
+    bool chosen(int cell) const { return !cells_ || (*cells_)[size_t(cell)] != 0; }
     static Entry keep(Part& part, const int* dofs, const double* fe, int nd) {
         const Entry entry{nd, part.dofs.size()};
         part.dofs.insert(part.dofs.end(), dofs, dofs + nd);
@@ -60,13 +64,15 @@ private:
 
     const std::vector<double>& u_;
     std::vector<double>& f_;
+    const std::vector<char>* cells_;
 };
 
 }  // namespace
 
-void assembleInternalForces(const Discretisation& space, const std::vector<double>& u, std::vector<double>& f) {
+void assembleInternalForces(const Discretisation& space, const std::vector<double>& u, std::vector<double>& f,
+                            const std::vector<char>* cells) {
     f.assign(space.numbering().size(), 0.0);
-    InternalForceKernel kernel(u, f);
+    InternalForceKernel kernel(u, f, cells);
     mpi::collectively([&] { ElementAssembler(space, kernel).run(); });
     if (space.distributed()) mpi::sum(f);
 }

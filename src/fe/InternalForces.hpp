@@ -10,6 +10,8 @@
 namespace ma {
 
 // f: numbering().size() entries (u may have more: the additional terms' unknowns are not read).
-void assembleInternalForces(const Discretisation& space, const std::vector<double>& u, std::vector<double>& f);
+// With `cells` (a flag per mesh cell), only the elements of the flagged cells contribute.
+void assembleInternalForces(const Discretisation& space, const std::vector<double>& u, std::vector<double>& f,
+                            const std::vector<char>* cells = nullptr);
 
 }  // namespace ma

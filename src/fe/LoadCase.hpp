@@ -10,11 +10,12 @@ namespace ma {
 struct LoadCase {
     std::shared_ptr<const MechanicalLoad> load;
     std::shared_ptr<const Function> multiplier;  // FONC_MULT (function of INST), null = 1
+    double coefficient = 1.0;                    // COEF_MULT (CALC_CHAMP's EXCIT)
 
-    // FONC_MULT at instant inst (1 without a multiplier).
+    // The load's factor at instant inst: FONC_MULT(inst) x COEF_MULT.
     double factor(double inst) const {
-        if (!multiplier) return 1.0;
-        return multiplier->evaluateColumns({{"INST", {inst}}}, 1)[0];
+        if (!multiplier) return coefficient;
+        return coefficient * multiplier->evaluateColumns({{"INST", {inst}}}, 1)[0];
     }
 };
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/Concept.hpp"
+#include "fe/LoadCase.hpp"
 #include "fe/Material.hpp"
 #include "fe/Model.hpp"
 #include "fields/Fields.hpp"
@@ -20,6 +21,7 @@ public:
     std::shared_ptr<const Mesh> mesh;
     std::shared_ptr<Model> model;
     std::shared_ptr<MaterialField> material;
+    std::vector<LoadCase> loads;  // EXCIT of the analysis (CALC_CHAMP REAC_NODA subtracts them)
     std::vector<ResultStep> steps;
 
     // The step with this NUME_ORDRE; UserError naming the result when absent.

@@ -12,6 +12,10 @@
 namespace ma {
 namespace {
 
+const char* const kMomentColumns[6] = {"RESULT_X", "RESULT_Y", "RESULT_Z", "MOMENT_X", "MOMENT_Y", "MOMENT_Z"};
+const char* const kForceNames[3] = {"DX", "DY", "DZ"};
+const char* const kMomentNames[3] = {"DRX", "DRY", "DRZ"};
+
 // Components requested from one field: all those carried by some node (in the quantity's
 // order), or NOM_CMP as given.
 std::vector<int> requestedComponents(const NodalField& f, const NodalExtraction& a, const std::string& fieldLabel) {
@@ -76,6 +80,7 @@ struct Extraction {
     std::vector<Block> blocks;
     std::vector<std::string> componentColumns;
     bool anyField = false, anyResult = false;
+    bool anyNodeRows = false, anyMoment = false;  // an action extracting node values / with MOMENT
     size_t titleLen = 0, nodeLen = 0, fieldLen = 0, resultLen = 0, nameLen = 0;  // text column widths
 };
 
@@ -114,11 +119,15 @@ Extraction resolve(const std::vector<NodalExtraction>& actions) {
             if (!f->mesh) throw UserError(fmt::format("field {} has no mesh", label));
             Block b{&a, f, s, requestedComponents(*f, a, label), {}};
             b.nodes = nodeList(*f->mesh, *f, b.comps, a);
-            for (int n : b.nodes) x.nodeLen = std::max(x.nodeLen, f->mesh->nodeNames[size_t(n)].size());
-            for (int c : b.comps)
-                if (std::find(x.componentColumns.begin(), x.componentColumns.end(), f->components[size_t(c)]) ==
-                    x.componentColumns.end())
-                    x.componentColumns.push_back(f->components[size_t(c)]);
+            x.anyNodeRows = x.anyNodeRows || !a.resultant;
+            x.anyMoment = x.anyMoment || a.moment;
+            if (!a.resultant)
+                for (int n : b.nodes) x.nodeLen = std::max(x.nodeLen, f->mesh->nodeNames[size_t(n)].size());
+            if (!a.moment)
+                for (int c : b.comps)
+                    if (std::find(x.componentColumns.begin(), x.componentColumns.end(), f->components[size_t(c)]) ==
+                        x.componentColumns.end())
+                        x.componentColumns.push_back(f->components[size_t(c)]);
             x.blocks.push_back(std::move(b));
         }
     }
@@ -127,7 +136,7 @@ Extraction resolve(const std::vector<NodalExtraction>& actions) {
 
 void declareColumns(const Extraction& x, Table& table) {
     table.addColumn("INTITULE", textColumnFor(textWidth(x.titleLen, 16)));
-    table.addColumn("NOEUD", textColumnFor(textWidth(x.nodeLen, 8)));
+    if (x.anyNodeRows) table.addColumn("NOEUD", textColumnFor(textWidth(x.nodeLen, 8)));
     if (x.anyField) table.addColumn("CHAM_GD", textColumnFor(textWidth(x.fieldLen, 8)));
     if (x.anyResult) {
         table.addColumn("RESU", textColumnFor(textWidth(x.resultLen, 8)));
@@ -135,16 +144,70 @@ void declareColumns(const Extraction& x, Table& table) {
         table.addColumn("NUME_ORDRE", ColumnType::integer());
         table.addColumn("INST", ColumnType::real());  // evol_elas / evol_noli results
     }
-    for (const char* c : {"ABSC_CURV", "COOR_X", "COOR_Y", "COOR_Z"}) table.addColumn(c, ColumnType::real());
+    if (x.anyNodeRows)
+        for (const char* c : {"ABSC_CURV", "COOR_X", "COOR_Y", "COOR_Z"}) table.addColumn(c, ColumnType::real());
     for (const auto& c : x.componentColumns) table.addColumn(c, ColumnType::real());
+    if (x.anyMoment)
+        for (const char* c : kMomentColumns) table.addColumn(c, ColumnType::real());
+}
+
+// A new row with the action's title and where its values come from (result and order, or field).
+size_t startRow(const Block& b, Table& table) {
+    const size_t r = table.addRow();
+    table.set(r, 0, b.action->title);
+    if (b.step) {
+        table.set(r, size_t(table.columnIndex("RESU")), b.action->result->name);
+        table.set(r, size_t(table.columnIndex("NOM_CHAM")), b.action->fieldName);
+        table.set(r, size_t(table.columnIndex("NUME_ORDRE")), static_cast<long long>(b.step->order));
+        table.set(r, size_t(table.columnIndex("INST")), b.step->inst);
+    } else {
+        table.set(r, size_t(table.columnIndex("CHAM_GD")), b.field->name);
+    }
+    return r;
+}
+
+// RESULTANTE: the sum over the block's nodes of each component; with MOMENT the force (DX, DY, DZ
+// among the RESULTANTE components) and its moment about POINT, sum of (x - POINT) x F plus the
+// nodal moments DRX, DRY, DRZ where the field has them.
+void addResultantRow(const Block& b, Table& table) {
+    const size_t r = startRow(b, table);
+    const NodalField& f = *b.field;
+    if (!b.action->moment) {
+        for (int c : b.comps) {
+            double sum = 0.0;
+            for (int n : b.nodes)
+                if (f.has(n, c)) sum += f.at(n, c);
+            table.set(r, size_t(table.columnIndex(f.components[size_t(c)])), sum);
+        }
+        return;
+    }
+    auto valueOf = [&](int n, const char* name) {
+        const int c = f.componentIndex(name);
+        return c >= 0 && f.has(n, c) ? f.at(n, c) : 0.0;
+    };
+    auto requested = [&](const char* name) {
+        return std::find(b.action->components.begin(), b.action->components.end(), name) != b.action->components.end();
+    };
+    std::array<double, 6> sum{};
+    const auto& p = b.action->point;
+    for (int n : b.nodes) {
+        std::array<double, 3> force{}, arm{};
+        for (int d = 0; d < 3; ++d) {
+            force[size_t(d)] = requested(kForceNames[d]) ? valueOf(n, kForceNames[d]) : 0.0;
+            arm[size_t(d)] = f.mesh->coords[size_t(n)][size_t(d)] - p[size_t(d)];
+            sum[size_t(d)] += force[size_t(d)];
+            sum[size_t(3 + d)] += valueOf(n, kMomentNames[d]);
+        }
+        sum[3] += arm[1] * force[2] - arm[2] * force[1];
+        sum[4] += arm[2] * force[0] - arm[0] * force[2];
+        sum[5] += arm[0] * force[1] - arm[1] * force[0];
+    }
+    for (size_t k = 0; k < 6; ++k) table.set(r, size_t(table.columnIndex(kMomentColumns[k])), sum[k]);
 }
 
 // One row per node of the block, with its curvilinear abscissa along the node list.
-void addBlockRows(const Block& b, Table& table) {
-    const size_t colTitle = 0, colNode = 1;
-    const int colField = table.columnIndex("CHAM_GD"), colResu = table.columnIndex("RESU"),
-              colName = table.columnIndex("NOM_CHAM"), colOrder = table.columnIndex("NUME_ORDRE"),
-              colInst = table.columnIndex("INST");
+void addNodeRows(const Block& b, Table& table) {
+    const size_t colNode = size_t(table.columnIndex("NOEUD"));
     const size_t colAbsc = size_t(table.columnIndex("ABSC_CURV"));
     const Mesh& mesh = *b.field->mesh;
     std::vector<size_t> compCol;
@@ -158,17 +221,8 @@ void addBlockRows(const Block& b, Table& table) {
             absc += std::sqrt((x[0] - p[0]) * (x[0] - p[0]) + (x[1] - p[1]) * (x[1] - p[1]) +
                               (x[2] - p[2]) * (x[2] - p[2]));
         }
-        const size_t r = table.addRow();
-        table.set(r, colTitle, b.action->title);
+        const size_t r = startRow(b, table);
         table.set(r, colNode, mesh.nodeNames[size_t(n)]);
-        if (b.step) {
-            table.set(r, size_t(colResu), b.action->result->name);
-            table.set(r, size_t(colName), b.action->fieldName);
-            table.set(r, size_t(colOrder), static_cast<long long>(b.step->order));
-            table.set(r, size_t(colInst), b.step->inst);
-        } else {
-            table.set(r, size_t(colField), b.field->name);
-        }
         table.set(r, colAbsc, absc);
         for (int d = 0; d < 3; ++d) table.set(r, colAbsc + 1 + size_t(d), x[size_t(d)]);
         for (size_t j = 0; j < b.comps.size(); ++j)
@@ -182,7 +236,10 @@ std::shared_ptr<Table> extractNodalValues(const std::vector<NodalExtraction>& ac
     auto table = std::make_shared<Table>();
     const Extraction x = resolve(actions);
     declareColumns(x, *table);
-    for (const Block& b : x.blocks) addBlockRows(b, *table);
+    for (const Block& b : x.blocks) {
+        if (b.action->resultant) addResultantRow(b, *table);
+        else addNodeRows(b, *table);
+    }
     return table;
 }
 

@@ -1,6 +1,9 @@
 #pragma once
 // POST_RELEVE_T, OPERATION='EXTRACTION' on nodal fields (commands_spec.md §2): one row per
-// (action, order, node) with code_aster's columns in code_aster's order.
+// (action, order, node) with code_aster's columns in code_aster's order; with RESULTANTE one row per
+// (action, order): the sum over the nodes of each component, and with MOMENT also the moment about
+// POINT, in the columns RESULT_X/Y/Z, MOMENT_X/Y/Z (code_aster's rvpara / rvpsts).
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,7 +26,10 @@ struct NodalExtraction {
     // ... or CHAM_GD.
     std::shared_ptr<const NodalField> field;
     bool allComponents = true;            // TOUT_CMP='OUI'
-    std::vector<std::string> components;  // NOM_CMP
+    std::vector<std::string> components;  // NOM_CMP, or RESULTANTE when `resultant`
+    bool resultant = false;               // RESULTANTE: sums over the nodes
+    bool moment = false;                  // MOMENT (with RESULTANTE): the moment about `point` too
+    std::array<double, 3> point{};        // POINT (z = 0 when two values are given)
 };
 
 std::shared_ptr<Table> extractNodalValues(const std::vector<NodalExtraction>& actions);

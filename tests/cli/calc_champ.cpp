@@ -80,7 +80,10 @@ TEST_F(CalcChampSsnv511e, SigmNoeuIsTheExactBlockStateAtEveryNode) {
     for (const auto& field : meshes[0].fields) {
         ASSERT_EQ(field.steps.size(), 2u) << field.name;
         const auto& last = field.steps[1];
-        if (field.name == "UTOT1___SIGM_NOEU") {
+        if (field.name == "UTOT1___SIGM_ELGA") {
+            ASSERT_TRUE(last.cellPoints);
+            EXPECT_FALSE(last.cellPoints->atNodes);
+        } else if (field.name == "UTOT1___SIGM_NOEU") {
             ASSERT_TRUE(last.nodal);
             for (int n = 0; n < mesh.nodeCount(); ++n) {
                 const auto exact = exactStress(mesh.coords[size_t(n)][0], mesh.coords[size_t(n)][1]);
@@ -90,6 +93,7 @@ TEST_F(CalcChampSsnv511e, SigmNoeuIsTheExactBlockStateAtEveryNode) {
         } else if (field.name == "UTOT1___SIGM_ELNO") {
             ASSERT_TRUE(last.cellPoints);
             const auto& g = *last.cellPoints;
+            EXPECT_TRUE(g.atNodes);  // read from MED_NODE_ELEMENT
             for (size_t e = 0; e < g.cells.size(); ++e) {
                 const auto nodes = mesh.cellNodes(g.cells[e]);
                 ASSERT_EQ(g.pointOffsets[e + 1] - g.pointOffsets[e], int(nodes.size()));
@@ -172,7 +176,7 @@ TEST(CalcChampStatic, UnsupportedOptionsAreRefusedBeforeTheSolve) {
     const auto fin = comm.rfind("\nFIN(");
     ASSERT_NE(fin, std::string::npos);
     const std::string extra =
-        "UTOT1=CALC_CHAMP(reuse=UTOT1, RESULTAT=UTOT1, CONTRAINTE='SIGM_NOEU', FORCE='REAC_NODA')\n"
+        "UTOT1=CALC_CHAMP(reuse=UTOT1, RESULTAT=UTOT1, CONTRAINTE='SIGM_NOEU', ENERGIE='EPOT_ELEM')\n"
         "R=CALC_CHAMP(RESULTAT=UTOT1, CONTRAINTE='EFGE_ELNO')\n";
     ma::test::writeText(dir / "t.comm", comm.substr(0, fin + 1) + extra + comm.substr(fin + 1));
     const auto r = ma::test::runMiniaster(dir, "t.comm", "--mesh '" + ma::test::astest("ssnv511a.mmed") + "'");
@@ -181,7 +185,7 @@ TEST(CalcChampStatic, UnsupportedOptionsAreRefusedBeforeTheSolve) {
     EXPECT_NE(mess.find("problems found in the command file before its first command (none was run)"),
               std::string::npos)
         << mess;
-    EXPECT_NE(mess.find(": CALC_CHAMP: keyword FORCE is not supported by miniaster (miniaster's CALC_CHAMP computes "
+    EXPECT_NE(mess.find(": CALC_CHAMP: keyword ENERGIE is not supported by miniaster (miniaster's CALC_CHAMP computes "
                         "CONTRAINTE"),
               std::string::npos)
         << mess;
