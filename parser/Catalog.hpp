@@ -148,6 +148,10 @@ struct Keyword {
     // Text values: a check beyond `into`, run by the static check (empty when accepted, else why
     // not: "is not a Fortran real format ..."), e.g. FORMAT_R.
     std::function<std::string(const std::string&)> textCheck;
+    // A keyword of a factor that miniaster does only for some values of a keyword of the command
+    // (IMPR_RESU's RESU/GROUP_NO with FORMAT='RESULTAT'): the static check refuses it otherwise.
+    std::string onlyWithKeyword;
+    std::vector<std::string> onlyWithValues;
 
     // Factor keyword content, or block content.
     std::vector<Keyword> content;
@@ -214,6 +218,11 @@ struct Keyword {
     }
     Keyword& checkedBy(std::function<std::string(const std::string&)> check) {
         textCheck = std::move(check);
+        return *this;
+    }
+    Keyword& onlyWith(std::string commandKeyword, std::vector<std::string> values) {
+        onlyWithKeyword = std::move(commandKeyword);
+        onlyWithValues = std::move(values);
         return *this;
     }
     Keyword& storeAs(std::string current) {

@@ -48,7 +48,7 @@ def _defined_names(tree):
     return defined, opaque
 
 def _unknown_keyword(path, command, where, level):
-    known = ", ".join(sorted(k for k, (supported, _, _) in level.items() if supported))
+    known = ", ".join(sorted(k for k, (supported, _, _, _) in level.items() if supported))
     return "unknown keyword %s for %s (known keywords%s: %s)" % (path, command, where, known)
 
 def _literal(node):
@@ -60,8 +60,15 @@ def _literal(node):
     ok = all(isinstance(x, (str, float)) or (isinstance(x, int) and not isinstance(x, bool)) for x in items)
     return items if ok and items else None
 
-def _check_value(kw, path, command, line, level, problems):
-    supported, _, checker = level[kw.arg]
+def _check_value(kw, path, command, line, level, problems, top=None):
+    supported, _, checker, only_with = level[kw.arg]
+    if only_with is not None and top is not None:
+        name, values, default = only_with
+        given = top.get(name, [default] if default is not None else None)
+        if given is not None and len(given) == 1 and given[0] not in values:
+            problems.append((line, command, "keyword %s is not supported by miniaster with %s='%s' (only with %s)"
+                             % (path, name, given[0], " or ".join("%s='%s'" % (name, v) for v in values))))
+            return
     if not supported:  # checker: the reason, as the run gives it; None stands for an absent keyword
         if not (isinstance(kw.value, ast.Constant) and kw.value.value is None):
             problems.append(
@@ -79,6 +86,8 @@ def _factor_calls(value):
             yield i, item
 
 def _check_call(call, command, level, context_keywords, f_is_ours, problems):
+    top = {kw.arg: _literal(kw.value) for kw in call.keywords if kw.arg is not None}
+    top = {k: v for k, v in top.items() if v is not None}
     for kw in call.keywords:
         if kw.arg is None or kw.arg == "reuse":
             continue  # **kwargs: seen by the run
@@ -99,7 +108,7 @@ def _check_call(call, command, level, context_keywords, f_is_ours, problems):
                     problems.append((call.lineno, command,
                                      _unknown_keyword(where + "/" + fkw.arg, command, " in " + where, sub)))
                 else:
-                    _check_value(fkw, where + "/" + fkw.arg, command, call.lineno, sub, problems)
+                    _check_value(fkw, where + "/" + fkw.arg, command, call.lineno, sub, problems, top)
 
 def check(source, catalog, unsupported):
     try:
@@ -144,27 +153,47 @@ py::object valueChecker(const cata::Keyword& def) {
 
 // Keyword names of one catalog level, blocks flattened (a keyword of any block is known here; one
 // that several blocks define may take other values in each: its values are left to the run).
-void addLevel(const std::vector<cata::Keyword>& content, py::dict& level) {
+// The default text of the command's keyword `name` (blocks included), or None.
+py::object commandDefault(const std::vector<cata::Keyword>& content, const std::string& name) {
     for (const auto& k : content) {
         if (k.kind == cata::Keyword::Kind::Block) {
-            addLevel(k.content, level);
+            if (auto d = commandDefault(k.content, name); !d.is_none()) return d;
+        } else if (k.name == name && k.hasDefault() && std::holds_alternative<std::string>(k.defaultValues.front())) {
+            return py::str(std::get<std::string>(k.defaultValues.front()));
+        }
+    }
+    return py::none();
+}
+
+// (keyword of the command, its values for which `k` is supported, its default) or None.
+py::object onlyWithOf(const cata::Keyword& k, const std::vector<cata::Keyword>& command) {
+    if (k.onlyWithKeyword.empty()) return py::none();
+    return py::make_tuple(k.onlyWithKeyword, k.onlyWithValues, commandDefault(command, k.onlyWithKeyword));
+}
+
+void addLevel(const std::vector<cata::Keyword>& content, py::dict& level, const std::vector<cata::Keyword>& command) {
+    for (const auto& k : content) {
+        if (k.kind == cata::Keyword::Kind::Block) {
+            addLevel(k.content, level, command);
             continue;
         }
         const bool supported = k.kind != cata::Keyword::Kind::Unsupported;
         if (level.contains(k.name.c_str())) {
             py::tuple seen = level[k.name.c_str()];
             const bool either = seen[0].cast<bool>() || supported;
-            level[k.name.c_str()] = py::make_tuple(either, seen[1], either ? py::object(py::none()) : seen[2]);
+            level[k.name.c_str()] =
+                py::make_tuple(either, seen[1], either ? py::object(py::none()) : seen[2], py::none());
             continue;
         }
         py::object sub = py::none();
         if (k.kind == cata::Keyword::Kind::Factor) {
             py::dict d;
-            addLevel(k.content, d);
+            addLevel(k.content, d, command);
             sub = d;
         }
         // An unsupported keyword carries its reason instead of a value check.
-        level[k.name.c_str()] = py::make_tuple(supported, sub, supported ? valueChecker(k) : py::str(k.why));
+        level[k.name.c_str()] =
+            py::make_tuple(supported, sub, supported ? valueChecker(k) : py::str(k.why), onlyWithOf(k, command));
     }
 }
 
@@ -172,7 +201,7 @@ py::dict catalogForCheck() {
     py::dict commands;
     for (const auto& [name, command] : Catalog::instance().commands()) {
         py::dict level;
-        addLevel(command.content, level);
+        addLevel(command.content, level, command.content);
         commands[name.c_str()] = py::make_tuple(level, command.acceptsContextKeywords);
     }
     return commands;

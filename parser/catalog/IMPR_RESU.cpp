@@ -1,4 +1,5 @@
 // IMPR_RESU: results written as MED or GMSH files, a mesh as code_aster's text (RESULTAT, ASTER).
+#include "core/FortranFormat.hpp"
 #include "parser/catalog/common/Types.hpp"
 
 namespace ma::catalog_entries {
@@ -18,14 +19,22 @@ void IMPR_RESU(Catalog& c) {
                    {TXM("NOM_CHAM").many(), I("NUME_ORDRE").many(), TXM("TOUT_ORDRE").into({"OUI"}), R("INST").many(),
                     critere(), R("PRECISION").def(1.0e-6)},
                    {exclus({"NUME_ORDRE", "TOUT_ORDRE", "INST"})}),
-              TXM("NOM_CMP").many(), yesNo("INFO_MAILLAGE").def("NON"),
-              // FORMAT='GMSH' only (IMPR_RESU refuses them with MED).
-              TXM("TYPE_CHAM").into({"SCALAIRE", "VECT_2D", "VECT_3D", "TENS_2D", "TENS_3D"}),
-              TXM("GROUP_MA").many(), TXM("MAILLE").many()},
-             unsupported({"GROUP_NO", "NOEUD", "NOM_CHAM_MED", "CARA_ELEM", "IMPR_NOM_VARI",
-                          "PARTIE", "LIST_INST", "LIST_ORDRE", "FREQ", "NUME_MODE", "TOUT_CHAM", "NOM_CMP_MED",
-                          "NOM_RESU_MED", "VALE_MAX", "VALE_MIN", "SOUS_TITRE", "FORMAT_R"},
-                         "not supported by miniaster's MED output"),
+              TXM("NOM_CMP").many(), TXM("TOUT_CMP").into({"OUI"}), yesNo("INFO_MAILLAGE").def("NON"),
+              TXM("TYPE_CHAM").into({"SCALAIRE", "VECT_2D", "VECT_3D", "TENS_2D", "TENS_3D"}).onlyWith("FORMAT", {"GMSH"}),
+              TXM("GROUP_MA").many().onlyWith("FORMAT", {"GMSH", "RESULTAT"}),
+              TXM("MAILLE").many().onlyWith("FORMAT", {"GMSH"}),
+              // The listing (FORMAT='RESULTAT', commands/ImprResuListing.cpp).
+              TXM("GROUP_NO").many().onlyWith("FORMAT", {"RESULTAT"}),
+              TXM("NOEUD").many().onlyWith("FORMAT", {"RESULTAT"}),
+              TXM("VALE_MAX").into({"OUI"}).onlyWith("FORMAT", {"RESULTAT"}),
+              TXM("VALE_MIN").into({"OUI"}).onlyWith("FORMAT", {"RESULTAT"}),
+              R("BORNE_SUP").onlyWith("FORMAT", {"RESULTAT"}), R("BORNE_INF").onlyWith("FORMAT", {"RESULTAT"}),
+              yesNo("IMPR_COOR").def("NON").onlyWith("FORMAT", {"RESULTAT"}),
+              TXM("FORMAT_R").def("1PE21.14").checkedBy(fortranFormatProblem).onlyWith("FORMAT", {"RESULTAT"})},
+             unsupported({"NOM_CHAM_MED", "CARA_ELEM", "IMPR_NOM_VARI", "PARTIE", "LIST_INST", "LIST_ORDRE", "FREQ",
+                          "NUME_MODE", "TOUT_CHAM", "NOM_CMP_MED", "NOM_RESU_MED", "SOUS_TITRE", "TOUT_PARA",
+                          "NOM_PARA", "FORM_TABL"},
+                         "not supported by miniaster's IMPR_RESU"),
          }))
              .rules({auMoinsUn({"MAILLAGE", "RESULTAT", "CHAM_GD"}), exclus({"RESULTAT", "CHAM_GD"})}),
          info()},

@@ -2,12 +2,14 @@
 // orders (code_aster names: result name padded with '_' to 8 + NOM_CHAM), or a lone field.
 // The first IMPR_RESU of a run on a unit creates the file; later ones on the same unit add to it,
 // as code_aster does (docs/med.md). FORMAT='RESULTAT' / 'ASTER': a mesh as a .mail text
-// (mesh/AsterMeshWriter), on the .resu (UNITE 8) or a unit.
+// (mesh/AsterMeshWriter), nodal fields as code_aster's listing (ImprResuListing), on the .resu
+// (UNITE 8) or a unit.
 #include <fmt/format.h>
 
 #include <set>
 
 #include "commands/ImprResuGmsh.hpp"
+#include "commands/ImprResuListing.hpp"
 #include "commands/TextUnit.hpp"
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
@@ -147,17 +149,19 @@ void printField(med::MedWriter& w, const ConceptPtr& field, const KeywordSet& oc
     }
 }
 
-// FORMAT='RESULTAT' (UNITE 8: the .resu) or 'ASTER': each RESU/MAILLAGE as a .mail text.
+// FORMAT='RESULTAT' (UNITE 8: the .resu) or 'ASTER': each RESU/MAILLAGE as a .mail text; with
+// 'RESULTAT' the nodal fields of RESULTAT / CHAM_GD as code_aster lists them.
 ConceptPtr imprResuText(const KeywordSet& kw, CommandContext& ctx) {
     const std::string format = kw.text("FORMAT");
     std::string text;
     for (const auto& occ : kw.factor("RESU")) {
         for (const char* k : {"RESULTAT", "CHAM_GD"})
-            if (occ.has(k))
-                throw NotImplemented(
-                    fmt::format("{} with FORMAT='{}': miniaster prints a mesh (MAILLAGE) in this "
-                                "format, not fields; print fields with FORMAT='MED' or 'GMSH'",
-                                occ.pathOf(k), format));
+            if (occ.has(k) && format == "ASTER")
+                throw UserError(
+                    fmt::format("{} with FORMAT='ASTER': this format prints a mesh (MAILLAGE), not "
+                                "fields; print fields with FORMAT='RESULTAT', 'MED' or 'GMSH'",
+                                occ.pathOf(k)));
+        if (occ.has("RESULTAT") || occ.has("CHAM_GD")) text += resuListing(occ);
         if (!occ.has("MAILLAGE")) continue;
         auto mesh = occ.object<Mesh>("MAILLAGE");
         text +=
@@ -176,8 +180,9 @@ ConceptPtr imprResu(const KeywordSet& kw, CommandContext& ctx) {
     if (format == "RESULTAT" || format == "ASTER") return imprResuText(kw, ctx);
     if (format != "MED")
         throw NotImplemented("IMPR_RESU: FORMAT='" + format + "' is not supported; use FORMAT='MED' or 'GMSH'");
-    for (const auto& occ : kw.factor("RESU"))  // keywords of the GMSH output only
-        for (const char* k : {"TYPE_CHAM", "GROUP_MA", "MAILLE"})
+    for (const auto& occ : kw.factor("RESU"))  // keywords of the GMSH and RESULTAT outputs only
+        for (const char* k :
+             {"TYPE_CHAM", "GROUP_MA", "MAILLE", "GROUP_NO", "NOEUD", "VALE_MAX", "VALE_MIN", "BORNE_SUP", "BORNE_INF"})
             if (occ.has(k)) throw NotImplemented(occ.pathOf(k) + " is not supported by miniaster's MED output");
     if (!ctx.units) throw UserError("IMPR_RESU: no logical units are defined for this run");
     const int unit = int(kw.integer("UNITE"));

@@ -29,6 +29,11 @@ inline constexpr Message<std::string, std::string, int, std::string> RESULT1_6{
 // FORMAT='GMSH': TYPE_CHAM.
 inline constexpr Message<std::string, std::string> PREPOST6_35{
     "PREPOST6_35", "{}: a field at Gauss points is written as scalar views (one per component), not as TYPE_CHAM='{}'"};
+// FORMAT='RESULTAT' without NOM_CHAM: the fields at integration points, the result, NUME_ORDRE.
+inline constexpr Message<std::string, std::string, std::string, int> PREPOST_LISTING{
+    "PREPOST_LISTING",
+    "{}: fields {} of result {} at NUME_ORDRE {} are at integration points: miniaster's FORMAT='RESULTAT' lists "
+    "nodal fields only, they are not printed"};
 // The field, the result.
 inline constexpr Message<std::string, std::string, std::string> PREPOST2_59{
     "PREPOST2_59", "{}: no field {} in result {} at the selected steps; nothing written for it"};
@@ -39,8 +44,8 @@ inline constexpr Message<std::string, std::string, size_t, std::string> ALGELINE
     "linear cells)"};
 
 inline constexpr MessageText postMessages[] = {
-    entry(TEST0_11),  entry(TEST0_12),    entry(CALCULEL6_96), entry(TABLE0_7),
-    entry(RESULT1_6), entry(PREPOST6_35), entry(PREPOST2_59),  entry(ALGELINE_64),
+    entry(TEST0_11),    entry(TEST0_12),        entry(CALCULEL6_96), entry(TABLE0_7),    entry(RESULT1_6),
+    entry(PREPOST6_35), entry(PREPOST_LISTING), entry(PREPOST2_59),  entry(ALGELINE_64),
 };
 
 }  // namespace ma
