@@ -39,7 +39,9 @@ size_t count(const std::string& text, const std::string& what) {
 // Python expressions of the case's exact 3x3 stress and strain (numpy arrays).
 std::string uniformChecks(const std::string& result, const std::string& sig, const std::string& eps) {
     return "import numpy as np\n"
-           "S = np.array(" + sig + "); EPS = np.array(" + eps + ")\n"
+           "S = np.array(" +
+           sig + "); EPS = np.array(" + eps +
+           ")\n"
            "w = np.linalg.eigvalsh(S); tr = np.trace(S); dev = S - tr / 3 * np.eye(3)\n"
            "vm = float(np.sqrt(1.5 * np.sum(dev * dev)))\n"
            "sieq = {'VMIS': vm, 'TRESCA': w[2] - w[0], 'PRIN_1': w[0], 'PRIN_2': w[1], 'PRIN_3': w[2],\n"
@@ -51,13 +53,16 @@ std::string uniformChecks(const std::string& result, const std::string& sig, con
            "    for place in ('ELGA', 'ELNO', 'NOEU'):\n"
            "        for cmp, v in exact.items():\n"
            "            for tt in ('MIN', 'MAX'):\n"
-           "                TEST_RESU(RESU=_F(RESULTAT=" + result + ", NUME_ORDRE=1, NOM_CHAM=family + '_' + place,\n"
+           "                TEST_RESU(RESU=_F(RESULTAT=" +
+           result +
+           ", NUME_ORDRE=1, NOM_CHAM=family + '_' + place,\n"
            "                    NOM_CMP=cmp, TYPE_TEST=tt, VALE_CALC=float(v), VALE_REFE=float(v),\n"
            "                    REFERENCE='ANALYTIQUE', CRITERE='ABSOLU', PRECISION=1.E-9 * scale[family]))\n";
 }
 
-const char* kCalc = "=CALC_CHAMP(RESULTAT=RES1, CRITERES=('SIEQ_ELGA', 'SIEQ_ELNO', 'SIEQ_NOEU'),\n"
-                    "                  DEFORMATION=('EPSI_ELGA', 'EPSI_ELNO', 'EPSI_NOEU'))\n";
+const char* kCalc =
+    "=CALC_CHAMP(RESULTAT=RES1, CRITERES=('SIEQ_ELGA', 'SIEQ_ELNO', 'SIEQ_NOEU'),\n"
+    "                  DEFORMATION=('EPSI_ELGA', 'EPSI_ELNO', 'EPSI_NOEU'))\n";
 
 // HEXA8, u = A x + c imposed on the whole skin: eps = sym(A), sigma = lambda tr(eps) I + 2 mu eps.
 TEST(CalcChampCriteria, UniformGeneralStateIn3dAtEveryPlace) {
