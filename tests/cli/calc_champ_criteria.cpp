@@ -16,19 +16,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string readAll(const std::string& path) {
-    std::ifstream in(path);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-std::string withBeforeFin(const std::string& comm, const std::string& extra) {
-    const auto fin = comm.rfind("\nFIN(");
-    EXPECT_NE(fin, std::string::npos);
-    return comm.substr(0, fin + 1) + extra + comm.substr(fin + 1);
-}
-
 size_t count(const std::string& text, const std::string& what) {
     size_t n = 0;
     for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
@@ -69,7 +56,7 @@ TEST(CalcChampCriteria, UniformGeneralStateIn3dAtEveryPlace) {
     const auto dir = ma::test::freshDir();
     const std::string src = std::string(MINIASTER_SOURCE_DIR) + "/astest/fe_patch_hexa8";
     const std::string extra = std::string("DIM = 3\nR1") + kCalc + uniformChecks("R1", "sig", "eps");
-    ma::test::writeText(dir / "t.comm", withBeforeFin(readAll(src + ".comm"), extra));
+    ma::test::writeText(dir / "t.comm", ma::test::beforeFin(ma::test::readText(src + ".comm"), extra));
     const auto r = ma::test::runMiniaster(dir, "t.comm", "--mesh '" + src + ".mmed'");
     ASSERT_EQ(r.status, 0) << r.output << r.file("out/t.mess");
     const std::string resu = r.file("out/t.resu");
@@ -89,7 +76,7 @@ TEST(CalcChampCriteria, PlaneStressHasItsFreeThicknessStrain) {
                               "ezz = -nu / (1 - nu) * (exx + eyy)\n" +
                               uniformChecks("R1", "[[sxx, 2 * mu * exy, 0], [2 * mu * exy, syy, 0], [0, 0, 0]]",
                                             "[[exx, exy, 0], [exy, eyy, 0], [0, 0, ezz]]");
-    ma::test::writeText(dir / "t.comm", withBeforeFin(readAll(src + ".comm"), extra));
+    ma::test::writeText(dir / "t.comm", ma::test::beforeFin(ma::test::readText(src + ".comm"), extra));
     const auto r = ma::test::runMiniaster(dir, "t.comm", "--mesh '" + src + ".mmed'");
     ASSERT_EQ(r.status, 0) << r.output << r.file("out/t.mess");
     const std::string resu = r.file("out/t.resu");
@@ -120,7 +107,8 @@ TEST(CalcChampCriteria, XfemBlockStatesAtEveryNodeInTheMedFile) {
         "    for tt, v in (('MIN', min(values)), ('MAX', max(values))):\n"
         "        TEST_RESU(RESU=_F(RESULTAT=RES_XFEM, NUME_ORDRE=1, NOM_CHAM=cham, NOM_CMP=cmp, TYPE_TEST=tt,\n"
         "                          VALE_CALC=v, VALE_REFE=v, REFERENCE='ANALYTIQUE', PRECISION=1.E-9))\n";
-    ma::test::writeText(dir / "t.comm", withBeforeFin(readAll(ma::test::astest("ssnv511e.comm")), extra));
+    ma::test::writeText(dir / "t.comm",
+                        ma::test::beforeFin(ma::test::readText(ma::test::astest("ssnv511e.comm")), extra));
     const auto r = ma::test::runMiniaster(dir, "t.comm", "--mesh '" + ma::test::astest("ssnv511a.mmed") + "'");
     ASSERT_EQ(r.status, 2) << r.output;  // ssnv511e's own inexact NON_REGRESSION values (README)
     const std::string resu = r.file("out/t.resu");
@@ -172,7 +160,7 @@ TEST(CalcChampCriteria, OtherCriteriaAndStrainsAreRefusedStatically) {
     const auto dir = ma::test::freshDir();
     const std::string src = std::string(MINIASTER_SOURCE_DIR) + "/astest/fe_patch_tria3";
     const std::string extra = "R1=CALC_CHAMP(RESULTAT=RES1, CRITERES='EPEQ_NOEU', DEFORMATION='EPSG_ELGA')\n";
-    ma::test::writeText(dir / "t.comm", withBeforeFin(readAll(src + ".comm"), extra));
+    ma::test::writeText(dir / "t.comm", ma::test::beforeFin(ma::test::readText(src + ".comm"), extra));
     const auto r = ma::test::runMiniaster(dir, "t.comm", "--mesh '" + src + ".mmed'");
     EXPECT_EQ(r.status, 1) << r.output;
     const std::string mess = r.file("out/t.mess");
