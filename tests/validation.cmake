@@ -108,3 +108,28 @@ set_tests_properties(astest.fjunction_invariants PROPERTIES FIXTURES_REQUIRED fj
 add_test(NAME original_resplit.ssnv511h
          COMMAND ${CMAKE_SOURCE_DIR}/tests/resplit_check.sh $<TARGET_FILE:miniaster-bin> $<TARGET_FILE:resplit_layer>
                  ${CMAKE_SOURCE_DIR}/../shared/astest ${CMAKE_BINARY_DIR}/astest-out/resplit_ssnv511h)
+
+# The originals with other SOLVEUR settings (tests/solveur_variant.py: a copy of the .comm under the
+# build folder with SOLVEUR=_F(...) in its solving calls): the same TEST results as the original run,
+# and the .mess shows the setting reached the solver (docs/solver.md).
+function(miniaster_solveur_variant _label _name _keywords _expect)
+  set(_opt "")
+  if(_name IN_LIST MINIASTER_ORIGINALS_INEXACT_VALE_CALC)
+    set(_opt --allow-nonregression-nook)
+  endif()
+  add_test(NAME original_solveur_${_label}.${_name}
+           COMMAND ${Python_EXECUTABLE} ${CMAKE_SOURCE_DIR}/tests/solveur_variant.py $<TARGET_FILE:miniaster-bin>
+                   ${_run} ${CMAKE_SOURCE_DIR}/../shared/astest ${_name}
+                   ${CMAKE_BINARY_DIR}/astest-out/solveur_${_label}_${_name} ${CMAKE_BINARY_DIR}/astest-out/${_name}
+                   "${_keywords}" "${_expect}" ${_opt})
+  set_tests_properties(original_solveur_${_label}.${_name} PROPERTIES FIXTURES_REQUIRED one_process.${_name})
+endfunction()
+foreach(_name ssnv511e ssnv511f ssnv511g ssnv511h)
+  miniaster_solveur_variant(mixer_precision ${_name} "METHODE='MUMPS', MIXER_PRECISION='OUI'"
+                            "MUMPS (single-precision factors) solve")
+endforeach()
+miniaster_solveur_variant(filtrage_matrice ssnv511e "METHODE='MUMPS', FILTRAGE_MATRICE=1e-12, MIXER_PRECISION='OUI'"
+                          "FILTRAGE_MATRICE=1e-12: ")
+miniaster_solveur_variant(resi_rela ssnv511b "METHODE='MUMPS', RESI_RELA=1e-12" "RESI_RELA=1e-12")
+miniaster_solveur_variant(out_of_core ssnv511a "METHODE='MUMPS', GESTION_MEMOIRE='OUT_OF_CORE'"
+                          "MUMPS out of core (ICNTL(22)=1)")

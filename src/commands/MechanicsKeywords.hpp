@@ -102,6 +102,16 @@ inline SolverOptions solverOptions(const KeywordSet& kw, int info) {
         o.pcentPivot = std::holds_alternative<long long>(v) ? int(std::get<long long>(v)) : int(std::get<double>(v));
     }
     if (s.has("STOP_SINGULIER") && s.text("STOP_SINGULIER") == "NON") o.nprec = -1;
+    if (o.method == "MUMPS") {
+        o.resiRela = s.real("RESI_RELA");
+        o.memory = s.text("GESTION_MEMOIRE");
+        if (s.has("MIXER_PRECISION")) o.mixedPrecision = s.text("MIXER_PRECISION") == "OUI";
+        if (s.has("FILTRAGE_MATRICE")) o.matrixFilter = s.real("FILTRAGE_MATRICE");
+        if (o.mixedPrecision || o.matrixFilter > 0.0 || o.resiRela > 0.0 || o.memory != "AUTO")
+            msg().infof(
+                "    SOLVEUR: MIXER_PRECISION='{}', RESI_RELA={:g}, FILTRAGE_MATRICE={:g}, GESTION_MEMOIRE='{}'",
+                o.mixedPrecision ? "OUI" : "NON", o.resiRela, o.matrixFilter, o.memory);
+    }
     // MUMPS pre/post-processing with code_aster's meaning (docs/fe.md, "Linear solvers"):
     // PRETRAITEMENTS='SANS' -> no scaling of the matrix; POSTTRAITEMENTS='SANS' -> no iterative
     // refinement, 'MINI' -> one step, 'AUTO' -> at most 4 (code_aster's ICNTL(10)=4), 'FORCE' -> at

@@ -35,6 +35,18 @@ struct SolverOptions {
     std::string typeResol = "AUTO";  // MUMPS TYPE_RESOL: SYMDEF forces SYM=1 on SPD systems
     // MUMPS ACCELERATION: AUTO and FR* full rank; LR* refused (MumpsSolver.cpp says why).
     std::string acceleration = "AUTO";
+    // MUMPS MIXER_PRECISION='OUI': single-precision factors (smumps) refined against the double
+    // matrix until the answer meets RESI_RELA (or, without it, double-precision round-off).
+    bool mixedPrecision = false;
+    // RESI_RELA: a solve whose relative residual ||Ax-b||/||b|| stays above it is an error naming
+    // the solver; <= 0: no check (the alarm FACTOR_57 above 1e-6 only).
+    double resiRela = -1.0;
+    // MUMPS FILTRAGE_MATRICE: off-diagonal entries with |a_ij| < f (|a_ii| + |a_jj|) are left out of
+    // the factorised matrix (the refinement works against the whole one); <= 0: none.
+    double matrixFilter = -1.0;
+    // MUMPS GESTION_MEMOIRE: IN_CORE, OUT_OF_CORE (factors on disk under TMPDIR), AUTO (in core
+    // unless the analysis' estimate exceeds the available memory), EVAL (estimates, then stop).
+    std::string memory = "AUTO";
     bool conditionEstimate = false;  // MUMPS ICNTL(11)=1: condition numbers (costs a few solves)
     bool diagonalScaling = true;     // factorise D^-1/2 A D^-1/2 (code_aster: PRETRAITEMENTS)
     int maxRefinementSteps = 3;      // iterative refinement while it helps; 0 = none (POSTTRAITEMENTS)

@@ -73,7 +73,15 @@ protected:
 
     SolverOptions options_;
 
+    // MIXER_PRECISION: at most this many refinement steps, and without RESI_RELA the componentwise
+    // backward error they must reach (a double-precision factorisation ends at ~1e-16).
+    static constexpr int kMixedMaxSteps = 30;
+    static constexpr double kMixedBackwardError = 1e-12;
+
 private:
+    // RESI_RELA, and the convergence of a mixed-precision refinement: a NumericalError naming the
+    // solver, never a silent inaccurate answer.
+    void checkAccuracy(const ResidualInfo& res, int steps) const;
     ResidualInfo residual(std::span<const double> x, std::span<const double> b, std::vector<double>& r) const;
 
     const CsrMatrix* A_ = nullptr;
