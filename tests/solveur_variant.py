@@ -4,7 +4,7 @@ TEST results as the original run (tests/validation.cmake, docs/solver.md).
 
 The original is never modified: its .export and .comm are copied under WORK, the copy's data files
 point back to the originals (absolute paths), and in the copied .comm every MECA_STATIQUE and
-STAT_NON_LINE call gets SOLVEUR=_F(<keywords>) (with those of the call's own SOLVEUR it does not set). The
+STAT_NON_LINE call gets SOLVEUR=_F(<keywords>) (with those of the call's own SOLVEUR it does not set, when the METHODE stays the same). The
 copy is then run by tools/run_validation.sh with --same-tests-as the one-process run, and the .mess
 must show that the setting reached the solver (--expect).
 
@@ -44,7 +44,12 @@ def merged(original, keywords):
     """The original SOLVEUR keywords (e.g. NPREC=-1) kept unless `keywords` sets them."""
     def pairs(text):
         return [p.strip() for p in text.split(",") if "=" in p]
+    def method(items):
+        return next((p.split("=")[1].strip() for p in items if p.split("=")[0].strip() == "METHODE"), None)
     mine = {p.split("=")[0].strip() for p in pairs(keywords)}
+    # Another METHODE: the original's keywords belong to its own method's block (NPREC to MUMPS...).
+    if method(pairs(keywords)) not in (None, method(pairs(original))):
+        return ", ".join(pairs(keywords))
     kept = [p for p in pairs(original) if p.split("=")[0].strip() not in mine]
     return ", ".join(pairs(keywords) + kept)
 

@@ -102,6 +102,17 @@ inline SolverOptions solverOptions(const KeywordSet& kw, int info) {
         o.pcentPivot = std::holds_alternative<long long>(v) ? int(std::get<long long>(v)) : int(std::get<double>(v));
     }
     if (s.has("STOP_SINGULIER") && s.text("STOP_SINGULIER") == "NON") o.nprec = -1;
+    if (o.method == "PETSC" || o.method == "GCPC") {
+        o.resiRela = s.real("RESI_RELA");
+        o.preconditioner = s.text("PRE_COND");
+        if (o.method == "PETSC") o.algorithm = s.text("ALGORITHME"), o.petscOptions = s.text("OPTION_PETSC");
+        o.maxIterations = int(s.integer("NMAX_ITER"));
+        o.reacPrecond = int(s.integer("REAC_PRECOND"));
+        o.fillLevel = int(s.integer("NIVE_REMPLISSAGE"));
+        msg().infof("    SOLVEUR: METHODE='{}', ALGORITHME='{}', PRE_COND='{}', RESI_RELA={:g}, NMAX_ITER={}{}",
+                    o.method, o.method == "GCPC" ? "CG" : o.algorithm, o.preconditioner, o.resiRela, o.maxIterations,
+                    o.petscOptions.empty() ? "" : ", OPTION_PETSC='" + o.petscOptions + "'");
+    }
     if (o.method == "MUMPS") {
         o.resiRela = s.real("RESI_RELA");
         o.memory = s.text("GESTION_MEMOIRE");

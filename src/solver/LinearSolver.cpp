@@ -20,9 +20,7 @@ namespace ma {
 std::unique_ptr<LinearSolver> makeLinearSolver(const SolverOptions& options) {
     if (options.method == "MUMPS") return makeMumpsSolver(options);
     if (options.method == "MULT_FRONT" || options.method == "LDLT") return makeEigenSolver(options);
-    if (options.method == "GCPC" || options.method == "PETSC")
-        throw NotImplemented("SOLVEUR/METHODE='" + options.method +
-                             "': miniaster has only direct solvers (MUMPS, MULT_FRONT, LDLT)");
+    if (options.method == "GCPC" || options.method == "PETSC") return makePetscSolver(options);
     throw UserError("SOLVEUR/METHODE='" + options.method + "' is not a solver method");
 }
 
@@ -195,6 +193,13 @@ double ScaledDirectSolver::solve(std::span<double> rhs) {
     checkSolution(rhs, res.normwise, options_);
     checkAccuracy(res, steps);
     return res.normwise;
+}
+
+void ScaledDirectSolver::applyFactors(std::span<double> v) {
+    const size_t n = v.size();
+    for (size_t i = 0; i < n; ++i) v[i] *= scale_[i];
+    solveScaled(v);
+    for (size_t i = 0; i < n; ++i) v[i] *= scale_[i];
 }
 
 void ScaledDirectSolver::checkAccuracy(const ResidualInfo& res, int steps) const {

@@ -26,7 +26,7 @@ enum class MatrixKind {
 };
 
 struct SolverOptions {
-    std::string method = "MUMPS";  // MUMPS | MULT_FRONT | LDLT
+    std::string method = "MUMPS";  // MUMPS | MULT_FRONT | LDLT | PETSC | GCPC
     // MUMPS ordering: AUTO (coordinate nested dissection when every row has a point, else METIS)
     // METIS AMD AMF QAMD PORD SCOTCH
     std::string renum = "AUTO";
@@ -47,6 +47,15 @@ struct SolverOptions {
     // MUMPS GESTION_MEMOIRE: IN_CORE, OUT_OF_CORE (factors on disk under TMPDIR), AUTO (in core
     // unless the analysis' estimate exceeds the available memory), EVAL (estimates, then stop).
     std::string memory = "AUTO";
+    // PETSC / GCPC (docs/solver.md): ALGORITHME, PRE_COND, NMAX_ITER (0: PETSc's default, 10000),
+    // REAC_PRECOND (LDLT_SP/LDLT_DP factors kept for the next matrices while a solve needs at most that
+    // many iterations), OPTION_PETSC, NIVE_REMPLISSAGE (LDLT_INC). RESI_RELA is the Krylov tolerance.
+    std::string algorithm = "FGMRES";
+    std::string preconditioner = "LDLT_SP";
+    int maxIterations = 0;
+    int reacPrecond = 30;
+    std::string petscOptions;
+    int fillLevel = 0;
     bool conditionEstimate = false;  // MUMPS ICNTL(11)=1: condition numbers (costs a few solves)
     bool diagonalScaling = true;     // factorise D^-1/2 A D^-1/2 (code_aster: PRETRAITEMENTS)
     int maxRefinementSteps = 3;      // iterative refinement while it helps; 0 = none (POSTTRAITEMENTS)

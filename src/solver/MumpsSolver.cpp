@@ -470,6 +470,11 @@ private:
 
 }  // namespace
 
+std::unique_ptr<ScaledDirectSolver> makeMumpsFactors(const SolverOptions& options) {
+    if (options.mixedPrecision) return std::make_unique<MumpsSolver<SingleArithmetic>>(options);
+    return std::make_unique<MumpsSolver<DoubleArithmetic>>(options);
+}
+
 std::unique_ptr<LinearSolver> makeMumpsSolver(const SolverOptions& options) {
     if (options.mixedPrecision) return std::make_unique<MumpsSolver<SingleArithmetic>>(options);
     return std::make_unique<MumpsSolver<DoubleArithmetic>>(options);

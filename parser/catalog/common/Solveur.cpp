@@ -31,9 +31,25 @@ Keyword solveur(bool nonLinear) {
         bloc(when("METHODE", {"LDLT"}),
              {TXM("RENUM").into({"RCMK", "SANS"}).def("RCMK"), I("NPREC").def(8), yesNo("STOP_SINGULIER").def("OUI"),
               TXM("ELIM_LAGR").into({"NON", "OUI"})}),
-        bloc(when("METHODE", {"PETSC", "GCPC"}),
-             {TXM("PRE_COND"), TXM("ALGORITHME"), TXM("RENUM"), R("RESI_RELA").def(1.0e-6), I("NMAX_ITER").def(0),
-              I("REAC_PRECOND"), R("PCENT_PIVOT"), TXM("ELIM_LAGR").into({"NON", "OUI"})}),
+        // The keywords code_aster puts in sub-blocks by PRE_COND (RENUM, NIVE_REMPLISSAGE, REAC_PRECOND,
+        // PCENT_PIVOT...) are flat here, with code_aster's defaults; each is read only where it applies.
+        bloc(when("METHODE", {"PETSC"}),
+             {TXM("ALGORITHME").into({"CG", "CR", "GMRES", "GCR", "FGMRES", "GMRES_LMP"}).def("FGMRES"),
+              TXM("PRE_COND")
+                  .into({"LDLT_INC", "LDLT_SP", "LDLT_DP", "JACOBI", "SOR", "ML", "BOOMER", "GAMG", "BLOC_LAGR",
+                         "FIELDSPLIT", "SANS"})
+                  .def("LDLT_SP"),
+              TXM("OPTION_PETSC").def(""), R("RESI_RELA").def(1.0e-6), I("NMAX_ITER").def(0),
+              TXM("RENUM").into({"RCMK", "SANS", "METIS", "PARMETIS"}), I("NIVE_REMPLISSAGE").def(0).range(0, {}),
+              R("REMPLISSAGE").def(1.0), I("REAC_PRECOND").def(30), I("PCENT_PIVOT").def(20).range(1, {}),
+              TXM("GESTION_MEMOIRE").into({"IN_CORE", "AUTO"}).def("AUTO"), R("LOW_RANK_SEUIL").def(1.0e-8),
+              yesNo("MATR_DISTRIBUEE").def("NON"), TXM("ELIM_LAGR").into({"NON", "OUI"})}),
+        bloc(when("METHODE", {"GCPC"}),
+             {TXM("PRE_COND").into({"LDLT_INC", "LDLT_SP", "LDLT_DP"}).def("LDLT_INC"), R("RESI_RELA").def(1.0e-6),
+              I("NMAX_ITER").def(0), TXM("RENUM").into({"RCMK", "SANS", "METIS", "PARMETIS"}),
+              I("NIVE_REMPLISSAGE").def(0).range(0, {}), I("REAC_PRECOND").def(30),
+              I("PCENT_PIVOT").def(20).range(1, {}), TXM("GESTION_MEMOIRE").into({"IN_CORE", "AUTO"}).def("AUTO"),
+              R("LOW_RANK_SEUIL").def(1.0e-8), TXM("ELIM_LAGR").into({"NON", "OUI"})}),
     });
 }
 
