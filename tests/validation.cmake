@@ -121,7 +121,7 @@ function(miniaster_solveur_variant _label _name _keywords _expect)
            COMMAND ${Python_EXECUTABLE} ${CMAKE_SOURCE_DIR}/tests/solveur_variant.py $<TARGET_FILE:miniaster-bin>
                    ${_run} ${CMAKE_SOURCE_DIR}/../shared/astest ${_name}
                    ${CMAKE_BINARY_DIR}/astest-out/solveur_${_label}_${_name} ${CMAKE_BINARY_DIR}/astest-out/${_name}
-                   "${_keywords}" "${_expect}" ${_opt})
+                   "${_keywords}" "${_expect}" ${_opt} ${ARGN})
   set_tests_properties(original_solveur_${_label}.${_name} PROPERTIES FIXTURES_REQUIRED one_process.${_name})
 endfunction()
 foreach(_name ssnv511e ssnv511f ssnv511g ssnv511h)
@@ -162,3 +162,8 @@ foreach(_case "a|1e-15" "d|1e-15" "e|1e-12")
   miniaster_solveur_variant(gcpc_ldlt_inc ssnv511${_letter} "METHODE='GCPC', RESI_RELA=${_resi}"
                             "GCPC (ALGORITHME='CG', PRE_COND='LDLT_INC') solve")
 endforeach()
+# On two processes PETSc is sequential (each process solves the whole system), and the LDLT_SP
+# factors are a MUMPS of one process on each: the same TEST results.
+miniaster_solveur_variant(petsc_np2 ssnv511a "METHODE='PETSC', PRE_COND='LDLT_SP', RESI_RELA=1e-15"
+                          "PETSC (ALGORITHME='FGMRES', PRE_COND='LDLT_SP') solve" -- --np 2)
+set_tests_properties(original_solveur_petsc_np2.ssnv511a PROPERTIES PROCESSORS 2)

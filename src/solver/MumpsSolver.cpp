@@ -296,10 +296,12 @@ private:
         const bool havePoints = rowPoints.size() == size_t(A.rows) && A.rows > 0;
         id_.icntl[6] = orderingCode(options_.renum, havePoints, ordering_);
         orderingNote_.clear();
-        // On the host (rank 0) only, on the whole matrix's pattern (docs/mpi.md).
+        // On the host (rank 0) only, on the whole matrix's pattern (docs/mpi.md), when distributed.
         if (id_.icntl[6] == kUserOrdering)
             mpi::collectively([&] {
-                if (!mpi::isRoot()) return;
+                // A MUMPS of one process (MPI_COMM_SELF: PETSc's LDLT_SP factors on each of several
+                // processes) is its own host: every process orders its own matrix.
+                if (options_.distributed && !mpi::isRoot()) return;
                 const CsrMatrix whole = options_.wholePattern ? options_.wholePattern() : CsrMatrix{};
                 const CsrMatrix& graph = options_.wholePattern ? whole : A;
                 const bool byPoints = ordering_ == "COORDINATES";
