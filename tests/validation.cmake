@@ -167,3 +167,6 @@ endforeach()
 miniaster_solveur_variant(petsc_np2 ssnv511a "METHODE='PETSC', PRE_COND='LDLT_SP', RESI_RELA=1e-15"
                           "PETSC (ALGORITHME='FGMRES', PRE_COND='LDLT_SP') solve" -- --np 2)
 set_tests_properties(original_solveur_petsc_np2.ssnv511a PROPERTIES PROCESSORS 2)
+# GAMG gets the rigid body modes as its near null space (fe/EquationPoints rigidBodyModes).
+miniaster_solveur_variant(petsc_gamg_modes ssnv511a "METHODE='PETSC', ALGORITHME='CG', PRE_COND='GAMG', RESI_RELA=1e-15"
+                          "near null space: 3 rigid body modes")

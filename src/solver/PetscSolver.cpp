@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <petscksp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -104,6 +105,7 @@ public:
                                         scaled_.values.data(), &matrix_),
               "MatCreateSeqAIJWithArrays");
         check(MatSetOption(matrix_, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+        if (options_.preconditioner == "GAMG" || options_.preconditioner == "ML") attachNearNullSpace();
         if (keep) {
             msg().infof(
                 "    {}: preconditioner kept from the previous matrix (its last solve took {} iterations, "
@@ -162,8 +164,50 @@ private:
         applyOptionPetsc(ksp_, options_);
         check(KSPSetUp(ksp_), "KSPSetUp (the preconditioner's construction)");
         stale_ = false;
-        msg().infof("    {}: preconditioner built in {:.3f} s, resident peak {:.0f} MB (from {:.0f} MB)", name(),
-                    secondsSince(t0), phase.peakMb(), phase.startMb());
+        msg().infof("    {}: preconditioner built in {:.3f} s, resident peak {:.0f} MB (from {:.0f} MB){}", name(),
+                    secondsSince(t0), phase.peakMb(), phase.startMb(),
+                    nearNullModes_ ? fmt::format("; near null space: {} rigid body modes", nearNullModes_)
+                                   : std::string());
+    }
+
+    // The rigid body modes of the model (SolverOptions::nearNullSpace) as the near null space of
+    // S A S (y = S^-1 x: each mode divided by S), orthonormalised, for GAMG's and ML's coarse spaces:
+    // without them aggregation sees only constants, and the iterations grow with N (docs/solver.md).
+    void attachNearNullSpace() {
+        std::vector<double> modes = options_.nearNullSpace ? options_.nearNullSpace() : std::vector<double>{};
+        const size_t n = scale_.size();
+        if (n == 0 || modes.size() < n || modes.size() % n != 0) return;
+        const size_t k = modes.size() / n;
+        std::vector<Vec> vecs;
+        for (size_t m = 0; m < k; ++m) {
+            double* v = modes.data() + m * n;
+            for (size_t i = 0; i < n; ++i) v[i] /= scale_[i];
+            for (size_t p = 0; p < m; ++p) {  // modified Gram-Schmidt against the previous modes
+                const double* q = modes.data() + p * n;
+                double dotq = 0.0;
+                for (size_t i = 0; i < n; ++i) dotq += v[i] * q[i];
+                for (size_t i = 0; i < n; ++i) v[i] -= dotq * q[i];
+            }
+            double norm = 0.0;
+            for (size_t i = 0; i < n; ++i) norm += v[i] * v[i];
+            norm = std::sqrt(norm);
+            if (!(norm > 0.0)) continue;
+            for (size_t i = 0; i < n; ++i) v[i] /= norm;
+            Vec vec = nullptr;
+            check(VecCreateSeq(PETSC_COMM_SELF, PetscInt(n), &vec), "VecCreateSeq");
+            PetscScalar* a = nullptr;
+            check(VecGetArray(vec, &a), "VecGetArray");
+            std::copy(v, v + n, a);
+            check(VecRestoreArray(vec, &a), "VecRestoreArray");
+            vecs.push_back(vec);
+        }
+        MatNullSpace space = nullptr;
+        const PetscErrorCode code =
+            MatNullSpaceCreate(PETSC_COMM_SELF, PETSC_FALSE, PetscInt(vecs.size()), vecs.data(), &space);
+        if (code == 0) MatSetNearNullSpace(matrix_, space), MatNullSpaceDestroy(&space);
+        for (Vec& v : vecs) VecDestroy(&v);
+        check(code, "MatNullSpaceCreate");
+        nearNullModes_ = int(vecs.size());
     }
 
     // KSPSolve on S A S y = S b, x = S y; returns PETSc's converged reason. lastResidual_ is the true
@@ -251,6 +295,7 @@ private:
     Mat matrix_ = nullptr;
     KSP ksp_ = nullptr;
     FactorPreconditioner factors_;
+    int nearNullModes_ = 0;
     bool stale_ = false;  // the preconditioner is that of a previous matrix (REAC_PRECOND)
     int lastIterations_ = -1;
     double lastResidual_ = 0.0;
