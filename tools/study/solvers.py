@@ -37,15 +37,18 @@ COLUMNS = ["scene", "N", "setting", "solveur", "dofs", "exit", "wall", "t_comman
 
 def grid(full):
     """2D N and 3D N (the block has N x N x N HEXA8)."""
-    return ([251, 501, 1001] if full else [101, 251]), ([16, 24, 32] if full else [8, 12])
+    return ([251, 501, 1001] if full else [101, 251]), ([16, 24, 32] if full else [8, 12, 20])
 
 
 def solver_seconds(mess):
     """Factorisation + solves, or the Krylov solves and preconditioner set-ups, from the .mess."""
     import re
+    built = [float(x) for x in re.findall(r"preconditioner built in ([0-9.]+) s", mess)]
+    if built:  # Krylov: the set-ups (MUMPS's factorisation of LDLT_SP included) and the Krylov solves
+        return sum(built) + sum(float(x) for x in re.findall(r"\) solve ([0-9.]+) s:", mess)), \
+            sum(int(x) for x in re.findall(r"solve [0-9.]+ s: (\d+) iterations", mess))
     t = sum(float(x) for x in re.findall(r"analysis \+ factorisation ([0-9.]+) s", mess))
-    t += sum(float(x) for x in re.findall(r"solve ([0-9.]+) s[,:]", mess))
-    t += sum(float(x) for x in re.findall(r"preconditioner built in ([0-9.]+) s", mess))
+    t += sum(float(x) for x in re.findall(r"solve ([0-9.]+) s,", mess))
     its = sum(int(x) for x in re.findall(r"solve [0-9.]+ s: (\d+) iterations", mess))
     steps = sum(int(x) for x in re.findall(r"after (\d+) refinement step", mess))
     return t, its if its else steps
@@ -73,15 +76,21 @@ def run_one(ctx, scene, n, label, keywords):
     return rec
 
 
+# One colour per setting in every panel.
+LABELS = list(dict.fromkeys(label for settings in SETTINGS.values() for label in settings))
+COLOURS = {label: plt.get_cmap("tab10")(i % 10) for i, label in enumerate(LABELS)}
+
+
 def plot(path, records):
     scenes_run = sorted({r["scene"] for r in records})
     fig, axes = plt.subplots(1, len(scenes_run), figsize=(6 * len(scenes_run), 5.5), squeeze=False)
     for ax, scene in zip(axes[0], scenes_run):
         for label in SETTINGS[scene]:
-            pts = sorted((r["t_commands"], r["l2_rel"], r["N"]) for r in records
+            pts = sorted((float(r["t_commands"]), float(r["l2_rel"]), int(r["N"])) for r in records
                          if r["scene"] == scene and r["setting"] == label and r.get("l2_rel") and r.get("t_commands"))
             if pts:
-                ax.loglog([p[0] for p in pts], [max(p[1], 1e-17) for p in pts], "o-", label=label)
+                ax.loglog([p[0] for p in pts], [max(p[1], 1e-17) for p in pts], "o-", label=label,
+                          color=COLOURS[label])
                 for t, e, n in pts:
                     ax.annotate(f"N={n}", (t, max(e, 1e-17)), fontsize=6)
         ax.axhline(1e-9, color="grey", ls=":", lw=1)
@@ -101,10 +110,19 @@ def study_solvers(ctx):
     for scene, ns in (("ssnv511a", n2), ("ssnv511e", n2), ("hexa8 block", n3)):
         for n in ns:
             for label, keywords in SETTINGS[scene].items():
+                # hypre's BoomerAMG took 206 s at ssnv511a N = 251 (GAMG: 16 s): the small grid runs it
+                # on its smallest N only.
+                if "BOOMER" in label and not ctx.args.full and n != ns[0]:
+                    continue
                 records.append(run_one(ctx, scene, n, label, keywords))
-    report.write_csv(os.path.join(ctx.out, "solvers.csv"), records, COLUMNS)
-    plot(os.path.join(ctx.out, "solvers_time_vs_error.png"), records)
-    md = ctx.header("SOLVEUR settings: time, memory and error (docs/solver.md)")
+    write_outputs(ctx.out, ctx.header("SOLVEUR settings: time, memory and error (docs/solver.md)"), records)
+    return records
+
+
+def write_outputs(out, header, records):
+    report.write_csv(os.path.join(out, "solvers.csv"), records, COLUMNS)
+    plot(os.path.join(out, "solvers_time_vs_error.png"), records)
+    md = header
     md += ("Scenes: `ssnv511a` = tools/study/scenes.py `rigid_comm('quad4')` (MECA_STATIQUE) on QUAD4 N x N; "
            "`ssnv511e` = `compression_comm('quad4')` (STAT_NON_LINE with contact) on QUAD4 N x N; `hexa8 block` = "
            "`rigid_comm('hexa8')` on HEXA8 N x N x N ([-5,5]^3). `wall` is seen from outside, `t_commands` the "
@@ -118,6 +136,5 @@ def study_solvers(ctx):
         ("iterations", "iterations", None), ("peak_mb", "peak MB", "t"), ("l2_rel", "L2 rel. err.", "e"),
         ("load", "load", "f")])
     md += "\n![time against error](solvers_time_vs_error.png)\n"
-    with open(os.path.join(ctx.out, "solvers.md"), "w") as f:
+    with open(os.path.join(out, "solvers.md"), "w") as f:
         f.write(md)
-    return records

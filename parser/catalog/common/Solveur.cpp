@@ -1,4 +1,4 @@
-// SOLVEUR: the linear solver (MUMPS by default, MULT_FRONT, LDLT; PETSC and GCPC accepted by the syntax).
+// SOLVEUR: the linear solver (MUMPS by default, MULT_FRONT, LDLT, PETSC, GCPC; docs/solver.md).
 // As code_aster's c_solveur.py: RESI_RELA of MUMPS defaults to 1e-6 in MECA_STATIQUE and to -1 (no
 // check) in STAT_NON_LINE, whose Newton corrects an inaccurate solve; FILTRAGE_MATRICE and
 // MIXER_PRECISION exist in STAT_NON_LINE only.
