@@ -1,7 +1,7 @@
 // ssnv511_mesh: writes an ssnv511-family mesh with N divisions per side as a MED file.
 //
 //   ssnv511_mesh --type quad4|tria3|hexa8|tetra4 --n N -o out.med
-//                [--bounds XMIN XMAX YMIN YMAX] [--zbounds ZMIN ZMAX]
+//                [--bounds XMIN XMAX YMIN YMAX] [--zbounds ZMIN ZMAX] [--layers K]
 //                [--offset OX OY] [--name MESH] [--polar]
 //
 // Groups and conventions are those of ../shared/astest (docs/med.md): 2D SURF + LB/LD/LH/LG
@@ -24,11 +24,11 @@
 namespace {
 
 [[noreturn]] void usage(const char* why) {
-    std::fprintf(
-        stderr,
-        "ssnv511_mesh: %s\nusage: ssnv511_mesh --type quad4|tria3|hexa8|tetra4 --n N -o out.med\n"
-        "       [--bounds XMIN XMAX YMIN YMAX] [--zbounds ZMIN ZMAX] [--offset OX OY] [--name MESH] [--polar]\n",
-        why);
+    std::fprintf(stderr,
+                 "ssnv511_mesh: %s\nusage: ssnv511_mesh --type quad4|tria3|hexa8|tetra4 --n N -o out.med\n"
+                 "       [--bounds XMIN XMAX YMIN YMAX] [--zbounds ZMIN ZMAX] [--layers K] [--offset OX OY] [--name "
+                 "MESH] [--polar]\n",
+                 why);
     std::exit(2);
 }
 
@@ -71,6 +71,10 @@ int main(int argc, char** argv) {
             opt.ymin = number(i, argc, argv), opt.ymax = number(i, argc, argv);
         } else if (a == "--zbounds") {
             opt.zmin = number(i, argc, argv), opt.zmax = number(i, argc, argv);
+        } else if (a == "--layers") {  // HEXA8: K cells in z (default 1)
+            const double k = number(i, argc, argv);
+            if (k != int(k)) usage("--layers must be an integer");
+            opt.layers = int(k);
         } else if (a == "--offset") {
             opt.offsetX = number(i, argc, argv), opt.offsetY = number(i, argc, argv);
         } else if (a == "--name") {
