@@ -16,8 +16,7 @@ double det3(const std::array<std::array<double, 3>, 3>& m) {
 // Reference gradient of the linear interpolant of the values `l` at the sub-cell's vertices `r`
 // (dim + 1 of them), by Cramer's rule on (r_v - r_0) . g = l_v - l_0; false when the sub-cell is
 // flat in reference coordinates.
-bool linearGradient(int dim, const std::array<std::array<double, 3>, 4>& r, const std::array<double, 4>& l,
-                    Vec3& g) {
+bool linearGradient(int dim, const std::array<std::array<double, 3>, 4>& r, const std::array<double, 4>& l, Vec3& g) {
     std::array<std::array<double, 3>, 3> m{};
     std::array<double, 3> rhs{};
     for (int v = 1; v <= dim; ++v) {
