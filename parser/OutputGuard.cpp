@@ -25,7 +25,7 @@ namespace ma {
 namespace {
 
 struct Identity {
-    std::string real;                    // the real path (links resolved, the file itself may not exist)
+    std::string real;                              // the real path (links resolved, the file itself may not exist)
     std::optional<std::pair<dev_t, ino_t>> inode;  // when the file exists
 };
 
@@ -41,19 +41,20 @@ Identity outputIdentity(const NamedPath& out) {
     if (::lstat(out.path.c_str(), &st) != 0) return id;
     if (S_ISLNK(st.st_mode)) {
         const fs::path target = fs::read_symlink(path, ec);
-        throw UserError(fmt::format(
-            "the {} {} is a symbolic link (to {}): the run does not write through a link it did not create "
-            "(the file it points to would be overwritten); remove the link or choose another output folder",
-            out.role, out.path, ec ? std::string("?") : target.string()));
+        throw UserError(
+            fmt::format("the {} {} is a symbolic link (to {}): the run does not write through a link it did not create "
+                        "(the file it points to would be overwritten); remove the link or choose another output folder",
+                        out.role, out.path, ec ? std::string("?") : target.string()));
     }
     if (S_ISDIR(st.st_mode)) throw UserError(fmt::format("the {} {} is a folder", out.role, out.path));
     if (!S_ISREG(st.st_mode))
-        throw UserError(fmt::format("the {} {} exists and is not a regular file ({}): the run cannot write its "
-                                    "result there; remove it or choose another output folder",
-                                    out.role, out.path,
-                                    S_ISFIFO(st.st_mode)                        ? "a FIFO"
-                                    : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "a device"
-                                                                                 : "a socket"));
+        throw UserError(
+            fmt::format("the {} {} exists and is not a regular file ({}): the run cannot write its "
+                        "result there; remove it or choose another output folder",
+                        out.role, out.path,
+                        S_ISFIFO(st.st_mode)                         ? "a FIFO"
+                        : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "a device"
+                                                                     : "a socket"));
     id.inode = std::make_pair(st.st_dev, st.st_ino);
     return id;
 }
@@ -98,17 +99,18 @@ void checkOutputPaths(const std::vector<NamedPath>& outputs, const std::vector<N
         const Identity id = outputIdentity(outputs[k]);
         for (size_t j = 0; j < seen.size(); ++j)
             if (sameFile(seen[j], id))
-                throw UserError(fmt::format("the {} {} and the {} {} are the same file ({}): one output would "
-                                            "overwrite the other; give them different names",
-                                            outputs[j].role, outputs[j].path, outputs[k].role, outputs[k].path,
-                                            id.real));
+                throw UserError(
+                    fmt::format("the {} {} and the {} {} are the same file ({}): one output would "
+                                "overwrite the other; give them different names",
+                                outputs[j].role, outputs[j].path, outputs[k].role, outputs[k].path, id.real));
         seen.push_back(id);
         for (const auto& in : inputs) {
             if (in.path.empty()) continue;
             if (sameFile(inputIdentity(in), id))
-                throw UserError(fmt::format("the {} {} is the {} {} (the same file: {}): the run would overwrite "
-                                            "its own input; choose another output folder or name",
-                                            outputs[k].role, outputs[k].path, in.role, in.path, id.real));
+                throw UserError(
+                    fmt::format("the {} {} is the {} {} (the same file: {}): the run would overwrite "
+                                "its own input; choose another output folder or name",
+                                outputs[k].role, outputs[k].path, in.role, in.path, id.real));
         }
     }
 }

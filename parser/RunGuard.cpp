@@ -124,7 +124,7 @@ int gCrashFd = -1;
 char gAltStack[1 << 16];  // a stack overflow (deep recursion) still gets its paragraph
 
 struct Text {
-    char data[1024];
+    char data[2048];
     size_t size = 0;
     Text& operator<<(const char* s) {
         while (*s && size < sizeof(data)) data[size++] = *s++;
@@ -170,11 +170,11 @@ extern "C" void onFatalSignal(int sig) {
     const auto& run = RunState::current();
     Text text;
     text << "\n<F> <ABNORMAL_ABORT> ";
-    if (run.runningCommand[0]) text << run.runningCommand << " (" << run.commBaseName.c_str() << ", line ";
-    else text << "(" << run.commBaseName.c_str();
-    if (run.runningCommand[0]) text << long(run.runningLine) << ")";
-    else if (run.runningLine) text << ", in the Python code after the command of line " << long(run.runningLine) << ")";
-    else text << ")";
+    const char* file = run.commBaseName.c_str();
+    const long line = run.runningLine;
+    if (run.runningCommand[0]) text << run.runningCommand << " (" << file << ", line " << line << ")";
+    else if (line) text << "(" << file << ", in the Python code after the command of line " << line << ")";
+    else text << "(" << file << ")";
     text << ": the process received signal " << long(sig) << " (" << signalName(sig)
          << "); the run is stopped. Its cause is in native code: the command file's own (ctypes, a C extension "
             "it imports), a Python recursion deeper than the stack (sys.setrecursionlimit), or a defect of "

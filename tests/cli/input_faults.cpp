@@ -19,11 +19,12 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 
 // An X-FEM model of the xfem_quad4_n7 mesh with the interfaces `cracks` defined before it.
 RunResult runXfem(const std::string& cracks, const std::string& fissure) {
-    return runComm("DEBUT()\nMA = LIRE_MAILLAGE(FORMAT='MED', UNITE=20)\n"
-                   "MO_SAIN = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(GROUP_MA='SURF', PHENOMENE='MECANIQUE', "
-                   "MODELISATION='D_PLAN'))\n" +
-                       cracks + "MO = MODI_MODELE_XFEM(MODELE_IN=MO_SAIN, FISSURE=" + fissure + ")\nFIN()\n",
-                   "--mesh '" + kSource + "/astest/xfem_quad4_n7.mmed'");
+    return runComm(
+        "DEBUT()\nMA = LIRE_MAILLAGE(FORMAT='MED', UNITE=20)\n"
+        "MO_SAIN = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(GROUP_MA='SURF', PHENOMENE='MECANIQUE', "
+        "MODELISATION='D_PLAN'))\n" +
+            cracks + "MO = MODI_MODELE_XFEM(MODELE_IN=MO_SAIN, FISSURE=" + fissure + ")\nFIN()\n",
+        "--mesh '" + kSource + "/astest/xfem_quad4_n7.mmed'");
 }
 
 const std::string kHorizontal =
@@ -48,9 +49,10 @@ TEST(InputFaults, CaseNameAtTheFileSystemLimit) {
 // A level set that returns a text ('0.5' would be read as a number by float()): an error naming
 // the formula, the point and the text.
 TEST(InputFaults, LevelSetFormulaReturningAText) {
-    const auto r = runXfem("LSN = FORMULE(VALE='str(Y)', NOM_PARA=['X', 'Y'])\n"
-                           "F1 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LSN))\n",
-                           "F1");
+    const auto r = runXfem(
+        "LSN = FORMULE(VALE='str(Y)', NOM_PARA=['X', 'Y'])\n"
+        "F1 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LSN))\n",
+        "F1");
     EXPECT_EQ(r.status, 1) << r.output;
     const std::string mess = r.file("out/t.mess");
     EXPECT_TRUE(contains(mess, "<F> <ERROR> DEFI_FISS_XFEM (t.comm, line 5)")) << mess;
@@ -64,21 +66,25 @@ TEST(InputFaults, LevelSetFormulaReturningAText) {
 TEST(InputFaults, SameInterfaceTwiceInOneModel) {
     auto r = runXfem(kHorizontal, "(F1, F1)");
     EXPECT_EQ(r.status, 1) << r.output;
-    EXPECT_TRUE(contains(r.file("out/t.mess"), "<F> <ERROR> MODI_MODELE_XFEM (t.comm, line 6): FISSURE: crack F1 is "
-                                               "listed twice"))
+    EXPECT_TRUE(contains(r.file("out/t.mess"),
+                         "<F> <ERROR> MODI_MODELE_XFEM (t.comm, line 6): FISSURE: crack F1 is "
+                         "listed twice"))
         << r.file("out/t.mess");
-    r = runXfem(kHorizontal + "LSN2 = FORMULE(VALE='-2.0 * Y', NOM_PARA=['X', 'Y'])\n"
-                              "F2 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', "
-                              "DEFI_FISS=_F(FONC_LN=LSN2))\n",
+    r = runXfem(kHorizontal +
+                    "LSN2 = FORMULE(VALE='-2.0 * Y', NOM_PARA=['X', 'Y'])\n"
+                    "F2 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', "
+                    "DEFI_FISS=_F(FONC_LN=LSN2))\n",
                 "(F1, F2)");
     EXPECT_EQ(r.status, 1) << r.output;
-    EXPECT_TRUE(contains(r.file("out/t.mess"), "<F> <ERROR> MODI_MODELE_XFEM (t.comm, line 8): FISSURE: F1 and F2 are "
-                                               "the same interface (the same cut elements, normal level sets "
-                                               "proportional at their nodes)"))
+    EXPECT_TRUE(contains(r.file("out/t.mess"),
+                         "<F> <ERROR> MODI_MODELE_XFEM (t.comm, line 8): FISSURE: F1 and F2 are "
+                         "the same interface (the same cut elements, normal level sets "
+                         "proportional at their nodes)"))
         << r.file("out/t.mess");
-    r = runXfem(kHorizontal + "LSN2 = FORMULE(VALE='Y - 0.01', NOM_PARA=['X', 'Y'])\n"
-                              "F2 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', "
-                              "DEFI_FISS=_F(FONC_LN=LSN2))\n",
+    r = runXfem(kHorizontal +
+                    "LSN2 = FORMULE(VALE='Y - 0.01', NOM_PARA=['X', 'Y'])\n"
+                    "F2 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', "
+                    "DEFI_FISS=_F(FONC_LN=LSN2))\n",
                 "(F1, F2)");
     EXPECT_FALSE(contains(r.file("out/t.mess"), "the same interface")) << r.file("out/t.mess");
 }

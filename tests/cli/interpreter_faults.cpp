@@ -43,12 +43,14 @@ TEST(InterpreterFaults, ValuesWithoutEnd) {
                 "<F> <ERROR> DEFI_LIST_REEL (t.comm, line 5): the value of VALE is nested more than 32 levels deep "
                 "(lists, tuples or _F inside each other); a keyword takes a value, a list of values or _F occurrences");
     r = runComm("DEBUT()\nv = [1.0]\nv.append(v)\nL = DEFI_LIST_REEL(VALE=v)\nFIN()\n");
-    expectError(r, "<F> <ERROR> DEFI_LIST_REEL (t.comm, line 4): the value of VALE contains itself (a list, tuple or "
-                   "_F that holds itself): it has no end");
+    expectError(r,
+                "<F> <ERROR> DEFI_LIST_REEL (t.comm, line 4): the value of VALE contains itself (a list, tuple or "
+                "_F that holds itself): it has no end");
     r = runComm(
         "DEBUT()\nf = _F(JUSQU_A=1.0, NOMBRE=2)\nf['PAS'] = [f]\nL = DEFI_LIST_REEL(DEBUT=0., INTERVALLE=f)\nFIN()\n");
-    expectError(r, "<F> <ERROR> DEFI_LIST_REEL (t.comm, line 4): the value of INTERVALLE contains itself (a list, "
-                   "tuple or _F that holds itself): it has no end");
+    expectError(r,
+                "<F> <ERROR> DEFI_LIST_REEL (t.comm, line 4): the value of INTERVALLE contains itself (a list, "
+                "tuple or _F that holds itself): it has no end");
 }
 
 // A segfault in the command file's own code (ctypes), and one from a stack overflow: the

@@ -99,11 +99,14 @@ TEST(OutputFaults, ExportResultsThatCollide) {
         std::string lines, cause;
     };
     const std::vector<Case> cases = {
-        {"F mess r.txt R 6\nF resu r.txt R 8\n", "the message log OUT/r.txt and the result file OUT/r.txt are the same file"},
+        {"F mess r.txt R 6\nF resu r.txt R 8\n",
+         "the message log OUT/r.txt and the result file OUT/r.txt are the same file"},
         {"F rmed a.rmed R 80\nF rmed DIR/outlink/a.rmed R 81\n",
          "the result file of unit 80 OUT/a.rmed and the result file of unit 81 DIR/outlink/a.rmed are the same file"},
-        {"F mmed in/m.mmed D 20\nF rmed DIR/link/m.mmed R 80\n", "result file of unit 80 DIR/link/m.mmed is the data file of unit 20"},
-        {"F mmed in/m.mmed D 20\nF rmed DIR/hard.mmed R 80\n", "result file of unit 80 DIR/hard.mmed is the data file of unit 20"},
+        {"F mmed in/m.mmed D 20\nF rmed DIR/link/m.mmed R 80\n",
+         "result file of unit 80 DIR/link/m.mmed is the data file of unit 20"},
+        {"F mmed in/m.mmed D 20\nF rmed DIR/hard.mmed R 80\n",
+         "result file of unit 80 DIR/hard.mmed is the data file of unit 20"},
     };
     for (const auto& c : cases) {
         SCOPED_TRACE(c.lines);
@@ -145,8 +148,9 @@ TEST(OutputFaults, ResultThatIsAFifoOrADevice) {
     // A unit without an F line (fort.38 of the output folder) is known when a command writes it.
     const Victim victim(dir / "victim.txt", "somebody's file\n");
     fs::create_symlink(dir / "victim.txt", dir / "out" / "fort.38");
-    writeText(dir / "t.comm", "DEBUT()\nMA = LIRE_MAILLAGE(FORMAT='MED')\n"
-                              "IMPR_RESU(FORMAT='MED', UNITE=38, RESU=_F(MAILLAGE=MA))\nFIN()\n");
+    writeText(dir / "t.comm",
+              "DEBUT()\nMA = LIRE_MAILLAGE(FORMAT='MED')\n"
+              "IMPR_RESU(FORMAT='MED', UNITE=38, RESU=_F(MAILLAGE=MA))\nFIN()\n");
     r = runMiniaster(dir, "t.comm", "--mesh '" + kMesh + "'");
     EXPECT_EQ(r.status, 1) << r.output;
     EXPECT_TRUE(contains(r.file("out/t.mess"), "fort.38 of logical unit 38 is a symbolic link")) << r.output;
@@ -160,8 +164,8 @@ TEST(OutputFaults, ResultThatIsAFifoOrADevice) {
 TEST(OutputFaults, SecondRunOfTheCaseInTheSameFolder) {
     const auto dir = freshDir();
     writeText(dir / "t.comm", "DEBUT()\nimport time\ntime.sleep(60)\nFIN()\n");
-    writeText(dir / "start.sh", "cd '" + dir.string() + "' && exec " + quotedBinary() +
-                                    " run t.comm --out-dir out > first.log 2>&1\n");
+    writeText(dir / "start.sh",
+              "cd '" + dir.string() + "' && exec " + quotedBinary() + " run t.comm --out-dir out > first.log 2>&1\n");
     const pid_t first = ::fork();
     ASSERT_GE(first, 0);
     if (first == 0) {
