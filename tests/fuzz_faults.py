@@ -186,6 +186,21 @@ def run_case(binary, case):
         shutil.rmtree(work, ignore_errors=True)
 
 
+def same_interface_twice(lines, rng):
+    """The first interface of MODI_MODELE_XFEM listed twice, or a copy of it whose level set is
+    -3 times its own (the same zero set), listed after it."""
+    if rng.random() < 0.5:
+        return [re.sub(r"FISSURE=\((\w+),", r"FISSURE=(\1, \1,", l) for l in lines]
+    for i, l in enumerate(lines):
+        m = re.match(r"(\w+) = DEFI_FISS_XFEM\((.*)FONC_LN=(\w+)\)\)\s*$", l)
+        if m and "JONCTION" not in l:
+            copy = "%s_BIS = DEFI_FISS_XFEM(%sFONC_LN=FORMULE(VALE='-3.0 * %s(X, Y)', NOM_PARA=['X', 'Y'], %s=%s)))" % (
+                m.group(1), m.group(2), m.group(3), m.group(3), m.group(3))
+            lines = lines[:i + 1] + [copy] + lines[i + 1:]
+            return [re.sub(r"FISSURE=\((%s)," % m.group(1), r"FISSURE=(\1, \1_BIS,", l) for l in lines]
+    return lines
+
+
 def hostile_case(comms, rng, k):
     """A project command file with hostile Python before its FIN(), or a misleading input."""
     c, text, rest = rng.choice(comms)
@@ -198,7 +213,7 @@ def hostile_case(comms, rng, k):
         lines.insert(fin, snippet)
         what = snippet.split("\n")[-1][:40]
     elif choice == len(HOSTILE_PYTHON):  # the same interface twice (X-FEM cases only change)
-        lines = [re.sub(r"FISSURE=\((\w+),", r"FISSURE=(\1, \1,", l) for l in lines]
+        lines = same_interface_twice(lines, rng)
         what = "same interface twice"
     elif choice == len(HOSTILE_PYTHON) + 1:  # a level set returning a text
         lines = [re.sub(r"FORMULE\(VALE='([^']*)'", r"FORMULE(VALE='str(\1)'", l) for l in lines]
