@@ -21,7 +21,8 @@ ConceptPtr copyAs(const ConceptPtr& original) {
 ConceptPtr copier(const KeywordSet& kw, CommandContext&) {
     const ConceptPtr original = kw.rawObject("CONCEPT");
     ConceptPtr copy;
-    for (auto make : {copyAs<Mesh>, copyAs<Table>, copyAs<TabulatedFunction>, copyAs<ConstantFunction>, copyAs<RealList>})
+    for (auto make :
+         {copyAs<Mesh>, copyAs<Table>, copyAs<TabulatedFunction>, copyAs<ConstantFunction>, copyAs<RealList>})
         if (!copy) copy = make(original);
     if (!copy)
         throw NotImplemented(fmt::format("{}: COPIER of a {} ({}) is not supported", kw.pathOf("CONCEPT"),

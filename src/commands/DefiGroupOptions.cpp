@@ -48,8 +48,8 @@ int groupNode(const Mesh& mesh, const KeywordSet& occ, const std::string& keywor
 // POINT, NOEUD_CENTRE or GROUP_NO_CENTRE (code_aster's utcono): dim coordinates, z = 0 in a plane mesh.
 Vec3 centre(const Mesh& mesh, const KeywordSet& occ, int dim) {
     if (occ.has("POINT")) return exactVector(occ, "POINT", size_t(dim), dimensionWord(dim));
-    const int node =
-        occ.has("NOEUD_CENTRE") ? namedNode(mesh, occ, "NOEUD_CENTRE") : groupNode(mesh, occ, "GROUP_NO_CENTRE", MODELISA9_29);
+    const int node = occ.has("NOEUD_CENTRE") ? namedNode(mesh, occ, "NOEUD_CENTRE")
+                                             : groupNode(mesh, occ, "GROUP_NO_CENTRE", MODELISA9_29);
     Vec3 x = mesh.coords[size_t(node)];
     if (dim == 2) x[2] = 0;
     return x;
@@ -69,11 +69,13 @@ Vec3 direction(const KeywordSet& occ, int dim) {
     const std::string option = occ.text("OPTION");
     const bool plan = option == "PLAN" || option == "BANDE" || option == "FACE_NORMALE";
     if (occ.has("VECT_NORMALE"))
-        return exactVector(occ, "VECT_NORMALE", size_t(plan ? dim : 3), plan ? dimensionWord(dim) : "the cylinder's axis");
+        return exactVector(occ, "VECT_NORMALE", size_t(plan ? dim : 3),
+                           plan ? dimensionWord(dim) : "the cylinder's axis");
     const auto angles = occ.reals("ANGL_NAUT");
     const size_t needed = plan ? size_t(dim - 1) : 2;
     if (angles.size() < needed || (!plan && angles.size() != needed))
-        throw UserError(fmt::format("{} has {} values; it needs {} here", occ.pathOf("ANGL_NAUT"), angles.size(), needed));
+        throw UserError(
+            fmt::format("{} has {} values; it needs {} here", occ.pathOf("ANGL_NAUT"), angles.size(), needed));
     return nauticalDirection(angles[0], needed > 1 ? angles[1] : 0.0, plan ? dim : 3);
 }
 
@@ -181,7 +183,8 @@ std::vector<int> cellOption(const Mesh& mesh, const KeywordSet& occ) {
         return cellsInBand(mesh, point, n, occ.real("DIST"), occ.text("CRIT_NOEUD"));
     }
     if (option == "SPHERE")
-        return cellsInSphere(mesh, centre(mesh, occ, dim), positive(occ, "RAYON"), cellCriterion(occ.text("CRIT_NOEUD")));
+        return cellsInSphere(mesh, centre(mesh, occ, dim), positive(occ, "RAYON"),
+                             cellCriterion(occ.text("CRIT_NOEUD")));
     if (option == "CYLINDRE") {
         if (dim != 3) throw UserError(occ.pathOf("OPTION") + "='CYLINDRE' needs a 3D mesh");
         return cellsInCylinder(mesh, centre(mesh, occ, dim), direction(occ, dim), positive(occ, "RAYON"),

@@ -82,8 +82,7 @@ std::vector<int> cellsInSphere(const Mesh& mesh, Vec3 centre, double radius, Cel
     return out;
 }
 
-std::vector<int> cellsInCylinder(const Mesh& mesh, Vec3 point, Vec3 direction, double radius,
-                                 CellCriterion criterion) {
+std::vector<int> cellsInCylinder(const Mesh& mesh, Vec3 point, Vec3 direction, double radius, CellCriterion criterion) {
     requireSpace(mesh, "OPTION='CYLINDRE'");
     const Vec3 axis = unitAxis(direction, "OPTION='CYLINDRE'");
     std::vector<int> out;

@@ -27,8 +27,7 @@ std::vector<int> cellsInSphere(const Mesh& mesh, Vec3 centre, double radius, Cel
 
 // OPTION='CYLINDRE' (3D meshes): the same with the distance to the axis. A cell one of whose
 // nodes is the axis point itself is taken whatever the criterion, as code_aster does.
-std::vector<int> cellsInCylinder(const Mesh& mesh, Vec3 point, Vec3 direction, double radius,
-                                 CellCriterion criterion);
+std::vector<int> cellsInCylinder(const Mesh& mesh, Vec3 point, Vec3 direction, double radius, CellCriterion criterion);
 
 // The unit vector of ANGL_NAUT (degrees): 2D (alpha) -> (cos a, sin a, 0); 3D (alpha, beta) ->
 // (cos a cos b, sin a cos b, -sin b).

@@ -46,8 +46,9 @@ std::vector<int> endCounts(const Mesh& mesh, const CellEnds& ends) {
     int free = 0, branching = 0;
     for (int c : count) free += c == 1, branching += c > 2;
     if (free > 2 || branching > 0)
-        throw UserError("OPTION='NOEUD_ORDO': the cells do not form one line (a node ends more than two cells, "
-                        "or the line has more than two ends)");
+        throw UserError(
+            "OPTION='NOEUD_ORDO': the cells do not form one line (a node ends more than two cells, "
+            "or the line has more than two ends)");
     return count;
 }
 
@@ -56,8 +57,8 @@ void checkEnd(const Mesh& mesh, const std::vector<int>& count, int node, bool sa
         throw UserError(fmt::format("OPTION='NOEUD_ORDO': {} node {} is not an end of a cell of the line", keyword,
                                     nodeName(mesh, node)));
     if (!sameEnds && count[size_t(node)] != 1)
-        throw UserError(fmt::format("OPTION='NOEUD_ORDO': {} node {} is not an end of the line", keyword,
-                                    nodeName(mesh, node)));
+        throw UserError(
+            fmt::format("OPTION='NOEUD_ORDO': {} node {} is not an end of the line", keyword, nodeName(mesh, node)));
 }
 
 // The origin code_aster picks when none is given: the first cell end (first nodes, then second
@@ -110,8 +111,9 @@ std::vector<int> orderAlongSegment(const Mesh& mesh, std::vector<int> nodes, int
         const Vec3 v{am[0] - c * ab[0], am[1] - c * ab[1], am[2] - c * ab[2]};
         const double off = std::sqrt(dot(v, v)), measure = relative ? off / std::sqrt(ab2) : off;
         if (measure > precision)
-            throw UserError(fmt::format("OPTION='SEGM_DROI_ORDO': node {} is {:g} away from the segment (PRECISION {:g})",
-                                        nodeName(mesh, n), off, precision));
+            throw UserError(
+                fmt::format("OPTION='SEGM_DROI_ORDO': node {} is {:g} away from the segment (PRECISION {:g})",
+                            nodeName(mesh, n), off, precision));
         if ((c < 0 || am2 > ab2) && (am2 - ab2) / ab2 > std::numeric_limits<double>::epsilon())
             throw UserError(fmt::format("OPTION='SEGM_DROI_ORDO': node {} lies outside the segment (abscissa {:g})",
                                         nodeName(mesh, n), c));
@@ -147,9 +149,10 @@ std::vector<int> nodesAlongLine(const Mesh& mesh, std::vector<int> cells, const 
         size_t k = 0;
         while (k < cells.size() && (used[k] || (cellEnds.first[k] != junction && cellEnds.second[k] != junction))) ++k;
         if (k == cells.size())
-            throw UserError(fmt::format("OPTION='NOEUD_ORDO': the cells do not form one connected line (it stops at "
-                                        "node {})",
-                                        nodeName(mesh, junction)));
+            throw UserError(
+                fmt::format("OPTION='NOEUD_ORDO': the cells do not form one connected line (it stops at "
+                            "node {})",
+                            nodeName(mesh, junction)));
         used[k] = 1;
         appendCell(mesh, cells[k], junction, nodes);
         junction = cellEnds.first[k] == junction ? cellEnds.second[k] : cellEnds.first[k];

@@ -190,7 +190,8 @@ TEST(DefiGroupOptions, SegmDroiOrdo) {
 // Quad4 edges (LB: N1 -> N5 along y = -5, then LD, LH, LG counter-clockwise).
 TEST(DefiGroupOptions, NoeudOrdo) {
     auto m = generated(Ssnv511MeshOptions::Kind::Quad4);
-    auto line = [&](const std::string& name, std::vector<std::string> groups, const std::function<void(KeywordSet&)>& more) {
+    auto line = [&](const std::string& name, std::vector<std::string> groups,
+                    const std::function<void(KeywordSet&)>& more) {
         return nodeGroup(m, name, "NOEUD_ORDO", [&](KeywordSet& o) {
             std::vector<KeywordValue> g(groups.begin(), groups.end());
             o.setValues("GROUP_MA", g);
