@@ -1,10 +1,14 @@
-// COPIER: an independent copy of a mesh, a table, a function or a list of reals. Later commands
-// on the copy (DEFI_GROUP reuse, CALC_TABLE reuse) leave the original as it was, as in code_aster.
+// COPIER: a copy of a mesh, a table, a function, a list of reals, a model or a result (every
+// concept of code_aster's COPIER list that miniaster has). Later commands on the copy (DEFI_GROUP
+// reuse, CALC_TABLE reuse, CALC_CHAMP reuse) leave the original as it was, as in code_aster; a
+// model or result copy refers to the same mesh, model and material as the original, as there.
 #include <fmt/format.h>
 
 #include "core/Error.hpp"
 #include "core/Function.hpp"
 #include "core/Messages.hpp"
+#include "fe/Model.hpp"
+#include "fe/Result.hpp"
 #include "mesh/Mesh.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "post/Table.hpp"
@@ -21,8 +25,8 @@ ConceptPtr copyAs(const ConceptPtr& original) {
 ConceptPtr copier(const KeywordSet& kw, CommandContext&) {
     const ConceptPtr original = kw.rawObject("CONCEPT");
     ConceptPtr copy;
-    for (auto make :
-         {copyAs<Mesh>, copyAs<Table>, copyAs<TabulatedFunction>, copyAs<ConstantFunction>, copyAs<RealList>})
+    for (auto make : {copyAs<Mesh>, copyAs<Table>, copyAs<TabulatedFunction>, copyAs<ConstantFunction>,
+                      copyAs<RealList>, copyAs<Model>, copyAs<Result>})
         if (!copy) copy = make(original);
     if (!copy)
         throw NotImplemented(fmt::format("{}: COPIER of a {} ({}) is not supported", kw.pathOf("CONCEPT"),

@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include "core/Error.hpp"
+#include "fe/Model.hpp"
+#include "fe/Result.hpp"
 #include "mesh/GeometricSelection.hpp"
 #include "parser/Catalog.hpp"
 #include "parser/CommandRegistry.hpp"
@@ -322,4 +324,31 @@ TEST(DefiGroupOptions, CopierMakesAnIndependentMesh) {
     });
     EXPECT_EQ(corner, std::vector<int>{0});
     EXPECT_FALSE(m->nodeGroups.has("C"));
+}
+
+// COPIER of a model and of a result: same type, same mesh and model, own step list.
+TEST(DefiGroupOptions, CopierOfModelsAndResults) {
+    auto m = generated(Ssnv511MeshOptions::Kind::Quad4);
+    auto model = std::make_shared<Model>();
+    model->mesh = m;
+    model->dim = 2;
+    model->modelisation = Modelisation::C_PLAN;
+    KeywordSet kw;
+    kw.setValues("CONCEPT", {ConceptPtr(model)});
+    auto copy = std::dynamic_pointer_cast<Model>(call("COPIER", kw));
+    ASSERT_TRUE(copy);
+    EXPECT_NE(copy, model);
+    EXPECT_EQ(copy->mesh, m);
+    EXPECT_EQ(copy->modelisation, Modelisation::C_PLAN);
+    auto result = std::make_shared<Result>("evol_noli");
+    result->model = model;
+    result->steps.resize(3);
+    KeywordSet rk;
+    rk.setValues("CONCEPT", {ConceptPtr(result)});
+    auto resultCopy = std::dynamic_pointer_cast<Result>(call("COPIER", rk));
+    ASSERT_TRUE(resultCopy);
+    EXPECT_EQ(resultCopy->typeName(), "evol_noli");
+    EXPECT_EQ(resultCopy->model, model);
+    resultCopy->steps.pop_back();
+    EXPECT_EQ(result->steps.size(), 3u);
 }
