@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <tuple>
 
 #include "parser/Catalog.hpp"
 #include "parser_run.hpp"
@@ -190,6 +191,23 @@ TEST(ParserCatalog, AFormatRThatIsNotFortranIsRefusedBeforeAnyCommandRuns) {
         << r.output;
     EXPECT_EQ(r.output.find("# Command #0001"), std::string::npos) << r.output;  // nothing ran
     EXPECT_FALSE(r.exists("out/t.resu"));
+}
+
+// DEFI_GROUP selections miniaster does not model (crack propagation zones, tunnels) are refused by
+// the static check too, with the keyword's path.
+TEST(ParserCatalog, UnmodelledDefiGroupOptionsAreRefusedBeforeAnyCommandRuns) {
+    const std::string every = kEveryCommand;
+    for (const auto& [from, to, cause] :
+         {std::tuple<std::string, std::string, std::string>{
+              "TYPE_GROUP='HEAVISIDE')", "TYPE_GROUP='ZONE_MAJ')",
+              "keyword CREA_GROUP_NO[6]/TYPE_GROUP: value 'ZONE_MAJ' is not supported by miniaster"},
+          {"OPTION='NOEUD_ORDO', GROUP_MA='LD',", "OPTION='TUNNEL', GROUP_MA='LD',",
+           "keyword CREA_GROUP_NO[5]/OPTION: value 'TUNNEL' is not supported by miniaster"}}) {
+        auto r = runComm(std::string(every).replace(every.find(from), from.size(), to));
+        EXPECT_EQ(r.status, 1) << r.output;
+        EXPECT_NE(r.output.find("<F> <ERROR> DEFI_GROUP (t.comm, line 26): " + cause), std::string::npos) << r.output;
+        EXPECT_EQ(r.output.find("# Command #0001"), std::string::npos) << r.output;  // nothing ran
+    }
 }
 
 // A command file in the syntax of the 2011-2012 versions of ssnv511 (commands_spec §9, old-only
