@@ -284,7 +284,11 @@ std::vector<unsigned char> crackNodeStatus(const Mesh& mesh, const std::vector<d
     std::vector<double> nLo(nn, inf), nHi(nn, -inf), tLo(nn, inf), tHi(nn, -inf);
     for (int c : cutCells) {
         const CellType type = mesh.cellTypes[size_t(c)];
-        if (!xfemSupports(type)) continue;
+        if (!xfemSupports(type))  // a status left at 0 there would pass for a front outside the mesh
+            throw NotImplemented(fmt::format(
+                "DEFI_FISS_XFEM: the crack cuts cell {} ({}): the node status and the front of a crack are found "
+                "on SEG2, TRIA3, QUAD4, TETRA4 and HEXA8 cells only",
+                mesh.cellNames[size_t(c)], cellTypeName(type)));
         const auto nodes = mesh.cellNodes(c);
         double cnLo = inf, cnHi = -inf, ctLo = inf, ctHi = -inf;
         auto zeroAt = [&](double v) { ctLo = std::min(ctLo, v), ctHi = std::max(ctHi, v); };
