@@ -39,10 +39,10 @@ ConceptPtr recuTable(const KeywordSet& kw, CommandContext&) {
     auto crack = kw.object<xfem::Crack>("CO");
     const std::string name = kw.text("NOM_TABLE");
     if (crack->fronts.empty())
-        throw UserError(fmt::format("{}='{}': {} {} has no front in the mesh, so no {} table (code_aster builds "
-                                    "none either)",
-                                    kw.pathOf("NOM_TABLE"), name, crack->isCrack ? "crack" : "interface", crack->name,
-                                    name));
+        throw UserError(
+            fmt::format("{}='{}': {} {} has no front in the mesh, so no {} table (code_aster builds "
+                        "none either)",
+                        kw.pathOf("NOM_TABLE"), name, crack->isCrack ? "crack" : "interface", crack->name, name));
     auto t = std::make_shared<Table>();
     if (name == "NB_FOND_FISS") {
         t->addColumn("NOMBRE", ColumnType::integer());

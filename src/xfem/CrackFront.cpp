@@ -23,9 +23,10 @@ const std::vector<std::vector<int>>& cellFaces(CellType type) {
     static const std::vector<std::vector<int>> tetra{{0, 1, 2}, {0, 1, 3}, {1, 2, 3}, {0, 2, 3}};
     if (type == CellType::HEXA8) return hexa;
     if (type == CellType::TETRA4) return tetra;
-    throw NotImplemented(fmt::format("crack front through a {} cell: miniaster finds it in TRIA3, QUAD4, TETRA4 and "
-                                     "HEXA8 cells",
-                                     cellTypeName(type)));
+    throw NotImplemented(
+        fmt::format("crack front through a {} cell: miniaster finds it in TRIA3, QUAD4, TETRA4 and "
+                    "HEXA8 cells",
+                    cellTypeName(type)));
 }
 
 // Front points merged within a tolerance (a point on an edge or at a node is found on several
@@ -142,8 +143,8 @@ std::vector<CrackFront> chainFronts(const std::vector<std::pair<int, int>>& segm
 }
 
 template <class NodeList>
-std::optional<Vec3> zeroOnNodes(const Mesh& mesh, CellType type, const NodeList& nodes,
-                                const std::vector<double>& lsn, const std::vector<double>& lst) {
+std::optional<Vec3> zeroOnNodes(const Mesh& mesh, CellType type, const NodeList& nodes, const std::vector<double>& lsn,
+                                const std::vector<double>& lst) {
     std::array<Vec3, 4> x{};
     std::array<double, 4> n{}, t{};
     for (size_t a = 0; a < nodes.size(); ++a)
@@ -167,7 +168,8 @@ std::optional<Vec3> zeroOfTwoLevelSets(CellType type, std::span<const Vec3> vert
         double f[2] = {0, 0}, J[2][2] = {{0, 0}, {0, 0}};
         for (size_t a = 0; a < vertices.size(); ++a) {
             f[0] += N[a] * lsn[a], f[1] += N[a] * lst[a];
-            for (int j = 0; j < 2; ++j) J[0][j] += dN[3 * a + size_t(j)] * lsn[a], J[1][j] += dN[3 * a + size_t(j)] * lst[a];
+            for (int j = 0; j < 2; ++j)
+                J[0][j] += dN[3 * a + size_t(j)] * lsn[a], J[1][j] += dN[3 * a + size_t(j)] * lst[a];
         }
         const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
         const double scale = (std::abs(J[0][0]) + std::abs(J[0][1])) * (std::abs(J[1][0]) + std::abs(J[1][1]));
@@ -207,9 +209,10 @@ std::vector<CrackFront> crackFronts(const Mesh& mesh, const std::vector<double>&
         for (int c : tipCells) {
             const CellType type = mesh.cellTypes[size_t(c)];
             if (type != CellType::TRIA3 && type != CellType::QUAD4)
-                throw NotImplemented(fmt::format("crack front through a {} cell: miniaster finds it in TRIA3, "
-                                                 "QUAD4, TETRA4 and HEXA8 cells",
-                                                 cellTypeName(type)));
+                throw NotImplemented(
+                    fmt::format("crack front through a {} cell: miniaster finds it in TRIA3, "
+                                "QUAD4, TETRA4 and HEXA8 cells",
+                                cellTypeName(type)));
             if (auto p = zeroOnNodes(mesh, type, mesh.cellNodes(c), lsn, lst)) addPoint(*p);
         }
         for (const Vec3& p : set.points) fronts.push_back({{p}, {0.0}, false});

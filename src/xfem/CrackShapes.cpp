@@ -77,7 +77,8 @@ void checkForm(const CrackShape& shape, bool isCrack, int dim) {
     if ((crackOnly && !isCrack) || (interfaceOnly && isCrack))
         throw UserError(fmt::format(
             "DEFI_FISS/FORM_FISS='{}' does not define a {}: use TYPE_DISCONTINUITE='{}' (code_aster's XFEM_23)", f,
-            isCrack ? "crack (it has no front)" : "closed interface (it has a front)", isCrack ? "INTERFACE" : "FISSURE"));
+            isCrack ? "crack (it has no front)" : "closed interface (it has a front)",
+            isCrack ? "INTERFACE" : "FISSURE"));
     const bool only3d = isOneOf(f, {"DEMI_PLAN", "CYLINDRE"}) || (isCrack && isOneOf(f, {"ELLIPSE", "RECTANGLE"}));
     const bool only2d = isOneOf(f, {"SEGMENT", "DEMI_DROITE", "DROITE"});
     if ((only3d && dim != 3) || (only2d && dim != 2))
@@ -92,8 +93,7 @@ std::array<Vec3, 3> planarFrame(const CrackShape& shape) {
         throw UserError(fmt::format(
             "DEFI_FISS/VECT_X=({:g}, {:g}, {:g}) and VECT_Y=({:g}, {:g}, {:g}) are not orthogonal (cosine {:g}); "
             "the shape's frame would be skewed",
-            shape.vectX[0], shape.vectX[1], shape.vectX[2], shape.vectY[0], shape.vectY[1], shape.vectY[2],
-            dot(x, y)));
+            shape.vectX[0], shape.vectX[1], shape.vectX[2], shape.vectY[0], shape.vectY[1], shape.vectY[2], dot(x, y)));
     return {x, y, cross(x, y)};
 }
 
@@ -102,17 +102,17 @@ void closedShape(const Mesh& mesh, const CrackShape& shape, bool isCrack, ShapeL
     const std::string& f = shape.form;
     const double a = shape.semiMajor, b = f == "ENTAILLE" ? shape.filletRadius : shape.semiMinor;
     if (!(a > 0.0) || !(b > 0.0))
-        throw UserError(fmt::format("DEFI_FISS/FORM_FISS='{}': the half-lengths must be positive (got {:g}, {:g})", f,
-                                    a, b));
+        throw UserError(
+            fmt::format("DEFI_FISS/FORM_FISS='{}': the half-lengths must be positive (got {:g}, {:g})", f, a, b));
     const double r = shape.filletRadius;
     if ((f == "RECTANGLE" || f == "ENTAILLE") && r > std::min(a, b))
-        throw UserError(fmt::format("DEFI_FISS/RAYON_CONGE={:g} exceeds the half-length {:g} of the shape", r,
-                                    std::min(a, b)));
+        throw UserError(
+            fmt::format("DEFI_FISS/RAYON_CONGE={:g} exceeds the half-length {:g} of the shape", r, std::min(a, b)));
     for (int n = 0; n < mesh.nodeCount(); ++n) {
         const Vec3 d = difference(mesh.coords[n], shape.centre);
         const double u = dot(frame[0], d), v = dot(frame[1], d), w = dot(frame[2], d);
-        const double h = (f == "ELLIPSE" || f == "CYLINDRE") ? ellipseDistance(u, v, a, b)
-                                                              : roundedRectangleDistance(u, v, a, b, r);
+        const double h =
+            (f == "ELLIPSE" || f == "CYLINDRE") ? ellipseDistance(u, v, a, b) : roundedRectangleDistance(u, v, a, b, r);
         if (!isCrack) {
             out.lsn[n] = h;
         } else if (f == "CYLINDRE") {

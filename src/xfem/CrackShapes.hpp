@@ -11,17 +11,17 @@ namespace ma::xfem {
 
 // The keywords of one FORM_FISS, as DEFI_FISS gives them (unused ones stay 0).
 struct CrackShape {
-    std::string form;  // ELLIPSE, RECTANGLE, CYLINDRE, ENTAILLE, DEMI_PLAN, SEGMENT, DEMI_DROITE, DROITE
-    double semiMajor = 0.0;    // DEMI_GRAND_AXE, or DEMI_LONGUEUR (ENTAILLE)
-    double semiMinor = 0.0;    // DEMI_PETIT_AXE
-    double filletRadius = 0.0; // RAYON_CONGE
-    Vec3 centre{};             // CENTRE
-    Vec3 vectX{}, vectY{};     // VECT_X, VECT_Y
-    bool outside = false;      // COTE_FISS='OUT'
-    Vec3 point{};              // PFON (DEMI_PLAN, DEMI_DROITE), POINT (DROITE), PFON_ORIG (SEGMENT)
-    Vec3 end{};                // PFON_EXTR (SEGMENT)
-    Vec3 normal{};             // NORMALE (DEMI_PLAN)
-    Vec3 tangent{};            // DTAN (DEMI_PLAN, DEMI_DROITE, DROITE)
+    std::string form;           // ELLIPSE, RECTANGLE, CYLINDRE, ENTAILLE, DEMI_PLAN, SEGMENT, DEMI_DROITE, DROITE
+    double semiMajor = 0.0;     // DEMI_GRAND_AXE, or DEMI_LONGUEUR (ENTAILLE)
+    double semiMinor = 0.0;     // DEMI_PETIT_AXE
+    double filletRadius = 0.0;  // RAYON_CONGE
+    Vec3 centre{};              // CENTRE
+    Vec3 vectX{}, vectY{};      // VECT_X, VECT_Y
+    bool outside = false;       // COTE_FISS='OUT'
+    Vec3 point{};               // PFON (DEMI_PLAN, DEMI_DROITE), POINT (DROITE), PFON_ORIG (SEGMENT)
+    Vec3 end{};                 // PFON_EXTR (SEGMENT)
+    Vec3 normal{};              // NORMALE (DEMI_PLAN)
+    Vec3 tangent{};             // DTAN (DEMI_PLAN, DEMI_DROITE, DROITE)
 };
 
 struct ShapeLevelSets {

@@ -28,10 +28,9 @@ std::shared_ptr<Mesh> box(int n) {
     for (int k = 0; k < n; ++k)
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i)
-                m->addCell(CellType::HEXA8,
-                           std::vector<int>{id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
-                                            id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
-                                            id(i, j + 1, k + 1)});
+                m->addCell(CellType::HEXA8, std::vector<int>{id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
+                                                             id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1),
+                                                             id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
     return m;
 }
 
@@ -48,10 +47,9 @@ std::shared_ptr<Mesh> annulus(double r0, double r1, int nr, int nt, int nz) {
     for (int k = 0; k < nz; ++k)
         for (int t = 0; t < nt; ++t)
             for (int i = 0; i < nr; ++i)
-                m->addCell(CellType::HEXA8,
-                           std::vector<int>{id(i, t, k), id(i + 1, t, k), id(i + 1, t + 1, k), id(i, t + 1, k),
-                                            id(i, t, k + 1), id(i + 1, t, k + 1), id(i + 1, t + 1, k + 1),
-                                            id(i, t + 1, k + 1)});
+                m->addCell(CellType::HEXA8, std::vector<int>{id(i, t, k), id(i + 1, t, k), id(i + 1, t + 1, k),
+                                                             id(i, t + 1, k), id(i, t, k + 1), id(i + 1, t, k + 1),
+                                                             id(i + 1, t + 1, k + 1), id(i, t + 1, k + 1)});
     return m;
 }
 
@@ -88,7 +86,7 @@ CrackShape planar(const std::string& form, double a, double b, double r) {
     CrackShape s;
     s.form = form, s.semiMajor = a, s.semiMinor = b, s.filletRadius = r;
     s.centre = {0.45, 0.52, 0.61};
-    s.vectX = {1, 2, 0};    // rotated frame: VECT_X x VECT_Y = (2, -1, 5) / sqrt(30)
+    s.vectX = {1, 2, 0};  // rotated frame: VECT_X x VECT_Y = (2, -1, 5) / sqrt(30)
     s.vectY = {-2, 1, 1};
     return s;
 }
