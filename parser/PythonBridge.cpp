@@ -169,6 +169,13 @@ for _name in _miniaster.command_names():
     setattr(builtins, _name, _make_command(_name))
 builtins._F = _F
 
+# The math names code_aster puts in every command file's namespace (code_aster/Cata/context.py):
+# sslv318a computes its reference with sqrt.
+import math as _math
+for _name in ("acos", "asin", "atan", "atan2", "cos", "cosh", "exp", "log", "log10", "pi", "sin", "sinh",
+              "sqrt", "tan", "tanh"):
+    setattr(builtins, _name, getattr(_math, _name))
+
 # Files written for code_aster ≥ 14 may start with `from code_aster.Commands import *`.
 import types as _types
 _code_aster = _types.ModuleType("code_aster")

@@ -153,7 +153,18 @@ ConceptPtr modiModeleXfem(const KeywordSet& kw, CommandContext& ctx) {
         throw UserError(kw.pathOf("MODELE_IN") + ": " + in->name +
                         " is already an X-FEM model; give the classical model made by AFFE_MODELE");
     std::vector<std::shared_ptr<const xfem::Crack>> cracks;
-    for (const auto& c : kw.objects<xfem::Crack>("FISSURE")) cracks.push_back(c);
+    for (const auto& c : kw.objects<xfem::Crack>("FISSURE")) {
+        const int tipNodes = c->nodeCountWithStatus(2) + c->nodeCountWithStatus(3);
+        if (!c->tipCells.empty() || tipNodes > 0)
+            throw NotImplemented(fmt::format(
+                "{}: the front of crack {} lies inside the mesh ({} cells contain it, {} nodes have crack-tip "
+                "status): crack-tip enrichment (the asymptotic branch functions of TYPE_ENRI_FOND) is not "
+                "implemented yet (issue 26, step 2). An X-FEM model takes interfaces and cracks that cut the "
+                "structure through (no front in the mesh); the crack's level sets and front are available "
+                "(CREA_CHAMP OPERATION='EXTR', the .mess of DEFI_FISS_XFEM)",
+                kw.pathOf("FISSURE"), c->name, c->tipCells.size(), tipNodes));
+        cracks.push_back(c);
+    }
     refuseRepeatedInterfaces(cracks, kw.pathOf("FISSURE"));
     const std::string contact = kw.text("CONTACT");
     const xfem::XfemContact mode = contact == "SANS" ? xfem::XfemContact::None : xfem::XfemContact::Standard;
