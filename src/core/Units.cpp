@@ -1,5 +1,7 @@
 #include "core/Units.hpp"
 
+#include <filesystem>
+
 #include "core/Error.hpp"
 
 namespace ma {
@@ -15,13 +17,14 @@ std::string Units::input(int unit) const {
 
 std::string Units::output(int unit) const {
     auto it = outputs_.find(unit);
-    if (it != outputs_.end()) return it->second;
+    if (it != outputs_.end()) return *given_.insert(it->second).first;
     auto data = inputs_.find(unit);
     if (data != inputs_.end())
         throw UserError("logical unit " + std::to_string(unit) + " is the data file " + data->second +
                         ": a result cannot be written on it (choose another UNITE, or declare the unit as a "
                         "result with an F ... R line)");
-    return outDir_ + "/fort." + std::to_string(unit);
+    // A folder given with a trailing slash ("out/") names the file without "//".
+    return *given_.insert((std::filesystem::path(outDir_) / ("fort." + std::to_string(unit))).string()).first;
 }
 
 }  // namespace ma

@@ -46,7 +46,7 @@ CaseRun runCase(const std::string& dir, const std::string& name, const std::stri
     CaseRun r{0, dir, ""};
     int raw = 0;
     r.output = runCommand(std::string(MINIASTER_BINARY) + " run " + dir + "/" + name + ".comm --mesh " + astest(mesh) +
-                              " --out-dir " + dir,
+                              " --out-dir " + dir + " --verbose",
                           &raw);
     r.status = exitStatus(raw);
     return r;

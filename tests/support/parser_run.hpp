@@ -50,13 +50,14 @@ inline void writeText(const std::filesystem::path& path, const std::string& text
     out << text;
 }
 
-// Runs `miniaster run <input> --out-dir <dir>/out <extra>` in `dir`.
+// Runs `miniaster run <input> --out-dir <dir>/out --verbose <extra>` in `dir` (--verbose: the tests
+// read the log from the output, as it was printed before the terminal summary).
 inline RunResult runMiniaster(const std::filesystem::path& dir, const std::string& input, const std::string& extra = "",
                               const std::string& env = "") {
     RunResult r;
     r.dir = dir;
     const std::string cmd = "cd '" + dir.string() + "' && " + env + " '" + std::string(MINIASTER_BINARY) + "' run '" +
-                            input + "' --out-dir out " + extra + " 2>&1";
+                            input + "' --out-dir out --verbose " + extra + " 2>&1";
     FILE* pipe = popen(cmd.c_str(), "r");
     if (!pipe) return r;
     std::array<char, 4096> buffer{};
