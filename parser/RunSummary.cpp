@@ -66,7 +66,8 @@ void printCommandEnd(const std::string& command, int line, double seconds) {
     gPending.seconds += seconds;
 }
 
-void printRunSummary(const RunState& run, const std::string& diagnostic, const std::vector<std::string>& files) {
+void printRunSummary(const RunState& run, const std::string& diagnostic, const std::vector<std::string>& files,
+                     fs::file_time_type start) {
     flushPending();
     std::string out;
     const auto& tests = testReport();
@@ -83,7 +84,8 @@ void printRunSummary(const RunState& run, const std::string& diagnostic, const s
     out.append(diagnostic).append("\n");
     std::string written;
     for (const auto& f : files)
-        if (std::error_code ec; fs::is_regular_file(f, ec)) written.append("\n    ").append(f);
+        if (std::error_code ec; fs::is_regular_file(f, ec) && fs::last_write_time(f, ec) >= start && !ec)
+            written.append("\n    ").append(f);
     if (!written.empty()) out.append("  files:").append(written).append("\n");
     std::fputs(out.c_str(), stdout);
     std::fflush(stdout);

@@ -2,6 +2,7 @@
 // What `miniaster run` prints on the terminal (docs/supervisor.md, "The terminal"): one line per
 // command as it ends, then the TEST SUMMARY, the alarms raised, the failure, the diagnostic and the
 // files written. The .mess keeps everything; `--verbose` echoes the whole .mess instead.
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -16,8 +17,9 @@ class RunState;
 void printCommandEnd(const std::string& command, int line, double seconds);
 
 // The end of the run on stdout: `diagnostic` is the block of the .mess ("---...--- DIAGNOSTIC JOB :
-// ...---..."), `files` the outputs to list when they exist.
-void printRunSummary(const RunState& run, const std::string& diagnostic, const std::vector<std::string>& files);
+// ...---..."), `files` the outputs to list when they exist and were modified since `start` (the run's).
+void printRunSummary(const RunState& run, const std::string& diagnostic, const std::vector<std::string>& files,
+                     std::filesystem::file_time_type start);
 
 // The .mess line saying why NON_REGRESSION values of a case differ from code_aster's by design and
 // where the doc lists them; "" when the case is not one of those or nothing differs.

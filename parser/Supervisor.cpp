@@ -6,6 +6,7 @@
 #include <pybind11/embed.h>
 
 #include <cerrno>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -359,6 +360,13 @@ void runCommandFile(const Options& opt, RunState& run, RunOutputs& outputs, cons
     if (!run.failure && !run.finSeen) msg().alarm(SUPERVIS_2);
 }
 
+// When the run started, by the file system's clock (the summary lists the files written since),
+// less a second: the kernel stamps files with a coarse clock that may lag behind now().
+fs::file_time_type runStart() {
+    static const fs::file_time_type start = fs::file_time_type::clock::now() - std::chrono::seconds(1);
+    return start;
+}
+
 // Summary, diagnostic, the outputs closed (rank 0); the exit status.
 int finishRun(const Options& opt, const RunState& run, RunOutputs& outputs) {
     const auto& tests = testReport();
@@ -393,7 +401,7 @@ int finishRun(const Options& opt, const RunState& run, RunOutputs& outputs) {
         std::vector<std::string> files{outputs.mess, outputs.resu};
         for (const auto& f : run.units.outputsGiven()) files.push_back(f);
         for (const auto& c : outputs.compressedResults) files.push_back(c.final);
-        printRunSummary(run, block, files);
+        printRunSummary(run, block, files, runStart());
     }
     installCrashHandler(-1);  // the .mess is closed
     std::fflush(stdout);
@@ -430,6 +438,7 @@ int supervisorMain(int argc, char** argv) {
         return 1;
     }
 
+    runStart();
     RunState& run = RunState::current();
     run.checkOnly = opt.checkOnly;
     run.consoleSummary = mpi::isRoot() && !opt.verbose;

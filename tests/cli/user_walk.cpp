@@ -69,8 +69,8 @@ protected:
                "TYPE_CHAM='VECT_2D', NOM_CMP=('DX', 'DY')))\n" +
                comm.substr(fin + 1);
         std::ofstream(dir_ + "/ssnv511e.comm") << comm;
-        e_ = run(kBinary + " run " + dir_ + "/ssnv511e.comm --mesh " + astest("ssnv511a.mmed") + " --out-dir " +
-                 dir_ + "/out/");
+        e_ = run(kBinary + " run " + dir_ + "/ssnv511e.comm --mesh " + astest("ssnv511a.mmed") + " --out-dir " + dir_ +
+                 "/out/");
         med_ = dir_ + "/out/fort.81";
     }
     static void TearDownTestSuite() { fs::remove_all(dir_); }
@@ -141,8 +141,9 @@ TEST_F(UserWalk, ParaViewReadsTheTimeSeriesAndWarpsByTheDisplacement) {
     EXPECT_NE(out.text.find("point RES_XFEMDEPL_LAGS_C 1 - "), std::string::npos) << out.text;
     EXPECT_NE(out.text.find("cell RES_XFEMSIEF_ELGA 4 SIXX,SIYY,SIZZ,SIXY "), std::string::npos) << out.text;
     // The vector's ranges at INST 1, as h5py reads them from the MED file; DZ = 0 in 2D.
-    ASSERT_TRUE(std::regex_search(out.text, m,
-                                  std::regex("point RES_XFEMDEPL 3 DX,DY,DZ (\\S+),(\\S+) (\\S+),(\\S+) (\\S+),(\\S+)")))
+    ASSERT_TRUE(
+        std::regex_search(out.text, m,
+                          std::regex("point RES_XFEMDEPL 3 DX,DY,DZ (\\S+),(\\S+) (\\S+),(\\S+) (\\S+),(\\S+)")))
         << out.text;
     const auto dx = medRange(med_, "RES_XFEMDEPL", "DX"), dy = medRange(med_, "RES_XFEMDEPL", "DY");
     EXPECT_DOUBLE_EQ(std::stod(m[1]), dx.first);
@@ -204,8 +205,8 @@ TEST_F(UserWalk, RunPrintsASummaryAndTheMessKeepsEverything) {
 
     // --verbose: the whole log on the terminal, as before.
     const auto dir = ma::test::scratchDir("user_walk_verbose");
-    const auto verbose = run(kBinary + " run " + kSource + "/astest/fe_patch_quad4.export --out-dir " + dir +
-                             " --verbose");
+    const auto verbose =
+        run(kBinary + " run " + kSource + "/astest/fe_patch_quad4.export --out-dir " + dir + " --verbose");
     EXPECT_EQ(verbose.status, 0) << verbose.text;
     EXPECT_NE(verbose.text.find("# Command #0001"), std::string::npos) << verbose.text;
     EXPECT_NE(verbose.text.find(readText(dir + "/fe_patch_quad4.mess").substr(0, 400)), std::string::npos);
@@ -266,7 +267,8 @@ TEST(UserWalkPlot, ThreeDimensionalViewAndClipShowTheInterfaces) {
     EXPECT_GT(std::stod(m[1]), 0.001) << "no interface drawn: " << clip.text;
     out = run(kBinary + " plot " + med + " -o " + dir + "/x.png --clip 1,2,3");
     EXPECT_EQ(out.status, 1);
-    EXPECT_NE(out.text.find("--clip expects 6 comma-separated finite numbers, got '1,2,3'"), std::string::npos) << out.text;
+    EXPECT_NE(out.text.find("--clip expects 6 comma-separated finite numbers, got '1,2,3'"), std::string::npos)
+        << out.text;
     fs::remove_all(dir);
 }
 
@@ -295,8 +297,7 @@ TEST(UserWalkSmallThings, MissingCaseStudyWithoutNameAndVersion) {
     const auto head = run("git -C " + kSource + " rev-parse --short=12 HEAD");
     if (head.status == 0)
         EXPECT_EQ(out.text.rfind("miniaster 0.1 (commit " + head.text.substr(0, 12), 0), 0u) << out.text;
-    else
-        EXPECT_EQ(out.text, "miniaster 0.1 (unknown commit: the sources were not built from a git checkout)\n");
+    else EXPECT_EQ(out.text, "miniaster 0.1 (unknown commit: the sources were not built from a git checkout)\n");
     fs::remove_all(dir);
 }
 

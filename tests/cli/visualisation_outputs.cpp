@@ -160,7 +160,9 @@ TEST_F(Visualisation, ConvertRefusesWhatItCannotDo) {
     int raw = 0;
     auto out = runCommand(std::string(MINIASTER_BINARY) + " convert " + dir_ + "/fort.81 " + dir_ + "/x.txt", &raw);
     EXPECT_EQ(exitStatus(raw), 1);
-    EXPECT_NE(out.find("miniaster convert: the output file must end in .vtu: "), std::string::npos) << out;
+    EXPECT_NE(out.find("miniaster convert: the output file must end in .vtu (one file) or .pvd (a time series): "),
+              std::string::npos)
+        << out;
     out = runCommand(std::string(MINIASTER_BINARY) + " convert " + dir_ + "/absent.rmed " + dir_ + "/x.vtu", &raw);
     EXPECT_EQ(exitStatus(raw), 1);
     EXPECT_NE(out.find("absent.rmed"), std::string::npos) << out;
