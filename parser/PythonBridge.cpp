@@ -14,6 +14,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <set>
+#include <sstream>
 #include <unistd.h>
 
 #include "core/Error.hpp"
@@ -27,6 +28,7 @@
 #include "parser/ParserMessages.hpp"
 #include "parser/RunGuard.hpp"
 #include "parser/RunState.hpp"
+#include "parser/RunSummary.hpp"
 
 namespace py = pybind11;
 
@@ -217,6 +219,23 @@ def result_name(frame):
         return "%s_%s" % (following[0].argval, value)
     return ""
 
+def function_echo(f):
+    """A Python function given to FORMULE, for the echo: its source (file, line) and the values
+    of the plain names it reads from the file or its closure (numbers, strings...)."""
+    import inspect, os
+    code = f.__code__
+    try:
+        lines, first = inspect.getsourcelines(f)
+    except (OSError, TypeError):
+        lines, first = [], code.co_firstlineno
+    out = ["# %s (%s, line %d)" % (f.__name__, os.path.basename(code.co_filename), first)]
+    out += ["#   " + l.rstrip() for l in lines[:20]] + (["#   ... (%d more lines)" % (len(lines) - 20)] if len(lines) > 20 else [])
+    values = {n: c.cell_contents for n, c in zip(code.co_freevars, f.__closure__ or ()) if c.cell_contents is not None}
+    names = set(code.co_names).union(*(c.co_names for c in code.co_consts if hasattr(c, "co_names")))
+    values.update({n: f.__globals__[n] for n in sorted(names) if n in f.__globals__ and n not in values})
+    shown = ["%s=%r" % (k, v) for k, v in values.items() if isinstance(v, (int, float, complex, str, bool))]
+    return "\n".join(out + (["#   with " + ", ".join(shown)] if shown else []))
+
 class _LogWriter:
     """print() in the command file goes to the message log."""
     def __init__(self):
@@ -258,6 +277,11 @@ bool isDisabledForTests(const std::string& name) {
 
 py::object& resultNameFunction() {
     static auto* f = new py::object();  // leaked: released after the interpreter otherwise
+    return *f;
+}
+
+py::object& functionEchoFunction() {
+    static auto* f = new py::object();  // leaked, as above
     return *f;
 }
 
@@ -323,6 +347,15 @@ void echoCommand(const CommandContext& ctx, const KeywordSet& kw, const py::dict
                                       ? v.attr("__name__").cast<std::string>()
                                       : py::repr(v).cast<std::string>();
         extra += fmt::format("    {}={},\n", py::str(k).cast<std::string>(), shown);
+        // A function's values are inside it: its source and the values it reads go with it.
+        if (py::hasattr(v, "__code__")) {
+            std::string text;
+            try {
+                text = functionEchoFunction()(v).cast<std::string>();
+            } catch (py::error_already_set&) {}  // an echo only: the formula itself is checked when used
+            std::istringstream source(text);
+            for (std::string l; std::getline(source, l);) extra += "        " + l + "\n";
+        }
     }
     msg().info(fmt::format("\n # {}\n # Command #{:04d} from {}, line {}{}\n{}\n", std::string(78, '-'),
                            run.commandCount, run.commBaseName, ctx.line,
@@ -461,6 +494,7 @@ py::object runCommand(const std::string& name, py::object frame, py::tuple args,
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         run.runningCommand[0] = '\0';
         run.recordTiming(name, seconds);
+        if (run.consoleSummary) printCommandEnd(name, line, seconds);
         msg().info(fmt::format(" # end of {} (line {}): elapsed {:.3f} s, peak memory {:.1f} MB", name, line, seconds,
                                static_cast<double>(peakMemoryKb()) / 1024.0));
         agreeWithOtherProcesses(run);
@@ -564,6 +598,7 @@ void installPythonBuiltins() {
     ns["__builtins__"] = py::module_::import("builtins");
     py::exec(kBootstrap, ns);
     resultNameFunction() = ns["result_name"];
+    functionEchoFunction() = ns["function_echo"];
 }
 
 // ------------------------------------------------------------------------------------------

@@ -125,7 +125,7 @@ void applyExport(const ExportFile& exportFile, RunState& run, RunOutputs& out) {
                 throw UserError(exportFile.where(e) +
                                 ": a second result directory; miniaster writes the units "
                                 "without an F line into one (the first R line)");
-            if (e.result) out.resultFolders.push_back(path);
+            if (e.result) out.resultFolders.push_back(e.path.has_filename() ? path : e.path.parent_path().string());
             continue;
         }
         if (e.data) {

@@ -30,6 +30,7 @@ public:
     std::string commFile;                           // path of the command file
     std::string commBaseName;                       // for messages: "ssnv511a.comm"
     bool checkOnly = false;                         // --check-syntax: validate every call, execute none
+    bool consoleSummary = false;                    // the terminal gets a summary, not the log (parser/RunSummary)
     std::map<std::string, std::string> runOptions;  // expert options given (parser/RunOptions.hpp)
     bool debutSeen = false;
     bool finSeen = false;

@@ -7,11 +7,13 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 
+#include "MiniasterCommit.hpp"
 #include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 #include "core/MallocHugePages.hpp"
@@ -25,6 +27,7 @@
 #include "parser/RunOptions.hpp"
 #include "parser/RunOutputs.hpp"
 #include "parser/RunState.hpp"
+#include "parser/RunSummary.hpp"
 #include "parser/StaticCheck.hpp"
 
 namespace py = pybind11;
@@ -40,10 +43,12 @@ std::string usage() {
     for (const auto& [name, o] : RunOptionRegistry::instance().options())
         options += fmt::format(" [--{} {}]", name, o.valueName);
     std::string text = fmt::format(
-        "usage: miniaster run CASE.export [--np K] [--out-dir DIR] [--check-syntax]{0}\n"
-        "       miniaster run CASE.comm [--mesh MESH.med] [--np K] [--out-dir DIR] [--check-syntax]{0}\n"
+        "usage: miniaster run CASE.export [--np K] [--out-dir DIR] [--check-syntax] [--verbose]{0}\n"
+        "       miniaster run CASE.comm [--mesh MESH.med] [--np K] [--out-dir DIR] [--check-syntax] [--verbose]{0}\n"
         "Runs a code_aster command file. Writes <case>.mess (message log) and <case>.resu (TEST lines,\n"
-        "tables) in DIR (default: the current folder). --check-syntax validates every command call\n"
+        "tables) in DIR (default: the current folder). The terminal gets a summary (each command and\n"
+        "its time, the TEST SUMMARY, the diagnostic, the files written); --verbose prints the whole\n"
+        "message log there instead. --check-syntax validates every command call\n"
         "against the catalog without executing any. --np K runs K MPI processes (mpirun; P mpi_nbcpu K\n"
         "in the .export does the same, the command line wins; docs/mpi.md).\n",
         options);
@@ -57,6 +62,7 @@ struct Options {
     bool outDirGiven = false;
     std::string mesh;
     bool checkOnly = false;
+    bool verbose = false;                           // the whole log on stdout, not the summary
     int processes = 0;                              // --np (0: not given)
     std::map<std::string, std::string> runOptions;  // registered expert options given
 };
@@ -84,9 +90,9 @@ std::optional<std::string> readCommandFile(const std::string& path, std::string&
 
 std::string banner() {
     return fmt::format(
-        "\n {0}\n  -- CODE_ASTER -- VERSION : miniaster {1} (runs code_aster command files)\n"
+        "\n {0}\n  -- CODE_ASTER -- VERSION : miniaster {1} (runs code_aster command files; {3})\n"
         "  Embedded Python {2}\n {0}\n",
-        std::string(78, '='), MINIASTER_VERSION, PY_VERSION);
+        std::string(78, '='), MINIASTER_VERSION, PY_VERSION, MINIASTER_COMMIT);
 }
 
 std::string timingSummary(const RunState& run) {
@@ -232,6 +238,8 @@ Options parseArguments(int argc, char** argv) {
                                              mpi::size(), mpi::size()));
         } else if (a == "--check-syntax") {
             opt.checkOnly = true;
+        } else if (a == "--verbose") {
+            opt.verbose = true;
         } else if (const RunOption* o =
                        a.starts_with("--") ? RunOptionRegistry::instance().find(a.substr(2)) : nullptr) {
             const std::string v = value();
@@ -330,6 +338,9 @@ void runCommandFile(const Options& opt, RunState& run, RunOutputs& outputs, cons
         "  command file: {}\n  message log : {}\n  result file : {}\n  memory      : {}\n  MPI processes: {}{}{}",
         run.commFile, outputs.mess, outputs.resu, mallocPagesState(), mpi::size(),
         opt.checkOnly ? "\n  mode        : syntax check only (--check-syntax)" : "", announced);
+    if (run.consoleSummary)
+        std::printf("miniaster %s (%s): %s\n  message log: %s (--verbose prints it here)\n", MINIASTER_VERSION,
+                    MINIASTER_COMMIT, run.commFile.c_str(), outputs.mess.c_str());
     // The interpreter lives until the process ends: concepts may hold Python objects (FORMULE).
     if (const auto refused = startEmbeddedPython()) {
         run.fail("ERROR", "", 0, *refused);
@@ -352,10 +363,18 @@ void runCommandFile(const Options& opt, RunState& run, RunOutputs& outputs, cons
     if (!run.failure && !run.finSeen) msg().alarm(SUPERVIS_2);
 }
 
+// When the run started, by the file system's clock (the summary lists the files written since),
+// less a second: the kernel stamps files with a coarse clock that may lag behind now().
+fs::file_time_type runStart() {
+    static const fs::file_time_type start = fs::file_time_type::clock::now() - std::chrono::seconds(1);
+    return start;
+}
+
 // Summary, diagnostic, the outputs closed (rank 0); the exit status.
 int finishRun(const Options& opt, const RunState& run, RunOutputs& outputs) {
     const auto& tests = testReport();
     if (!tests.empty()) msg().info("\n" + tests.summary());
+    if (const std::string note = knownDifferenceNote(run.commBaseName, tests); !note.empty()) msg().info(note);
     msg().info(timingSummary(run));
     for (const auto& [id, count] : msg().ignoredAlarms())
         msg().infof("\n <I> alarm {} raised {} time(s), not printed (DEBUT/IGNORE_ALARM)", id, count);
@@ -377,9 +396,16 @@ int finishRun(const Options& opt, const RunState& run, RunOutputs& outputs) {
         diagnostic = "OK";
     }
     const std::string rule(60, '-');
-    msg().info(fmt::format("\n{}\n--- DIAGNOSTIC JOB : {}\n{}", rule, diagnostic, rule));
+    const std::string block = fmt::format("\n{}\n--- DIAGNOSTIC JOB : {}\n{}", rule, diagnostic, rule);
+    msg().info(block);
 
     if (mpi::isRoot() && !finishOutputs(outputs, run.failure.has_value(), opt.checkOnly)) status = 1;
+    if (run.consoleSummary) {
+        std::vector<std::string> files{outputs.mess, outputs.resu};
+        for (const auto& f : run.units.outputsGiven()) files.push_back(f);
+        for (const auto& c : outputs.compressedResults) files.push_back(c.final);
+        printRunSummary(run, block, files, runStart());
+    }
     installCrashHandler(-1);  // the .mess is closed
     std::fflush(stdout);
     return status;
@@ -389,7 +415,10 @@ int finishRun(const Options& opt, const RunState& run, RunOutputs& outputs) {
 
 // Every process runs the same command file (docs/mpi.md); only rank 0 prints and writes.
 int supervisorMain(int argc, char** argv) {
-    if (argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
+    const auto asksHelp = [&](int i) {
+        return argc > i && (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h");
+    };
+    if (asksHelp(1) || (argc >= 2 && std::string(argv[1]) == "run" && asksHelp(2))) {
         if (mpi::isRoot()) std::fputs(usage().c_str(), stdout);
         return 0;
     }
@@ -403,13 +432,30 @@ int supervisorMain(int argc, char** argv) {
         return 1;
     }
 
+    // A case that does not exist has no name to give a .mess: nothing is written.
+    if (std::error_code ec; !fs::exists(fs::symlink_status(opt.input, ec))) {
+        if (mpi::isRoot())
+            std::fprintf(stderr, "miniaster: the %s %s does not exist; nothing was run\n",
+                         fs::path(opt.input).extension() == ".export" ? ".export file" : "command file",
+                         opt.input.c_str());
+        return 1;
+    }
+
+    runStart();
     RunState& run = RunState::current();
     run.checkOnly = opt.checkOnly;
+    run.consoleSummary = mpi::isRoot() && !opt.verbose;
+    if (run.consoleSummary) {
+        msg().setEcho(false);
+        msg().setEmergencyEcho(true);
+    }
     run.runOptions = opt.runOptions;
     const std::string caseName = fs::path(opt.input).stem().string();
     RunOutputs outputs;
     gOutputs = &outputs;
+    // Without a trailing separator: the paths printed and written are made from it ("out/" would give "out//x").
     outputs.outDir = fs::absolute(opt.outDir).lexically_normal().string();
+    while (outputs.outDir.size() > 1 && outputs.outDir.back() == '/') outputs.outDir.pop_back();
     msg().info(banner());
 
     // Setup, before the first command: a bad .export or input is logged in the .mess (when the

@@ -3,6 +3,7 @@
 #include <exception>
 #include <string>
 
+#include "MiniasterCommit.hpp"
 #include "cli/MpiConfinement.hpp"
 #include "cli/MpiLaunch.hpp"
 #include "cli/MpirunChild.hpp"
@@ -15,7 +16,7 @@
 int main(int argc, char** argv) {
     const std::string command = argc >= 2 ? argv[1] : "";
     if (command == "--version") {
-        std::printf("miniaster %s\n", MINIASTER_VERSION);
+        std::printf("miniaster %s (%s)\n", MINIASTER_VERSION, MINIASTER_COMMIT);
         return 0;
     }
     if (command == "convert") return ma::cli::convertMain(argc, argv);

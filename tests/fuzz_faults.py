@@ -159,7 +159,8 @@ def run_case(binary, case):
             f.write(export_text)
         before = snapshot(os.path.join(work, "inputs"))
         try:
-            p = subprocess.run([binary, "run", export, "--out-dir", os.path.join(work, "out")], cwd=work,
+            # --verbose: the whole log on stdout, searched for the forbidden texts below.
+            p = subprocess.run([binary, "run", export, "--out-dir", os.path.join(work, "out"), "--verbose"], cwd=work,
                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=RUN_TIMEOUT)
         except subprocess.TimeoutExpired:
             return "%s: no end within %d s" % (name, RUN_TIMEOUT), None

@@ -25,8 +25,10 @@ cd "$work" || exit 1
 
 out=$(miniaster --version) || fail "--version exited with $?"
 version=$(sed -n 's/^project(miniaster VERSION \([0-9.]*\).*/\1/p' "$src/CMakeLists.txt")
-[ "$out" = "miniaster $version" ] || fail "--version printed '$out', expected 'miniaster $version'"
-[ "$("$build/miniaster" --version)" = "miniaster $version" ] || fail "the binary's --version differs"
+# The commit: git describe of the checkout (tools/git_version.cmake), the same in the launcher and the binary.
+head=$(git -C "$src" rev-parse --short=12 HEAD)
+case "$out" in "miniaster $version (commit $head"*) ;; *) fail "--version printed '$out', expected 'miniaster $version (commit $head...)'" ;; esac
+case "$("$build/miniaster" --version)" in "miniaster $version (commit $head"*) ;; *) fail "the binary's --version differs: $("$build/miniaster" --version)" ;; esac
 miniaster --help | grep -q "miniaster convert RESULT.rmed OUT.vtu" || fail "--help does not list convert"
 miniaster nonsense >/dev/null 2>&1 && fail "an unknown command exited with 0"
 

@@ -1,11 +1,17 @@
 #!/usr/bin/python3
 """Independent readers for the visualisation tests (tests/cli/visualisation_outputs.cpp).
 
-  visualisation_check.py vtu OUT.vtu RESULT.med FIELD...   VTK's reader against h5py's MED values:
-                                                           every nodal field of the MED file, every
-                                                           step, every component; FIELD... must be
-                                                           among the component names
-  visualisation_check.py png OUT.png WIDTH HEIGHT           size and a non-blank picture
+  visualisation_check.py vtu OUT.vtu RESULT.med FIELD...   VTK's reader (python3-vtk9's or ParaView's
+                                                           python3-paraview's `vtk`) against h5py's
+                                                           MED values: every nodal field of the MED
+                                                           file, every step, every component (DEPL:
+                                                           the vector DX DY DZ, the others NAME_<c>);
+                                                           FIELD... must be among the component names
+  visualisation_check.py png OUT.png WIDTH HEIGHT           size and a non-blank picture (and its share
+                                                           of red pixels: the interfaces)
+  visualisation_check.py range RESULT.med FIELD COMPONENT   min and max of a nodal field's component (MAG:
+                                                           |(DX, DY, DZ)|) at its last step, over the
+                                                           nodes that carry it (h5py)
   visualisation_check.py meshio RESULT.med                  what meshio reads of the file
 Prints one summary line and exits 1 on any difference.
 """
@@ -53,25 +59,46 @@ def check_vtu(vtu, med, wanted):
     expected = med_nodal_fields(med)
     point_data = grid.GetPointData()
     compared, seen = 0, set()
-    for name, (comps, values) in expected.items():
-        array = point_data.GetArray(name)
-        if array is None:
-            sys.exit(f"vtu: no point array {name} in {vtu}")
-        names = [array.GetComponentName(i) for i in range(array.GetNumberOfComponents())]
-        if names != comps:
-            sys.exit(f"vtu: {name}: components {names}, the MED file has {comps}")
-        got = vtk_to_numpy(array).reshape(len(values), -1)
-        same = (got == values) | (np.isnan(got) & np.isnan(values))
+
+    def compare(name, got, want, comps):
+        same = (got == want) | (np.isnan(got) & np.isnan(want))
         if not same.all():
             bad = np.argwhere(~same)[0]
-            sys.exit(f"vtu: {name}: node {bad[0]} {comps[bad[1]]}: VTK {got[tuple(bad)]!r}, MED {values[tuple(bad)]!r}")
-        compared += values.size
+            sys.exit(f"vtu: {name}: node {bad[0]} {comps[bad[1]]}: VTK {got[tuple(bad)]!r}, MED {want[tuple(bad)]!r}")
+        return want.size
+
+    def array(name, components):
+        a = point_data.GetArray(name)
+        if a is None:
+            sys.exit(f"vtu: no point array {name} in {vtu}")
+        names = [a.GetComponentName(i) for i in range(a.GetNumberOfComponents())] if len(components) > 1 else []
+        if len(components) > 1 and names != components:
+            sys.exit(f"vtu: {name}: components {names}, expected {components}")
+        return vtk_to_numpy(a).reshape(grid.GetNumberOfPoints(), -1)
+
+    for name, (comps, values) in expected.items():
         seen.update(comps)
+        if "DX" not in comps or "DY" not in comps:
+            compared += compare(name, array(name, comps), values, comps)
+            continue
+        # A displacement: the vector (DX, DY, DZ; DZ = 0 where DX is known in 2D), the rest one array each.
+        dz = values[:, comps.index("DZ")] if "DZ" in comps else np.where(np.isnan(values[:, comps.index("DX")]),
+                                                                         np.nan, 0.0)
+        vector = np.column_stack([values[:, comps.index("DX")], values[:, comps.index("DY")], dz])
+        compared += compare(name, array(name, ["DX", "DY", "DZ"]), vector, ["DX", "DY", "DZ"])
+        base, at, step = name.partition("@")
+        for i, c in enumerate(comps):
+            if c not in ("DX", "DY", "DZ"):
+                own = f"{base}_{c}{at}{step}"
+                compared += compare(own, array(own, [c]), values[:, i:i + 1], [c])
+    if point_data.GetVectors() is None:
+        sys.exit(f"vtu: {vtu} names no active vectors (Warp By Vector would have none)")
     missing = [w for w in wanted if w not in seen]
     if missing:
         sys.exit(f"vtu: components {missing} not found (found {sorted(seen)})")
     types = sorted({grid.GetCellType(i) for i in range(grid.GetNumberOfCells())})
-    print(f"vtu: OK {len(expected)} nodal arrays, {compared} values equal to the MED file's; "
+    print(f"vtu: OK {len(expected)} nodal fields, {compared} values equal to the MED file's; "
+          f"active vectors {point_data.GetVectors().GetName()}; "
           f"{grid.GetNumberOfPoints()} points, {grid.GetNumberOfCells()} cells, VTK types {types}; "
           f"cell arrays {[grid.GetCellData().GetArrayName(i) for i in range(grid.GetCellData().GetNumberOfArrays())]}")
 
@@ -87,7 +114,24 @@ def check_png(path, width, height):
     coloured = float((rgb.sum(axis=2) < 3 * 250).mean())
     if colours < 50 or coloured < 0.1:
         sys.exit(f"png: {path} looks blank: {colours} colours, {coloured:.1%} non-white pixels")
-    print(f"png: OK {w}x{h}, {colours} colours, {coloured:.0%} non-white pixels")
+    red = float(((rgb[:, :, 0] > 180) & (rgb[:, :, 1] < 80) & (rgb[:, :, 2] < 80)).mean())
+    print(f"png: OK {w}x{h}, {colours} colours, {coloured:.0%} non-white pixels, red {red:.4f}")
+
+
+def print_range(med, field, component):
+    fields = med_nodal_fields(med)
+    names = [n for n in fields if n.split("@")[0] == field]
+    if not names:
+        sys.exit(f"range: no nodal field {field} in {med} ({sorted(fields)})")
+    last = max(names, key=lambda n: int(n.split("@")[1]) if "@" in n else 0)
+    comps, values = fields[last]
+    if component == "MAG":
+        picked = [comps.index(c) for c in ("DX", "DY", "DZ") if c in comps]
+        data = np.sqrt((values[:, picked] ** 2).sum(axis=1))
+    else:
+        data = values[:, comps.index(component)]
+    data = data[np.isfinite(data)]
+    print("range %.17g %.17g" % (data.min(), data.max()))
 
 
 def check_meshio(path):
@@ -117,6 +161,8 @@ def main():
         check_vtu(sys.argv[2], sys.argv[3], sys.argv[4:])
     elif kind == "png":
         check_png(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]))
+    elif kind == "range":
+        print_range(sys.argv[2], sys.argv[3], sys.argv[4])
     elif kind == "meshio":
         check_meshio(sys.argv[2])
     else:

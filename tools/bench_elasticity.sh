@@ -30,7 +30,7 @@ RES = MECA_STATIQUE(MODELE=MO, CHAM_MATER=CM, EXCIT=_F(CHARGE=CH), SOLVEUR=_F(ME
 FIN()
 COMM
 echo "N = $n, $((2 * (n + 1) * (n + 1))) dofs, METHODE = $method, RENUM = $renum"
-/usr/bin/time -v "$build/miniaster" run "$work/bench.comm" --mesh "$work/square.med" --out-dir "$work/out" \
+/usr/bin/time -v "$build/miniaster" run "$work/bench.comm" --mesh "$work/square.med" --out-dir "$work/out" --verbose \
     > "$work/log.txt" 2> "$work/time.txt" || { tail -40 "$work/log.txt"; exit 1; }
 grep -E "model MO|matrix pattern|stiffness assembled|MUMPS|Eigen|Newton iteration|MECA_STATIQUE:|LIRE_MAILLAGE  |TOTAL" "$work/log.txt"
 grep -E "Elapsed \(wall|Maximum resident" "$work/time.txt"

@@ -92,7 +92,7 @@ void Messages::emergency(const std::string& text) {
     write(lines);
     pollfd out{STDOUT_FILENO, POLLOUT, 0};
     // Without the mutex, the thread that holds it may be inside stdout: no echo then.
-    if (echo_ && frozen_ && ::poll(&out, 1, 0) == 1 && (out.revents & POLLOUT)) {
+    if ((echo_ || emergencyEcho_) && frozen_ && ::poll(&out, 1, 0) == 1 && (out.revents & POLLOUT)) {
         std::fwrite(lines.data(), 1, lines.size(), stdout);
         std::fflush(stdout);
     }
@@ -110,6 +110,7 @@ void Messages::alarmBox(const std::string& id, const std::string& text) {
         return;
     }
     ++alarms_;
+    ++raised_[id];
     std::string box = "   !" + std::string(70, '-') + "!\n";
     std::string out = box + "   ! <A> <" + id + ">\n";
     std::string line;
@@ -142,6 +143,7 @@ void Messages::reset() {
     resu_.clear();
     alarms_ = 0;
     ignored_.clear();
+    raised_.clear();
 }
 
 }  // namespace ma

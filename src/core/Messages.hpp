@@ -50,6 +50,8 @@ public:
     void emergency(const std::string& text);
 
     int alarmCount() const { return alarms_; }
+    // How many times each alarm was raised (printed), by id.
+    const std::map<std::string, int>& raisedAlarms() const { return raised_; }
     // DEBUT(IGNORE_ALARM=...): these alarms are neither printed nor counted for the diagnostic;
     // ignoredAlarms() gives how many of each were raised (for the end of the log).
     void ignoreAlarms(const std::vector<std::string>& ids);
@@ -57,6 +59,8 @@ public:
     const std::string& messText() const { return mess_; }
     const std::string& resuText() const { return resu_; }
     void setEcho(bool echo) { echo_ = echo; }
+    // Without the echo (run's terminal summary), an emergency's lines still reach stdout.
+    void setEmergencyEcho(bool echo) { emergencyEcho_ = echo; }
     void reset();
 
 private:
@@ -75,7 +79,9 @@ private:
     std::string mess_, resu_;
     int alarms_ = 0;
     std::map<std::string, int> ignored_;  // id -> times raised
+    std::map<std::string, int> raised_;   // id -> times raised and printed
     bool echo_ = true;
+    bool emergencyEcho_ = false;
 };
 
 inline Messages& msg() { return Messages::instance(); }

@@ -2,6 +2,8 @@
 
 #include <sys/stat.h>
 
+#include <filesystem>
+
 #include "core/Error.hpp"
 
 namespace ma {
@@ -17,13 +19,14 @@ std::string Units::input(int unit) const {
 
 std::string Units::output(int unit) const {
     auto it = outputs_.find(unit);
-    if (it != outputs_.end()) return it->second;
+    if (it != outputs_.end()) return *given_.insert(it->second).first;
     auto data = inputs_.find(unit);
     if (data != inputs_.end())
         throw UserError("logical unit " + std::to_string(unit) + " is the data file " + data->second +
                         ": a result cannot be written on it (choose another UNITE, or declare the unit as a "
                         "result with an F ... R line)");
-    const std::string path = outDir_ + "/fort." + std::to_string(unit);
+    // A folder given with a trailing slash ("out/") names the file without "//".
+    const std::string path = (std::filesystem::path(outDir_) / ("fort." + std::to_string(unit))).string();
     struct stat st {};
     if (::lstat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
         throw UserError("the result file " + path + " of logical unit " + std::to_string(unit) + " is " +
@@ -31,7 +34,7 @@ std::string Units::output(int unit) const {
                              ? "a symbolic link: the run does not write through a link it did not create"
                              : "not a regular file (a folder, a FIFO, a device or a socket)") +
                         "; remove it or choose another output folder");
-    return path;
+    return *given_.insert(path).first;
 }
 
 }  // namespace ma

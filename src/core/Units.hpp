@@ -3,6 +3,7 @@
 // Inputs (D) are read in place; outputs (R) go to the named file, otherwise to fort.<unit> in the
 // output folder.
 #include <map>
+#include <set>
 #include <string>
 
 namespace ma {
@@ -22,10 +23,13 @@ public:
     std::string output(int unit) const;
     const std::map<int, std::string>& inputs() const { return inputs_; }
     const std::map<int, std::string>& outputs() const { return outputs_; }
+    // Every path output() gave (the run's summary lists those that exist: the files written).
+    const std::set<std::string>& outputsGiven() const { return given_; }
 
 private:
     std::map<int, std::string> inputs_, outputs_;
     std::string outDir_ = ".";
+    mutable std::set<std::string> given_;
 };
 
 }  // namespace ma

@@ -126,7 +126,7 @@ VtkCell vtkCellOf(CellType t) {
 }
 
 void write(const std::string& path, const Mesh& mesh, const std::vector<DataArray>& pointData,
-           const std::vector<DataArray>& cellData) {
+           const std::vector<DataArray>& cellData, const std::string& activeVectors) {
     std::vector<double> points;
     points.reserve(size_t(mesh.nodeCount()) * 3);
     for (const auto& xyz : mesh.coords) points.insert(points.end(), xyz.begin(), xyz.end());
@@ -145,7 +145,8 @@ void write(const std::string& path, const Mesh& mesh, const std::vector<DataArra
         "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
         "header_type=\"UInt64\">\n  <UnstructuredGrid>\n";
     xml += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", mesh.nodeCount(), mesh.cellCount());
-    xml += "      <PointData>\n";
+    xml += activeVectors.empty() ? "      <PointData>\n"
+                                 : fmt::format("      <PointData Vectors=\"{}\">\n", xmlEscaped(activeVectors));
     for (const auto& a : pointData) xml += dataArray(a, size_t(mesh.nodeCount()));
     xml += "      </PointData>\n      <CellData>\n";
     for (const auto& a : cellData) xml += dataArray(a, size_t(mesh.cellCount()));
@@ -159,6 +160,17 @@ void write(const std::string& path, const Mesh& mesh, const std::vector<DataArra
         encoded(offsets) +
         "\n        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" format=\"binary\">\n          " +
         encoded(types) + "\n        </DataArray>\n      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
+    writeFileAtomically(path, xml);
+}
+
+void writeCollection(const std::string& path, const std::vector<CollectionStep>& steps) {
+    std::string xml =
+        "<?xml version=\"1.0\"?>\n"
+        "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n  <Collection>\n";
+    for (const auto& s : steps)
+        xml += fmt::format("    <DataSet timestep=\"{:.17g}\" group=\"\" part=\"0\" file=\"{}\"/>\n", s.time,
+                           xmlEscaped(s.file));
+    xml += "  </Collection>\n</VTKFile>\n";
     writeFileAtomically(path, xml);
 }
 

@@ -27,7 +27,16 @@ struct VtkCell {
 VtkCell vtkCellOf(CellType t);
 
 // Writes `mesh` with the arrays (point data: nodeCount tuples, cell data: cellCount tuples).
+// `activeVectors` names the point array ParaView takes as the vectors (Warp By Vector, Glyph).
 void write(const std::string& path, const Mesh& mesh, const std::vector<DataArray>& pointData,
-           const std::vector<DataArray>& cellData);
+           const std::vector<DataArray>& cellData, const std::string& activeVectors = "");
+
+// A VTK collection (.pvd): one dataset file per time value, in order, named relative to the
+// .pvd's folder (ParaView reads it as a time series, the time value as its time).
+struct CollectionStep {
+    double time;
+    std::string file;
+};
+void writeCollection(const std::string& path, const std::vector<CollectionStep>& steps);
 
 }  // namespace ma::vtu

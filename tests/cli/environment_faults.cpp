@@ -101,7 +101,7 @@ std::vector<Call> tracedRun(const fs::path& dir, const std::string& args, int& s
     fs::create_directories(dir / "tmp");
     const std::string cmd = "cd '" + dir.string() + "' && TMPDIR='" + (dir / "tmp").string() +
                             "' strace -qq -ff -o trace/t -e trace=" + kTraced + " '" + MINIASTER_BINARY + "' run " +
-                            args + " --out-dir out > log.txt 2>&1";
+                            args + " --out-dir out --verbose > log.txt 2>&1";
     status = WEXITSTATUS(std::system(cmd.c_str()));
     return readTraces(dir / "trace");
 }

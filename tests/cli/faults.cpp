@@ -72,7 +72,7 @@ TEST(Faults, DiskFullWhileWritingMed) {
     auto r = runMiniaster(dir, xfemExport(), "", "");
     // runMiniaster writes to dir/out: rerun into the full file system.
     const std::string cmd = "cd '" + dir.string() + "' && '" + std::string(MINIASTER_BINARY) + "' run '" +
-                            xfemExport() + "' --out-dir full > log.txt 2>&1";
+                            xfemExport() + "' --out-dir full --verbose > log.txt 2>&1";
     const int raw = std::system(cmd.c_str());
     const std::string log = readAll(dir / "log.txt");
     const auto left = temporaries(full);
@@ -172,7 +172,7 @@ TEST(Faults, KilledRunAndStaleTemporaries) {
                                        "\nopen('started', 'w').close()\nwhile True: pass"));
     const std::string cmd =
         "cd '" + dir.string() + "' && ('" + std::string(MINIASTER_BINARY) + "' run t.comm --mesh '" + kSource +
-        "/astest/tables_chain.mmed' --out-dir out > log.txt 2>&1 & p=$!; " +
+        "/astest/tables_chain.mmed' --out-dir out --verbose > log.txt 2>&1 & p=$!; " +
         "for i in $(seq 600); do [ -e started ] && break; sleep 0.1; done; cp out/t.mess running.mess; " +
         "kill -TERM $p; wait $p; " + "echo $? > rc)";
     ASSERT_EQ(std::system(cmd.c_str()), 0);

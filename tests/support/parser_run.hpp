@@ -65,13 +65,14 @@ inline std::string beforeFin(const std::string& comm, const std::string& extra) 
     return comm.substr(0, fin + 1) + extra + comm.substr(fin + 1);
 }
 
-// Runs `miniaster run <input> --out-dir <dir>/out <extra>` in `dir`.
+// Runs `miniaster run <input> --out-dir <dir>/out --verbose <extra>` in `dir` (--verbose: the tests
+// read the log from the output, as it was printed before the terminal summary).
 inline RunResult runMiniaster(const std::filesystem::path& dir, const std::string& input, const std::string& extra = "",
                               const std::string& env = "") {
     RunResult r;
     r.dir = dir;
     const std::string cmd = "cd '" + dir.string() + "' && " + env + " '" + std::string(MINIASTER_BINARY) + "' run '" +
-                            input + "' --out-dir out " + extra + " 2>&1";
+                            input + "' --out-dir out --verbose " + extra + " 2>&1";
     FILE* pipe = popen(cmd.c_str(), "r");
     if (!pipe) return r;
     std::array<char, 4096> buffer{};

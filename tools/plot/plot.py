@@ -1,12 +1,17 @@
 #!/usr/bin/python3
 """A picture of a result without ParaView (`miniaster plot`, docs/visualisation.md).
 
-    miniaster plot RESULT.rmed [--field NAME] [--component C] [--deformed SCALE] [--step K] -o OUT.png
+    miniaster plot RESULT.rmed [--field NAME] [--component C] [--deformed SCALE] [--step K]
+                   [--view AZIMUTH,ELEVATION] [--clip X,Y,Z,NX,NY,NZ] -o OUT.png
 
 The binary converts the MED file to a VTU file (`miniaster convert`) and runs this script on it:
 the mesh (2D: every cell; 3D: the skin), deformed by DEPL times SCALE, coloured by a field
 component (default: the displacement magnitude), the cell edges thin, the X-FEM cut and the
 interfaces (nodes of GROUP_NO NFISSU, cells of the lips) thick, a colour bar and a title.
+Nodal fields are interpolated over the cells (the colour bar spans the field's values at the
+nodes); fields at Gauss points are drawn flat, one colour per cell (the cell's mean).
+In 3D, --view turns the camera and --clip removes the cells whose centre lies on the normal's side
+of a plane (as ParaView's Clip with Crinkle), which shows the inside and the interfaces (lips in red).
 """
 import argparse
 import base64
@@ -93,6 +98,12 @@ def colour_values(grid, args):
     data, comps = decode(element), component_names(element)
     if data.ndim == 1:
         data = data.reshape(-1, 1)
+    if args.component and args.component not in comps:
+        # `convert` writes the components of DEPL beyond DX, DY, DZ as scalar arrays NAME_<component>.
+        base, at, step = name.partition("@")
+        own = f"{base}_{args.component}{at}{step}"
+        if own in grid.point_data:
+            data, comps = decode(grid.point_data[own]).reshape(-1, 1), [args.component]
     if args.component:
         if args.component not in comps:
             sys.exit(f"miniaster plot: field {name} has no component {args.component} (components: {', '.join(comps)})")
@@ -123,23 +134,35 @@ def interface_nodes(grid):
     return set(np.nonzero(decode(element))[0]) if element is not None else set()
 
 
-def surface_pieces(grid, interface):
-    """(corner lists, cell index) of what is drawn: 2D cells, or the faces of the 3D skin without
-    the lips of the interfaces (their nodes are all interface nodes)."""
+def drawn_cells(grid, xyz, clip):
+    """Indices of the cells drawn: those of the top dimension (2 or 3) whose centre (deformed) is not
+    on the normal's side of the clip plane."""
     top = max(CELLS.get(t, (0, 0))[0] for t, _ in grid.cells)
+    kept = [k for k, (t, _) in enumerate(grid.cells) if CELLS.get(t, (0,))[0] == top and top >= 2]
+    if clip is None:
+        return kept, top
+    origin, normal = np.array(clip[:3]), np.array(clip[3:])
+    centre = [np.mean(xyz[grid.cells[k][1][:CELLS[grid.cells[k][0]][1]]], axis=0) for k in kept]
+    return [k for k, c in zip(kept, centre) if np.dot(c - origin, normal) <= 0.0], top
+
+
+def surface_pieces(grid, interface, cells, top):
+    """(corner lists, cell index) of what is drawn, and the lips: 2D cells (no lips), or the faces
+    of the skin of the 3D cells kept, split into the outer faces and the lips of the interfaces
+    (faces whose nodes are all interface nodes)."""
     if top < 3:
-        return [(list(c[:CELLS[t][1]]), k) for k, (t, c) in enumerate(grid.cells) if CELLS.get(t, (0,))[0] == 2]
+        return [(list(grid.cells[k][1][:CELLS[grid.cells[k][0]][1]]), k) for k in cells], []
     count, faces = {}, {}
-    for k, (t, c) in enumerate(grid.cells):
-        dim, n = CELLS.get(t, (0, 0))
-        if dim != 3:
-            continue
-        for face in FACES[n]:
+    for k in cells:
+        t, c = grid.cells[k]
+        for face in FACES[CELLS[t][1]]:
             nodes = [int(c[i]) for i in face]
             key = tuple(sorted(nodes))
             count[key] = count.get(key, 0) + 1
             faces[key] = (nodes, k)
-    return [faces[key] for key, n in count.items() if n == 1 and not set(key) <= interface]
+    skin = [key for key, n in count.items() if n == 1]
+    return ([faces[key] for key in skin if not set(key) <= interface],
+            [faces[key] for key in skin if set(key) <= interface])
 
 
 def edge_counts(pieces):
@@ -158,63 +181,140 @@ def interface_edges(grid, counts, interface):
                   and (grid.dim == 3 or n == 1))
 
 
-def piece_values(pieces, values, on_points):
+def colour_range(values, on_points, grid, cells):
+    """The colour bar's range: the field's finite values at the nodes of the cells drawn (nodal
+    fields), or over the cells drawn (fields at Gauss points)."""
     if on_points:
-        return np.array([np.mean(values[corners]) for corners, _ in pieces])
-    return np.array([values[k] for _, k in pieces])
+        nodes = np.unique(np.concatenate([grid.cells[k][1] for k in cells])) if cells else np.array([], int)
+        chosen = values[nodes]
+    else:
+        chosen = values[cells] if cells else np.array([])
+    finite = chosen[np.isfinite(chosen)]
+    lo, hi = (float(finite.min()), float(finite.max())) if finite.size else (0.0, 1.0)
+    if hi - lo <= 1e-300 + 1e-12 * max(abs(lo), abs(hi)):
+        return lo, hi, (lo - 0.5 * max(abs(lo), 1e-30), hi + 0.5 * max(abs(hi), 1e-30))
+    return lo, hi, (lo, hi)
+
+
+def fan(corners):
+    return [(corners[0], corners[i], corners[i + 1]) for i in range(1, len(corners) - 1)]
+
+
+def interpolated_3d(pieces, xyz, values, levels=4):
+    """Nodal values over 3D faces: each face fanned into triangles, each triangle split into
+    levels^2 small ones coloured by the value interpolated (linearly) at their centres."""
+    polygons, colours = [], []
+    steps = [(i, j) for i in range(levels) for j in range(levels - i)]
+    for corners, _ in pieces:
+        for a, b, c in fan(corners):
+            pa, pb, pc = xyz[a], xyz[b], xyz[c]
+            va, vb, vc = values[a], values[b], values[c]
+            for i, j in steps:
+                for tri in (((i, j), (i + 1, j), (i, j + 1)), ((i + 1, j), (i + 1, j + 1), (i, j + 1))):
+                    if any(u + v > levels for u, v in tri):
+                        continue
+                    w = [(u / levels, v / levels) for u, v in tri]
+                    polygons.append([pa + u * (pb - pa) + v * (pc - pa) for u, v in w])
+                    u, v = np.mean(w, axis=0)
+                    colours.append(va + u * (vb - va) + v * (vc - va))
+    return polygons, np.array(colours)
+
+
+def draw_2d(ax, xyz, pieces, values, on_points, norm, cmap, mesh_edges, cut_edges):
+    """2D: nodal values Gouraud-shaded over the cells' triangles (grey where a node has no value),
+    Gauss-point values flat per cell."""
+    if on_points:
+        triangles = np.array([t for corners, _ in pieces for t in fan(corners)])
+        bad = ~np.isfinite(values[triangles]).all(axis=1)
+        if (~bad).any():
+            ax.tripcolor(xyz[:, 0], xyz[:, 1], triangles[~bad], np.nan_to_num(values), shading="gouraud",
+                         cmap=cmap, norm=norm)
+        if bad.any():
+            ax.add_collection(PolyCollection([xyz[t, :2] for t in triangles[bad]], facecolors="lightgrey",
+                                             edgecolors="none"))
+    else:
+        colours = np.array([values[k] for _, k in pieces])
+        ax.add_collection(PolyCollection([xyz[c, :2] for c, _ in pieces],
+                                         facecolors=cmap(norm(np.ma.masked_invalid(colours))), edgecolors="none"))
+    ax.add_collection(LineCollection([xyz[[a, b], :2] for a, b in mesh_edges], colors="0.25", linewidths=0.3))
+    ax.add_collection(LineCollection([xyz[[a, b], :2] for a, b in cut_edges], colors="red", linewidths=2.0))
+    ax.autoscale_view()
+    ax.set_aspect("equal")
+    ax.set_xlabel("X")
+    ax.set_ylabel("Y")
+
+
+def draw_3d(ax, xyz, pieces, lips, values, on_points, norm, cmap, cut_edges, view):
+    """3D: the skin (nodal values interpolated over sub-triangles, Gauss-point values flat) and the
+    lips of the interfaces in red, in one collection so that they are depth-sorted together."""
+    if on_points:
+        polygons, colours = interpolated_3d(pieces, xyz, values)
+    else:
+        polygons, colours = [xyz[c] for c, _ in pieces], np.array([values[k] for _, k in pieces])
+    faces = cmap(norm(np.ma.masked_invalid(colours))) if len(colours) else np.zeros((0, 4))
+    lip_colour = np.array([[0.85, 0.1, 0.1, 1.0]] * len(lips))
+    ax.add_collection3d(Poly3DCollection(polygons + [xyz[c] for c, _ in lips],
+                                         facecolors=np.concatenate([faces, lip_colour]) if len(lips) else faces,
+                                         edgecolors="none"))
+    edges = sorted(edge_counts(pieces))
+    ax.add_collection3d(Line3DCollection([xyz[[a, b]] for a, b in edges], colors="0.25", linewidths=0.2))
+    ax.add_collection3d(Line3DCollection([xyz[[a, b]] for a, b in cut_edges], colors="red", linewidths=2.0))
+    span = xyz.max(axis=0) - xyz.min(axis=0)
+    centre = (xyz.max(axis=0) + xyz.min(axis=0)) / 2
+    half = span.max() / 2 or 1.0
+    for set_lim, c in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), centre):
+        set_lim(c - half, c + half)
+    ax.view_init(elev=view[1], azim=view[0])
+    ax.set_xlabel("X")
+    ax.set_ylabel("Y")
+    ax.set_zlabel("Z")
 
 
 def draw(grid, args):
     values, on_points, label = colour_values(grid, args)
     xyz = displaced(grid, args)
     interface = interface_nodes(grid)
-    pieces = surface_pieces(grid, interface)
+    cells, top = drawn_cells(grid, xyz, args.clip)
+    pieces, lips = surface_pieces(grid, interface, cells, top)
     if not pieces:
-        sys.exit(f"miniaster plot: {args.source} has no 2D cells or volumes to draw")
-    colours = piece_values(pieces, values, on_points)
-    finite = colours[np.isfinite(colours)]
-    lo, hi = (float(finite.min()), float(finite.max())) if finite.size else (0.0, 1.0)
-    if hi - lo <= 1e-300 + 1e-12 * max(abs(lo), abs(hi)):
-        lo, hi = lo - 0.5 * max(abs(lo), 1e-30), hi + 0.5 * max(abs(hi), 1e-30)
-    norm = matplotlib.colors.Normalize(lo, hi)
+        sys.exit(f"miniaster plot: {args.source} has no 2D cells or volumes to draw"
+                 + (" on this side of the --clip plane" if args.clip and top >= 2 else ""))
+    lo, hi, bar_range = colour_range(values, on_points, grid, cells)
+    norm = matplotlib.colors.Normalize(*bar_range)
     cmap = plt.get_cmap("viridis").copy()
     cmap.set_bad("lightgrey")
-    face_colours = cmap(norm(np.ma.masked_invalid(colours)))
-    counts = edge_counts(pieces)
-    mesh_edges, cut_edges = sorted(counts), interface_edges(grid, counts, interface)
+    counts = edge_counts(pieces + lips)
+    cut_edges = interface_edges(grid, counts, interface)
     fig = plt.figure(figsize=(8, 6.5), dpi=args.dpi)
     if grid.dim == 2:
         ax = fig.add_subplot(111)
-        ax.add_collection(PolyCollection([xyz[c, :2] for c, _ in pieces], facecolors=face_colours, edgecolors="none"))
-        ax.add_collection(LineCollection([xyz[[a, b], :2] for a, b in mesh_edges], colors="0.25", linewidths=0.3))
-        ax.add_collection(LineCollection([xyz[[a, b], :2] for a, b in cut_edges], colors="red", linewidths=2.0))
-        ax.autoscale_view()
-        ax.set_aspect("equal")
-        ax.set_xlabel("X")
-        ax.set_ylabel("Y")
+        draw_2d(ax, xyz, pieces, values, on_points, norm, cmap, sorted(edge_counts(pieces)), cut_edges)
     else:
         ax = fig.add_subplot(111, projection="3d")
-        ax.add_collection3d(Poly3DCollection([xyz[c] for c, _ in pieces], facecolors=face_colours,
-                                             edgecolors="0.25", linewidths=0.2))
-        ax.add_collection3d(Line3DCollection([xyz[[a, b]] for a, b in cut_edges], colors="red", linewidths=2.0))
-        span = xyz.max(axis=0) - xyz.min(axis=0)
-        centre = (xyz.max(axis=0) + xyz.min(axis=0)) / 2
-        half = span.max() / 2 or 1.0
-        for set_lim, c in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), centre):
-            set_lim(c - half, c + half)
-        ax.view_init(elev=25, azim=-55)
-        ax.set_xlabel("X")
-        ax.set_ylabel("Y")
-        ax.set_zlabel("Z")
+        draw_3d(ax, xyz, pieces, lips, values, on_points, norm, cmap, cut_edges, args.view)
     bar = fig.colorbar(matplotlib.cm.ScalarMappable(norm=norm, cmap=cmap), ax=ax, shrink=0.8)
-    bar.set_label(label)
+    bar.set_label(label + ("" if on_points else " (cell means)"))
     deformed = f", deformed x {args.deformed:g}" if args.deformed else ""
-    interfaces = ", interfaces in red (GROUP_NO NFISSU)" if cut_edges else ""
-    ax.set_title(args.title or f"{os.path.basename(args.source)}: {label}{deformed}{interfaces}", fontsize=9)
+    clipped = ", clipped" if args.clip else ""
+    interfaces = ", interfaces in red (GROUP_NO NFISSU)" if cut_edges or lips else ""
+    ax.set_title(args.title or f"{os.path.basename(args.source)}: {label}{deformed}{clipped}{interfaces}", fontsize=9)
     fig.tight_layout()
     fig.savefig(args.output)
     plt.close(fig)
-    print(f"miniaster plot: {args.output} ({label}, min {lo:.6g}, max {hi:.6g}{deformed})")
+    print(f"miniaster plot: {args.output} ({label}, {'nodal values' if on_points else 'cell means'}, "
+          f"min {lo:.17g}, max {hi:.17g}{deformed}{clipped})")
+
+
+def numbers(count, name):
+    def parse(text):
+        try:
+            values = [float(v) for v in text.split(",")]
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"{name} expects {count} comma-separated numbers, got '{text}'")
+        if len(values) != count or not all(math.isfinite(v) for v in values):
+            raise argparse.ArgumentTypeError(f"{name} expects {count} comma-separated finite numbers, got '{text}'")
+        return values
+    return parse
 
 
 class Arguments(argparse.ArgumentParser):
@@ -245,6 +345,11 @@ def run(argv):
     ap.add_argument("--deformed", type=float, default=0.0, help="displacement scale (default: undeformed)")
     ap.add_argument("--deform-field", default="DEPL", help="the nodal field that moves the mesh (default DEPL)")
     ap.add_argument("--step", type=int, default=None, help="NUME_ORDRE (default: the last one)")
+    ap.add_argument("--view", type=numbers(2, "--view"), default=[-55.0, 25.0], metavar="AZIMUTH,ELEVATION",
+                    help="3D: the camera's azimuth and elevation in degrees (default -55,25)")
+    ap.add_argument("--clip", type=numbers(6, "--clip"), default=None, metavar="X,Y,Z,NX,NY,NZ",
+                    help="remove the cells whose centre lies on the side of the plane through (X,Y,Z) that the "
+                         "normal (NX,NY,NZ) points to (3D: shows the inside and the interfaces)")
     ap.add_argument("--title", default=None)
     ap.add_argument("--dpi", type=int, default=100)
     ap.add_argument("--source", default=None, help=argparse.SUPPRESS)

@@ -994,8 +994,15 @@ def fresh_folder(prefix):
     return path
 
 
+class Arguments(argparse.ArgumentParser):
+    def error(self, message):
+        """A usage error exits with 1, as every miniaster error does (argparse's 2 means NOOK here)."""
+        self.print_usage(sys.stderr)
+        self.exit(1, f"{self.prog}: error: {message}\n")
+
+
 def main():
-    ap = argparse.ArgumentParser(prog="miniaster study", description=__doc__,
+    ap = Arguments(prog="miniaster study", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("name", choices=["smooth", "stability", "penalty", "perf", "all", "check-field", "astest",
                                      "ssnv513e", "lame", "solvers"])
