@@ -19,8 +19,8 @@ void DEFI_FISS_XFEM(Catalog& c) {
                    })),
                    fact("JONCTION").keywords({CO("FISSURE", {kCrack}).many().mandatory(),
                                               R("POINT").max(3).mandatory()}),
-                   info({1, 2, 3})},
-                  unsupported({"GROUP_MA_ENRI", "TYPE_ENRI_FOND", "RAYON_ENRI", "NB_COUCHES", "FOND_FISS",
+                   TXM("GROUP_MA_ENRI"), info({1, 2, 3})},
+                  unsupported({"TYPE_ENRI_FOND", "RAYON_ENRI", "NB_COUCHES", "FOND_FISS",
                                "FISS_INITIALE", "ORIE_FOND", "CHAM_NO_FOND"},
                               "miniaster enriches every node cut by the interface"),
               }))

@@ -71,7 +71,17 @@ ConceptPtr defiFissXfem(const KeywordSet& kw, CommandContext& ctx) {
         for (size_t i = 0; i < point.size(); ++i) junction.point[i] = point[i];
         junction.keywordPath = j.path().empty() ? "JONCTION" : j.path();
     }
-    auto crack = xfem::buildCrack(mesh, std::move(lsn), jonction.empty() ? nullptr : &junction);
+    // GROUP_MA_ENRI: the cells where the interface may enrich (code_aster's xlenri; all cells without it).
+    std::vector<char> zone;
+    if (kw.has("GROUP_MA_ENRI")) {
+        zone.assign(size_t(mesh->cellCount()), 0);
+        const auto& cells = namedGroup(*mesh, GroupKind::Cells, kw.text("GROUP_MA_ENRI"), kw.pathOf("GROUP_MA_ENRI"));
+        for (int c : cells) zone[size_t(c)] = 1;
+        msg().infof("    GROUP_MA_ENRI: the interface enriches only in the {} cell(s) of {}", cells.size(),
+                    kw.text("GROUP_MA_ENRI"));
+    }
+    auto crack =
+        xfem::buildCrack(mesh, std::move(lsn), jonction.empty() ? nullptr : &junction, zone.empty() ? nullptr : &zone);
 
     if (crack->adjustedLevelSets > 0) msg().alarm(XFEM_63, crack->adjustedLevelSets);
     msg().infof(

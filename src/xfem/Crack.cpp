@@ -156,11 +156,13 @@ int snapLevelSet(const Mesh& mesh, std::vector<double>& lsn) {
 
 namespace {
 
-// Cut cells (§1.4): some vertex has LSN * LSN(first vertex) <= 0.
-std::vector<int> cutCellsOf(const Mesh& mesh, const std::vector<double>& ls) {
+// Cut cells (§1.4): some vertex has LSN * LSN(first vertex) <= 0; only cells of the enrichment zone
+// (GROUP_MA_ENRI, code_aster's xmafis) when there is one.
+std::vector<int> cutCellsOf(const Mesh& mesh, const std::vector<double>& ls, const std::vector<char>* zone) {
     std::vector<int> cells;
     for (int c = 0; c < mesh.cellCount(); ++c) {
         if (mesh.cellTypes[c] == CellType::POI1) continue;
+        if (zone && !(*zone)[size_t(c)]) continue;
         const auto nodes = mesh.cellNodes(c);
         const double pivot = ls[nodes[0]];
         for (size_t k = 1; k < nodes.size(); ++k)
@@ -189,7 +191,7 @@ std::vector<int> heavisideCellsOf(const Mesh& mesh, const std::vector<unsigned c
 }  // namespace
 
 std::shared_ptr<Crack> buildCrack(const std::shared_ptr<const Mesh>& meshPtr, std::vector<double> lsn,
-                                  const JunctionInput* junction) {
+                                  const JunctionInput* junction, const std::vector<char>* zone) {
     const Mesh& mesh = *meshPtr;
     auto crack = std::make_shared<Crack>();
     crack->mesh = meshPtr;
@@ -200,9 +202,10 @@ std::shared_ptr<Crack> buildCrack(const std::shared_ptr<const Mesh>& meshPtr, st
     const auto& ls = crack->lsn;
     if (junction && !junction->masters.empty()) crack->masters = junctionMasters(mesh, *junction);
 
-    crack->cutCells = cutCellsOf(mesh, ls);
+    crack->cutCells = cutCellsOf(mesh, ls, zone);
     if (crack->cutCells.empty())
         throw UserError("DEFI_FISS/FONC_LN: the interface does not cut any cell of the mesh " + mesh.name +
+                        (zone ? " in GROUP_MA_ENRI" : "") +
                         " (it lies outside the structure); code_aster stops with XFEM_57");
     crack->lsnGradient = nodalGradient(mesh, ls, crack->cutCells);
 
