@@ -25,20 +25,22 @@ LoadValue readValue(const KeywordSet& occ, const std::string& key, bool function
 void readLipPressure(const KeywordSet& occ, bool functions, MechanicalLoad& load) {
     const Model& model = *load.model;
     if (occ.has("GROUP_MA") || occ.has("MAILLE"))
-        throw UserError(fmt::format("{}: FISSURE loads the lips of the interfaces, GROUP_MA/MAILLE the boundary "
-                                    "cells: give them in two occurrences",
-                                    occ.path()));
+        throw UserError(
+            fmt::format("{}: FISSURE loads the lips of the interfaces, GROUP_MA/MAILLE the boundary "
+                        "cells: give them in two occurrences",
+                        occ.path()));
     if (model.dim == 3 && occ.has("CISA_2D"))
-        throw UserError(fmt::format("{}: CISA_2D is a shear for plane models; the model {} is 3D", occ.pathOf("CISA_2D"),
-                                    model.name));
+        throw UserError(fmt::format("{}: CISA_2D is a shear for plane models; the model {} is 3D",
+                                    occ.pathOf("CISA_2D"), model.name));
     const auto* xm = dynamic_cast<const xfem::XfemModel*>(model.enrichment.get());
     for (const auto& crack : occ.objects<xfem::Crack>("FISSURE")) {
         const bool ofModel = xm && std::any_of(xm->cracks().begin(), xm->cracks().end(),
                                                [&](const auto& c) { return c.get() == crack.get(); });
         if (!ofModel)
-            throw UserError(fmt::format("{}: the interface {} is not one of the model {} (MODI_MODELE_XFEM "
-                                        "FISSURE=...)",
-                                        occ.pathOf("FISSURE"), crack->name, model.name));
+            throw UserError(
+                fmt::format("{}: the interface {} is not one of the model {} (MODI_MODELE_XFEM "
+                            "FISSURE=...)",
+                            occ.pathOf("FISSURE"), crack->name, model.name));
         LipPressure lp;
         lp.path = occ.path();
         lp.crack = crack;
@@ -58,8 +60,8 @@ void readPressure(const KeywordSet& occ, bool functions, const std::vector<char>
     const Model& model = *load.model;
     if (occ.has("FISSURE")) return readLipPressure(occ, functions, load);
     if (model.dim == 3 && occ.has("CISA_2D"))
-        throw UserError(fmt::format("{}: CISA_2D is a shear for plane models; the model {} is 3D", occ.pathOf("CISA_2D"),
-                                    model.name));
+        throw UserError(fmt::format("{}: CISA_2D is a shear for plane models; the model {} is 3D",
+                                    occ.pathOf("CISA_2D"), model.name));
     std::string what;
     PressureLoad p;
     p.path = occ.path();
@@ -85,9 +87,10 @@ bool edgeOfModel(const Mesh& mesh, int c, const DofNumbering& numbering, const M
     for (int n : mesh.cellNodes(c)) {
         if (!numbering.hasNode(n)) return false;
         if (model.enrichment && model.enrichment->nodeSlots(n) > 1)
-            throw NotImplemented(fmt::format("FORCE_ARETE on cell {}: its node {} is enriched by an interface "
-                                             "(edge forces across X-FEM interfaces are not modelled)",
-                                             mesh.cellNames[size_t(c)], mesh.nodeNames[size_t(n)]));
+            throw NotImplemented(
+                fmt::format("FORCE_ARETE on cell {}: its node {} is enriched by an interface "
+                            "(edge forces across X-FEM interfaces are not modelled)",
+                            mesh.cellNames[size_t(c)], mesh.nodeNames[size_t(n)]));
     }
     return true;
 }
@@ -115,8 +118,7 @@ void readSurfaceForce(const KeywordSet& occ, const char* keyword, bool functions
     const char* keys[] = {"FX", "FY", "FZ"};
     for (int c = 0; c < 3; ++c) {
         if (!occ.has(keys[c])) continue;
-        if (c >= model.dim)
-            throw UserError(fmt::format("{}: the model {} is plane", occ.pathOf(keys[c]), model.name));
+        if (c >= model.dim) throw UserError(fmt::format("{}: the model {} is plane", occ.pathOf(keys[c]), model.name));
         f.component[size_t(c)] = readValue(occ, keys[c], functions);
     }
     msg().infof("    {}: force on {} {}(s) ({})", occ.path(), f.cells.size(), edges3d ? "edge" : "boundary element",

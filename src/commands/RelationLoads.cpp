@@ -44,7 +44,8 @@ std::vector<int> nodesInOrder(const Mesh& mesh, const KeywordSet& occ, const std
     if (occ.has(nodes))
         for (const auto& n : occ.texts(nodes)) {
             const int i = mesh.findNode(n);
-            if (i < 0) throw UserError(fmt::format("{}: the mesh {} has no node '{}'", occ.pathOf(nodes), mesh.name, n));
+            if (i < 0)
+                throw UserError(fmt::format("{}: the mesh {} has no node '{}'", occ.pathOf(nodes), mesh.name, n));
             out.push_back(i);
         }
     return out;
@@ -141,9 +142,10 @@ void readImposedOnCells(const KeywordSet& occ, bool functions, bool face, const 
         if (!occ.has(key)) continue;
         const bool tangent = std::string(key) == "DTAN";
         if (tangent && face && model.dim == 3)  // code_aster's CHARGES2_63
-            throw UserError(fmt::format("{}: the tangential displacement of 3D faces has two directions; use "
-                                        "DDL_IMPO or LIAISON_DDL",
-                                        occ.pathOf(key)));
+            throw UserError(
+                fmt::format("{}: the tangential displacement of 3D faces has two directions; use "
+                            "DDL_IMPO or LIAISON_DDL",
+                            occ.pathOf(key)));
         const bool edgeTangent = tangent && model.dim == 3;
         auto dirs = nodeDirections(mesh, cells, model.dim, edgeTangent, occ.pathOf(key));
         DirectionalDof d;
@@ -151,9 +153,10 @@ void readImposedOnCells(const KeywordSet& occ, bool functions, bool face, const 
         d.value = readValue(occ, key, functions);
         for (int n : nodes) {
             if (model.enrichment && model.enrichment->nodeSlots(n) > 1)
-                throw NotImplemented(fmt::format("{}: node {} is enriched by an interface; {} on X-FEM enriched "
-                                                 "nodes is not modelled (use DX, DY, DZ)",
-                                                 occ.pathOf(key), mesh.nodeNames[size_t(n)], key));
+                throw NotImplemented(
+                    fmt::format("{}: node {} is enriched by an interface; {} on X-FEM enriched "
+                                "nodes is not modelled (use DX, DY, DZ)",
+                                occ.pathOf(key), mesh.nodeNames[size_t(n)], key));
             Vec3 dir = dirs.at(n);
             if (tangent && !edgeTangent) dir = {-dir[1], dir[0], 0.0};  // plane: the normal turned by +90 degrees
             d.nodes.push_back(n);
@@ -221,9 +224,10 @@ void readLiaisonGroup(const KeywordSet& occ, bool functions, MechanicalLoad& loa
     for (auto* list : {&first, &second})
         std::erase_if(*list, [&](int n) { return std::binary_search(common.begin(), common.end(), n); });
     if (first.size() != second.size() || first.empty())
-        throw UserError(fmt::format("{}: {} node(s) on side 1 and {} on side 2 (nodes on both sides left out): "
-                                    "the sides must face each other node by node",
-                                    occ.path(), first.size(), second.size()));
+        throw UserError(
+            fmt::format("{}: {} node(s) on side 1 and {} on side 2 (nodes on both sides left out): "
+                        "the sides must face each other node by node",
+                        occ.path(), first.size(), second.size()));
     Vec3 shift{};
     if (occ.has("TRAN")) {
         const auto t = occ.reals("TRAN");
@@ -232,8 +236,8 @@ void readLiaisonGroup(const KeywordSet& occ, bool functions, MechanicalLoad& loa
     const auto dofs1 = occ.texts("DDL_1"), dofs2 = occ.texts("DDL_2");
     const auto coefs1 = occ.reals("COEF_MULT_1"), coefs2 = occ.reals("COEF_MULT_2");
     if (dofs1.size() != coefs1.size() || dofs2.size() != coefs2.size())
-        throw UserError(fmt::format("{}: DDL_1/COEF_MULT_1 and DDL_2/COEF_MULT_2 must have the same lengths",
-                                    occ.path()));
+        throw UserError(
+            fmt::format("{}: DDL_1/COEF_MULT_1 and DDL_2/COEF_MULT_2 must have the same lengths", occ.path()));
     for (const auto& d : dofs1) checkComponent(model, occ.pathOf("DDL_1"), d);
     for (const auto& d : dofs2) checkComponent(model, occ.pathOf("DDL_2"), d);
     const LoadValue value = readValue(occ, "COEF_IMPO", functions);
@@ -244,8 +248,8 @@ void readLiaisonGroup(const KeywordSet& occ, bool functions, MechanicalLoad& loa
         const int n2 = nearest(mesh, second, target);
         if (partnerOfSecond[size_t(n2)] >= 0)
             throw UserError(fmt::format("{}: nodes {} and {} of side 1 both face node {} of side 2", occ.path(),
-                                        mesh.nodeNames[size_t(partnerOfSecond[size_t(n2)])],
-                                        mesh.nodeNames[size_t(n1)], mesh.nodeNames[size_t(n2)]));
+                                        mesh.nodeNames[size_t(partnerOfSecond[size_t(n2)])], mesh.nodeNames[size_t(n1)],
+                                        mesh.nodeNames[size_t(n2)]));
         partnerOfSecond[size_t(n2)] = n1;
         RelationRequest r;
         r.path = occ.path();

@@ -11,7 +11,6 @@
 namespace ma::mechanics {
 
 // Reads those keywords of `kw` into `load` (its model set). `modelNodes`: nodes carrying unknowns.
-void readRelationLoads(const KeywordSet& kw, bool functions, const std::vector<char>& modelNodes,
-                       MechanicalLoad& load);
+void readRelationLoads(const KeywordSet& kw, bool functions, const std::vector<char>& modelNodes, MechanicalLoad& load);
 
 }  // namespace ma::mechanics

@@ -75,10 +75,11 @@ public:
             ei.slots[size_t(a)] = 1 + xm_.activeSlots(nodes[size_t(a)]);
             ei.maxSlots = std::max(ei.maxSlots, ei.slots[size_t(a)]);
         }
-        const QuadratureRule& rule = quadratureRule(dim_ == 2 ? CellType::SEG2 : CellType::TRIA3,
-                                                    dim_ == 2 ? "FPG3" : "FPG12");
+        const QuadratureRule& rule =
+            quadratureRule(dim_ == 2 ? CellType::SEG2 : CellType::TRIA3, dim_ == 2 ? "FPG3" : "FPG12");
         for (const auto& f : faces)
-            for (int q = 0; q < rule.size(); ++q) addPoint(cut, f, rule.points[size_t(q)], rule.weights[size_t(q)], lip);
+            for (int q = 0; q < rule.size(); ++q)
+                addPoint(cut, f, rule.points[size_t(q)], rule.weights[size_t(q)], lip);
         out.push_back(std::move(lip));
     }
 
