@@ -58,35 +58,35 @@ void expectLoadError(const ma::test::RunResult& r, const std::string& text) {
 TEST(LoadsCommands, LipPressureNeedsAnInterfaceOfTheModel) {
     // FISS is not an interface of the classical model MO.
     expectLoadError(run(scene2d("C = AFFE_CHAR_MECA(MODELE=MO, PRES_REP=_F(FISSURE=FISS, PRES=1.))\n"), kBar),
-                "PRES_REP[1]/FISSURE: the interface FISS is not one of the model MO");
+                    "PRES_REP[1]/FISSURE: the interface FISS is not one of the model MO");
     expectLoadError(run(scene2d("C = AFFE_CHAR_MECA(MODELE=MOX, PRES_REP=_F(FISSURE=FISS, GROUP_MA='LD', PRES=1.))\n"),
-                    kBar),
-                "FISSURE loads the lips of the interfaces, GROUP_MA/MAILLE the boundary cells");
+                        kBar),
+                    "FISSURE loads the lips of the interfaces, GROUP_MA/MAILLE the boundary cells");
 }
 
 TEST(LoadsCommands, PlaneLoadsOnA3DModelAreRefused) {
     expectLoadError(run(scene3d("C = AFFE_CHAR_MECA(MODELE=MO, PRES_REP=_F(GROUP_MA='SD', CISA_2D=1.))\n"), kBox),
-                "CISA_2D is a shear for plane models; the model MO is 3D");
+                    "CISA_2D is a shear for plane models; the model MO is 3D");
     expectLoadError(run(scene3d("C = AFFE_CHAR_MECA(MODELE=MO, FORCE_CONTOUR=_F(GROUP_MA='SD', FX=1.))\n"), kBox),
-                "FORCE_CONTOUR is for plane (FORCE_CONTOUR) models");
+                    "FORCE_CONTOUR is for plane (FORCE_CONTOUR) models");
     expectLoadError(run(scene3d("C = AFFE_CHAR_MECA(MODELE=MO, FACE_IMPO=_F(GROUP_MA='SD', DTAN=0.))\n"), kBox),
-                "the tangential displacement of 3D faces has two directions");
+                    "the tangential displacement of 3D faces has two directions");
 }
 
 TEST(LoadsCommands, RelationListsMustMatch) {
     expectLoadError(run(scene2d("C = AFFE_CHAR_MECA(MODELE=MO, LIAISON_DDL=_F(NOEUD=('N1', 'N2'), DDL=('DX',), "
-                            "COEF_MULT=(1., 1.), COEF_IMPO=0.))\n"),
-                    kBar),
-                "LIAISON_DDL[1]: 2 node(s), 1 DDL and 2 COEF_MULT: one of each per node");
+                                "COEF_MULT=(1., 1.), COEF_IMPO=0.))\n"),
+                        kBar),
+                    "LIAISON_DDL[1]: 2 node(s), 1 DDL and 2 COEF_MULT: one of each per node");
     expectLoadError(run(scene2d("C = AFFE_CHAR_MECA(MODELE=MO, LIAISON_DDL=_F(NOEUD=('N1', 'N2'), DDL=('DX', 'DZ'), "
-                            "COEF_MULT=(1., 1.), COEF_IMPO=0.))\n"),
-                    kBar),
-                "'DZ' is not a displacement component of the C_PLAN model MO");
+                                "COEF_MULT=(1., 1.), COEF_IMPO=0.))\n"),
+                        kBar),
+                    "'DZ' is not a displacement component of the C_PLAN model MO");
     // LB has 6 nodes, LD 3.
     expectLoadError(run(scene2d("C = AFFE_CHAR_MECA(MODELE=MO, LIAISON_GROUP=_F(GROUP_MA_1='LB', GROUP_MA_2='LD', "
-                            "DDL_1='DX', COEF_MULT_1=1., DDL_2='DX', COEF_MULT_2=-1., COEF_IMPO=0.))\n"),
-                    kBar),
-                "the sides must face each other node by node");
+                                "DDL_1='DX', COEF_MULT_1=1., DDL_2='DX', COEF_MULT_2=-1., COEF_IMPO=0.))\n"),
+                        kBar),
+                    "the sides must face each other node by node");
 }
 
 TEST(LoadsCommands, StaticCheckRefusesWhatIsNotModelled) {
@@ -109,8 +109,9 @@ TEST(LoadsCommands, StaticCheckRefusesWhatIsNotModelled) {
 // gmsh reads the mesh format 1.0 file back: its node and element counts, and a node's coordinates.
 TEST(LoadsCommands, GmshMeshFormatIsReadBackByGmsh) {
     const auto dir = freshDir();
-    writeText(dir / "case.comm", "DEBUT()\nMA = LIRE_MAILLAGE(FORMAT='ASTER', UNITE=20)\n"
-                                 "IMPR_RESU(FORMAT='GMSH', UNITE=81, RESU=_F(MAILLAGE=MA))\nFIN()\n");
+    writeText(dir / "case.comm",
+              "DEBUT()\nMA = LIRE_MAILLAGE(FORMAT='ASTER', UNITE=20)\n"
+              "IMPR_RESU(FORMAT='GMSH', UNITE=81, RESU=_F(MAILLAGE=MA))\nFIN()\n");
     const auto r = runMiniaster(dir, "case.comm", "--mesh '" + kBox + "'");
     ASSERT_EQ(r.status, 0) << r.output;
     const std::string file = (dir / "out" / "fort.81").string();
