@@ -15,6 +15,7 @@ void AFFE_MATERIAU(Catalog&);
 void AFFE_MODELE(Catalog&);
 void CALC_CHAMP(Catalog&);
 void CALC_TABLE(Catalog&);
+void COPIER(Catalog&);
 void CREA_CHAMP(Catalog&);
 void DEBUT(Catalog&);
 void DEFI_CONSTANTE(Catalog&);
@@ -56,6 +57,7 @@ inline const std::vector<CommandFile>& commandFiles() {
         {"AFFE_MODELE", AFFE_MODELE},
         {"CALC_CHAMP", CALC_CHAMP},
         {"CALC_TABLE", CALC_TABLE},
+        {"COPIER", COPIER},
         {"CREA_CHAMP", CREA_CHAMP},
         {"DEBUT", DEBUT},
         {"DEFI_CONSTANTE", DEFI_CONSTANTE},

@@ -3,6 +3,7 @@
 // later occurrences can use the groups of earlier ones.
 #include <fmt/format.h>
 
+#include "commands/DefiGroupOptions.hpp"
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "mesh/GroupSelection.hpp"
@@ -11,13 +12,6 @@
 
 namespace ma {
 namespace {
-
-Vec3 vector3(const KeywordSet& occ, const std::string& keyword) {
-    auto v = occ.reals(keyword);
-    if (v.size() < 2 || v.size() > 3)
-        throw UserError(fmt::format("{} expects 2 or 3 values, got {}", occ.pathOf(keyword), v.size()));
-    return {v[0], v[1], v.size() > 2 ? v[2] : 0.0};
-}
 
 const std::vector<int>& groupOf(const GroupSet& groups, const std::string& name, const KeywordSet& occ,
                                 const std::string& keyword, const Mesh& mesh) {
@@ -72,16 +66,7 @@ void createCellGroup(Mesh& mesh, const KeywordSet& occ, bool alarms) {
             cells.push_back(c);
         }
     } else if (occ.has("OPTION")) {
-        const std::string option = occ.text("OPTION");
-        if (option == "FACE_NORMALE") {
-            cells = cellsWithNormal(mesh, vector3(occ, "VECT_NORMALE"), occ.real("ANGL_PREC"),
-                                    occ.text("VERI_SIGNE") == "OUI");
-        } else if (option == "BANDE") {
-            cells = cellsInBand(mesh, vector3(occ, "POINT"), vector3(occ, "VECT_NORMALE"), occ.real("DIST"),
-                                occ.text("CRIT_NOEUD"));
-        } else {
-            throw NotImplemented(occ.pathOf("OPTION") + "='" + option + "' is not supported");
-        }
+        cells = defi_group::cellOption(mesh, occ);
     } else {
         throw UserError(occ.path() + ": give TOUT, GROUP_MA, MAILLE, INTERSEC, UNION, DIFFE or OPTION");
     }
@@ -106,7 +91,10 @@ void createNodeGroups(Mesh& mesh, const KeywordSet& occ, bool alarms) {
         return names.front();
     };
     std::vector<int> nodes;
-    if (setOperation(mesh.nodeGroups, occ, mesh, nodes)) {
+    if (occ.has("OPTION")) {
+        // First: NOEUD_ORDO and SEGM_DROI_ORDO take GROUP_MA, GROUP_NO or NOEUD of their own.
+        store(mesh, mesh.nodeGroups, single(), defi_group::nodeOption(mesh, occ), occ, alarms, "node");
+    } else if (setOperation(mesh.nodeGroups, occ, mesh, nodes)) {
         store(mesh, mesh.nodeGroups, single(), std::move(nodes), occ, alarms, "node");
     } else if (occ.has("TOUT_GROUP_MA")) {
         for (const auto& g : std::vector<std::string>(mesh.cellGroups.names())) {
@@ -137,13 +125,6 @@ void createNodeGroups(Mesh& mesh, const KeywordSet& occ, bool alarms) {
             nodes.push_back(i);
         }
         store(mesh, mesh.nodeGroups, single(), std::move(nodes), occ, alarms, "node");
-    } else if (occ.has("OPTION")) {
-        const std::string option = occ.text("OPTION");
-        if (option != "PLAN") throw NotImplemented(occ.pathOf("OPTION") + "='" + option + "' is not supported");
-        const double precision = occ.real("PRECISION");
-        if (!(precision > 0)) throw UserError(occ.pathOf("PRECISION") + " must be positive");
-        store(mesh, mesh.nodeGroups, single(),
-              nodesOnPlane(mesh, vector3(occ, "POINT"), vector3(occ, "VECT_NORMALE"), precision), occ, alarms, "node");
     } else {
         throw UserError(occ.path() +
                         ": give TOUT_GROUP_MA, GROUP_MA, GROUP_NO, NOEUD, INTERSEC, UNION, DIFFE or OPTION");

@@ -1,5 +1,6 @@
 // LIRE_MAILLAGE (commands_spec §7.7): from logical unit UNITE (default 20), FORMAT='MED' (the
-// first mesh of the file or NOM_MED, docs/med.md) or FORMAT='ASTER' (.mail text, docs/mesh.md).
+// first mesh of the file or NOM_MED, docs/med.md), FORMAT='ASTER' (.mail text) or FORMAT='GMSH' (MSH 2
+// text, as PRE_GMSH converts it; docs/mesh.md).
 #include <fmt/format.h>
 
 #include "core/Error.hpp"
@@ -8,6 +9,7 @@
 #include "fe/CellOrientation.hpp"
 #include "med_io/MedReader.hpp"
 #include "mesh/AsterMeshReader.hpp"
+#include "mesh/GmshMeshReader.hpp"
 #include "mesh/MeshCheck.hpp"
 #include "mesh/MeshConformity.hpp"
 #include "mesh/MeshMessages.hpp"
@@ -35,6 +37,16 @@ std::shared_ptr<Mesh> readMailMesh(const std::string& path, int unit) {
     msg().infof("    mesh read from unit {} ({}, FORMAT='ASTER'), space dimension {}", unit, path, mesh->dim);
     for (const auto& line : report.title) msg().info("    TITRE: " + line);
     for (const auto& alarm : report.alarms) msg().alarm(alarm);
+    return mesh;
+}
+
+// PRE_GMSH's conversion, then the mesh as code_aster reads the .mail it writes (docs/mesh.md).
+std::shared_ptr<Mesh> readMshMesh(const std::string& path, int unit) {
+    auto mesh = readGmshMesh(path);
+    msg().infof(
+        "    mesh read from unit {} ({}, FORMAT='GMSH', MSH 2 text): {} nodes used by the elements, {} cells, "
+        "{} groups GMn",
+        unit, path, mesh->nodeCount(), mesh->cellCount(), mesh->cellGroups.size());
     return mesh;
 }
 
@@ -78,13 +90,15 @@ void reportConformity(const Mesh& mesh, const std::string& name) {
 
 ConceptPtr lireMaillage(const KeywordSet& kw, CommandContext& ctx) {
     const std::string format = kw.text("FORMAT");
-    if (format != "MED" && format != "ASTER")
+    if (format != "MED" && format != "ASTER" && format != "GMSH")
         throw NotImplemented("LIRE_MAILLAGE: FORMAT='" + format + "' is not supported; convert the mesh to MED");
     if (!ctx.units) throw UserError("LIRE_MAILLAGE: no logical units are defined for this run");
     const int unit = int(kw.integer("UNITE"));
     const std::string path = ctx.units->input(unit);
     std::string meshName = "MAILLAGE";
-    auto mesh = format == "MED" ? readMedMesh(kw, path, unit, meshName) : readMailMesh(path, unit);
+    auto mesh = format == "MED"    ? readMedMesh(kw, path, unit, meshName)
+                : format == "GMSH" ? readMshMesh(path, unit)
+                                   : readMailMesh(path, unit);
 
     checkCoordinates(*mesh, path);
     for (const auto& occ : kw.factor("VERI_MAIL")) {

@@ -66,6 +66,13 @@ inline constexpr Message<std::string> SOUSTRUC_37{"SOUSTRUC_37", "node group '{}
 inline constexpr Message<std::string, std::string, std::string> SOUSTRUC_38{"SOUSTRUC_38",
                                                                             "{}: there is no {} group '{}' to destroy"};
 
+// DEFI_GROUP: a node group standing for one node (GROUP_NO_CENTRE; GROUP_NO_ORIG / GROUP_NO_EXTR) holds
+// several: the keyword, the group, its size, the node used.
+inline constexpr Message<std::string, std::string, size_t, std::string> MODELISA9_29{
+    "MODELISA9_29", "{}: the node group '{}' has {} nodes; its first node {} is the centre"};
+inline constexpr Message<std::string, std::string, size_t, std::string> SOUSTRUC_87{
+    "SOUSTRUC_87", "{}: the node group '{}' has {} nodes; its first node {} is the end of the line"};
+
 inline constexpr MessageText meshMessages[] = {
     entry(MODELISA4_97),
     entry(MODELISA5_6),
@@ -82,6 +89,8 @@ inline constexpr MessageText meshMessages[] = {
     entry(SOUSTRUC_36),
     entry(SOUSTRUC_37),
     entry(SOUSTRUC_38),
+    entry(MODELISA9_29),
+    entry(SOUSTRUC_87),
 };
 
 }  // namespace ma

@@ -38,6 +38,19 @@ F1 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FO
 F2 = DEFI_FISS_XFEM(MODELE=MO, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2),
                     JONCTION=_F(FISSURE=F1, POINT=(0, 5)))
 MX = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(F1, F2), CONTACT='STANDARD', INFO=1)
+MA2 = COPIER(CONCEPT=MA)
+MA2 = DEFI_GROUP(reuse=MA2, MAILLAGE=MA2,
+        CREA_GROUP_NO=(_F(NOM='H', OPTION='ENV_SPHERE', POINT=(0., 0., 5.), RAYON=1e-3, PRECISION=2e-3),
+                       _F(NOM='P', OPTION='PLAN', GROUP_NO_CENTRE='H', ANGL_NAUT=(0., -90.), PRECISION=1e-3),
+                       _F(NOM='C', OPTION='ENV_CYLINDRE', NOEUD_CENTRE='N1', VECT_NORMALE=(0., 0., 1.), RAYON=2.,
+                          PRECISION=0.1),
+                       _F(NOM='S', OPTION='SEGM_DROI_ORDO', GROUP_NO='P', NOEUD_ORIG='N1', GROUP_NO_EXTR='H',
+                          PRECISION=1e-6, CRITERE='RELATIF'),
+                       _F(NOM='O', OPTION='NOEUD_ORDO', GROUP_MA='LD', GROUP_NO_ORIG='H', VECT_ORIE=(0., 1., 0.)),
+                       _F(NOM='X', OPTION='FISS_XFEM', FISSURE=(F1, F2), TYPE_GROUP='HEAVISIDE')),
+        CREA_GROUP_MA=(_F(NOM='SPH', OPTION='SPHERE', POINT=(0., 0.), RAYON=1., CRIT_NOEUD='MAJORITE'),
+                       _F(NOM='CYL', OPTION='CYLINDRE', GROUP_NO_CENTRE='H', ANGL_NAUT=(0., 90.), RAYON=1.),
+                       _F(NOM='XF', OPTION='FISS_XFEM', FISSURE=F1, TYPE_GROUP='FISSUREE')))
 MX2 = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(F1, F2), CONTACT='P1P1')
 MX3 = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(F1,), CONTACT='OUI')
 CT = DEFI_CONTACT(MODELE=MX, FORMULATION='XFEM', ITER_CONT_MAXI=10, ELIM_ARETE='ELIM', REAC_GEOM='SANS',
@@ -171,7 +184,7 @@ TEST(ParserCatalog, AFormatRThatIsNotFortranIsRefusedBeforeAnyCommandRuns) {
     auto r = runComm(std::string(kEveryCommand)
                          .replace(std::string(kEveryCommand).find("FORMAT_R='1PE12.5'"), 18, "FORMAT_R='1PQ12.5'"));
     EXPECT_EQ(r.status, 1) << r.output;
-    EXPECT_NE(r.output.find("<F> <ERROR> IMPR_TABLE (t.comm, line 103): keyword FORMAT_R: value '1PQ12.5' is not a "
+    EXPECT_NE(r.output.find("<F> <ERROR> IMPR_TABLE (t.comm, line 116): keyword FORMAT_R: value '1PQ12.5' is not a "
                             "Fortran real format such as 'E12.5', '1PE12.5', 'D15.8', 'F10.3' or 'G14.7'"),
               std::string::npos)
         << r.output;
