@@ -52,6 +52,12 @@ except ImportError:
 _VECTOR_MIN = 16
 _MAX_BRANCHES = 64
 
+def _number(value):
+    # float() would read a text ('0.5') as a number: a formula that returns a text is an error.
+    if isinstance(value, (str, bytes, bytearray)):
+        raise TypeError("the formula returns a text (%r), not a number" % (value[:40],))
+    return float(value)
+
 def _scope(context, comm_globals, math_names):
     # Name lookup, innermost first: parameters, context objects, math, the command file's globals
     # (read at each batch, so that pre-2018 files see the functions they define).
@@ -89,7 +95,10 @@ def _branches(f, columns, n, budget):
     try:
         with _np.errstate(all="ignore"):
             r = f(*[c.view(_PointArray) for c in columns])
-        r = _np.asarray(r, dtype=float)
+        r = _np.asarray(r)
+        if r.dtype.kind not in "biuf":
+            return None  # texts, objects: the point loop names them
+        r = r.astype(float)
     except _Split as split:
         mask = split.mask
         if mask.shape != (n,) or budget[0] <= 1:
@@ -134,7 +143,7 @@ def _evaluate_vector(code, context, comm_globals, array, npar, n):
     try:
         for index in leaves:
             for i in (index[0], index[-1]):
-                if abs(float(scalar(*array[i].tolist())) - r[i]) > tolerance:
+                if abs(_number(scalar(*array[i].tolist())) - r[i]) > tolerance:
                     return None
     except Exception:
         return None
@@ -158,12 +167,12 @@ def evaluate_many(code, context, comm_globals, array, npar):
                 return v[0], -1, "", "vector:%d" % v[1]
         f = eval(code, _scope(context, comm_globals, _MATH))
         if npar > 0:
-            # Once per distinct point, without a Python-level loop (float() of each value as
+            # Once per distinct point, without a Python-level loop (_number() of each value as
             # below); on any error the loop below runs again for the failing index and Python's
             # own message.
             points, inverse = _distinct_rows(array) if n >= _VECTOR_MIN else (array, None)
             try:
-                r = _np.fromiter(map(float, map(f, *[points[:, j].tolist() for j in range(npar)])),
+                r = _np.fromiter(map(_number, map(f, *[points[:, j].tolist() for j in range(npar)])),
                                  dtype=float, count=len(points))
                 return (r if inverse is None else r[inverse]), -1, "", "points:%d" % len(points)
             except Exception:
@@ -177,7 +186,7 @@ def evaluate_many(code, context, comm_globals, array, npar):
     i = 0
     try:
         for i in range(n):
-            out[i] = float(f(*rows[i]))
+            out[i] = _number(f(*rows[i]))
     except Exception as e:
         return None, i, "%s: %s" % (type(e).__name__, e), "points:%d" % n
     return out, -1, "", "points:%d" % n

@@ -25,6 +25,7 @@
 #include "parser/CommandRegistry.hpp"
 #include "parser/Formula.hpp"
 #include "parser/ParserMessages.hpp"
+#include "parser/RunGuard.hpp"
 #include "parser/RunState.hpp"
 
 namespace py = pybind11;
@@ -60,7 +61,39 @@ private:
 // ------------------------------------------------------------------------------------------
 // Python values -> CallValue
 
-CallValue toCallValue(py::handle h) {
+// A keyword's value is a scalar, a list of them or _F occurrences holding those: a few levels. A
+// deeper value, or one that contains itself, is refused before it is walked (a value nested 1e5
+// deep overflowed the stack; a list that holds itself never ended).
+constexpr size_t kMaxValueDepth = 32;
+
+CallValue toCallValue(py::handle h, const std::string& keyword, std::vector<PyObject*>& path);
+
+CallValue containerToCallValue(py::handle h, const std::string& keyword, std::vector<PyObject*>& path) {
+    const std::string what = keyword.empty() ? "a value" : "the value of " + keyword;
+    if (std::find(path.begin(), path.end(), h.ptr()) != path.end())
+        throw UserError(what + " contains itself (a list, tuple or _F that holds itself): it has no end");
+    if (path.size() >= kMaxValueDepth)
+        throw UserError(
+            fmt::format("{} is nested more than {} levels deep (lists, tuples or _F inside each other); "
+                        "a keyword takes a value, a list of values or _F occurrences",
+                        what, kMaxValueDepth));
+    path.push_back(h.ptr());
+    CallValue v;  // filled below, then the path is left
+    if (PyDict_Check(h.ptr())) {
+        std::vector<std::pair<std::string, CallValue>> d;
+        for (auto [k, val] : h.cast<py::dict>())
+            d.emplace_back(py::str(k).cast<std::string>(), toCallValue(val, keyword, path));
+        v = CallValue::factor(std::move(d));
+    } else {
+        std::vector<CallValue> items;
+        for (auto item : h) items.push_back(toCallValue(item, keyword, path));
+        v = CallValue::list(std::move(items));
+    }
+    path.pop_back();
+    return v;
+}
+
+CallValue toCallValue(py::handle h, const std::string& keyword, std::vector<PyObject*>& path) {
     CallValue v;
     if (h.is_none()) return v;
     if (PyBool_Check(h.ptr())) {
@@ -79,16 +112,8 @@ CallValue toCallValue(py::handle h) {
     if (PyFloat_Check(h.ptr())) return CallValue::of(h.cast<double>());
     if (PyUnicode_Check(h.ptr())) return CallValue::of(h.cast<std::string>());
     if (py::isinstance<ConceptHandle>(h)) return CallValue::of(h.cast<ConceptHandle&>().object);
-    if (PyList_Check(h.ptr()) || PyTuple_Check(h.ptr())) {
-        std::vector<CallValue> items;
-        for (auto item : h) items.push_back(toCallValue(item));
-        return CallValue::list(std::move(items));
-    }
-    if (PyDict_Check(h.ptr())) {
-        std::vector<std::pair<std::string, CallValue>> d;
-        for (auto [k, val] : h.cast<py::dict>()) d.emplace_back(py::str(k).cast<std::string>(), toCallValue(val));
-        return CallValue::factor(std::move(d));
-    }
+    if (PyList_Check(h.ptr()) || PyTuple_Check(h.ptr()) || PyDict_Check(h.ptr()))
+        return containerToCallValue(h, keyword, path);
     // numpy scalars and the like.
     if (py::hasattr(h, "__index__"))
         return CallValue::of(static_cast<long long>(h.attr("__index__")().cast<long long>()));
@@ -97,6 +122,11 @@ CallValue toCallValue(py::handle h) {
     v.kind = CallValue::Kind::Other;
     v.text = py::str(py::type::handle_of(h).attr("__name__")).cast<std::string>();
     return v;
+}
+
+CallValue toCallValue(py::handle h, const std::string& keyword = "") {
+    std::vector<PyObject*> path;
+    return toCallValue(h, keyword, path);
 }
 
 bool isInput(const CallValue& v, const ConceptPtr& c) {
@@ -138,6 +168,13 @@ def _make_command(name):
 for _name in _miniaster.command_names():
     setattr(builtins, _name, _make_command(_name))
 builtins._F = _F
+
+# The math names code_aster puts in every command file's namespace (code_aster/Cata/context.py):
+# sslv318a computes its reference with sqrt.
+import math as _math
+for _name in ("acos", "asin", "atan", "atan2", "cos", "cosh", "exp", "log", "log10", "pi", "sin", "sinh",
+              "sqrt", "tan", "tanh"):
+    setattr(builtins, _name, getattr(_math, _name))
 
 # Files written for code_aster ≥ 14 may start with `from code_aster.Commands import *`.
 import types as _types
@@ -196,6 +233,15 @@ class _LogWriter:
             self._pending = ""
     def isatty(self):
         return False
+
+# A child forked by the command file (os.fork, multiprocessing) ends at once, quietly: it must not
+# run the rest of the file nor write the run's outputs (parser/RunGuard.hpp).
+def _forked():
+    line = sys._getframe(1).f_lineno  # the caller of os.fork (the hooks run from C)
+    _miniaster.log(" <I> os.fork() (line %d): the child process ended at once without running the rest of the "
+                   "command file (a run is one process per MPI rank)" % line)
+import os as _os
+_os.register_at_fork(after_in_child=_miniaster.end_forked_child, after_in_parent=_forked)
 
 sys.stdout = _LogWriter()
 sys.stderr = _LogWriter()
@@ -361,12 +407,13 @@ CallArguments callArguments(const std::string& name, const py::dict& keywords, p
             context[k] = v;
             continue;
         }
-        callArgs.emplace_back(key, toCallValue(v));
+        callArgs.emplace_back(key, toCallValue(v, key));
     }
     return callArgs;
 }
 
 py::object runCommand(const std::string& name, py::object frame, py::tuple args, py::dict keywords) {
+    if (isForkedChild()) ::_exit(0);  // forked without Python's hooks (ctypes): quietly, before any output
     auto& run = RunState::current();
     if (!run.failure) agreeWithOtherProcesses(run);  // a process may have failed in the Python code
     if (run.failure) throw AbortRun{};
@@ -509,6 +556,7 @@ PYBIND11_EMBEDDED_MODULE(_miniaster, m) {
         return names;
     });
     m.def("log", [](const std::string& line) { msg().info(line); });
+    m.def("end_forked_child", [] { ::_exit(0); });
 }
 
 void installPythonBuiltins() {

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -26,12 +27,19 @@ namespace ma {
 
 namespace {
 
-constexpr int kStopSignals[] = {SIGTERM, SIGINT, SIGHUP, SIGXCPU};
+// Every signal whose default action ends the process: the run ends with its paragraph instead.
+// Those that come from outside (kill, a timer the command file armed: signal.alarm) stop it from
+// the watchdog; the faults of an instruction are the crash handler's (below).
+constexpr int kStopSignals[] = {SIGTERM, SIGINT,  SIGHUP,    SIGXCPU, SIGQUIT, SIGUSR1,
+                                SIGUSR2, SIGALRM, SIGVTALRM, SIGPROF, SIGPWR,  SIGIO};
+constexpr int kFatalSignals[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTRAP, SIGSYS};
 constexpr int kTickMs = 50;  // how often the limits are looked at
 
 int gWakePipe[2] = {-1, -1};
 std::atomic<bool> gStopping{false};
 std::thread* gWatchdog = nullptr;
+pid_t gRunPid = 0;                                // the process of the run (not a child it forked)
+std::chrono::steady_clock::time_point gRunStart;  // wall time of the run's start
 
 extern "C" void onStopSignal(int sig) {
     const unsigned char byte = static_cast<unsigned char>(sig);
@@ -76,6 +84,19 @@ void stopOnSignal(StopHandler stop, const PeerWatch& peers) {
     stop("INTERRUPTED", fmt::format("the run is stopped by signal {} ({})", int(sig), strsignal(sig)));
 }
 
+// P time_limit: CPU time of the process, and elapsed time as code_aster's own limit counts it (a
+// run waiting in time.sleep or on a lock uses no CPU).
+void checkTimeLimit(const std::optional<double>& limit, StopHandler stop) {
+    if (!limit) return;
+    const double cpu = cpuSeconds();
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - gRunStart).count();
+    if (cpu > *limit || elapsed > *limit)
+        stop("TIME_LIMIT", fmt::format("the time limit of {:g} s (P time_limit: CPU time of the process or elapsed "
+                                       "time, whichever comes first) is reached ({:.1f} s elapsed, {:.1f} s of CPU); "
+                                       "the run is stopped",
+                                       *limit, elapsed, cpu));
+}
+
 void watch(RunLimits limits, StopHandler stop) {
     const std::optional<double> processLimit = processCpuLimit();
     const PeerWatch peers;
@@ -87,10 +108,7 @@ void watch(RunLimits limits, StopHandler stop) {
             if (fds[0].revents & POLLIN) stopOnSignal(stop, peers);
         }
         if (gStopping) return;
-        if (limits.timeLimitSeconds && cpuSeconds() > *limits.timeLimitSeconds)
-            stop("TIME_LIMIT", fmt::format("the time limit of {:g} s (P time_limit, CPU time of the process) is "
-                                           "reached; the run is stopped",
-                                           *limits.timeLimitSeconds));
+        checkTimeLimit(limits.timeLimitSeconds, stop);
         checkProcessCpuLimit(processLimit, stop);
         if (const double resident = limits.memoryLimitMb ? residentMemoryMb() : 0.0;
             limits.memoryLimitMb && resident > *limits.memoryLimitMb)
@@ -100,9 +118,30 @@ void watch(RunLimits limits, StopHandler stop) {
     }
 }
 
-// ---- crash handler
+// ---- crash handler (async-signal-safe: write() of text assembled by hand, no allocation)
 
 int gCrashFd = -1;
+char gAltStack[1 << 16];  // a stack overflow (deep recursion) still gets its paragraph
+
+struct Text {
+    char data[2048];
+    size_t size = 0;
+    Text& operator<<(const char* s) {
+        while (*s && size < sizeof(data)) data[size++] = *s++;
+        return *this;
+    }
+    Text& operator<<(long n) {
+        char digits[24];
+        int k = 0;
+        const bool negative = n < 0;
+        unsigned long u = negative ? 0UL - static_cast<unsigned long>(n) : static_cast<unsigned long>(n);
+        do digits[k++] = static_cast<char>('0' + u % 10);
+        while ((u /= 10) > 0 && k < 22);
+        if (negative) digits[k++] = '-';
+        while (k > 0 && size < sizeof(data)) data[size++] = digits[--k];
+        return *this;
+    }
+};
 
 void writeAll(int fd, const char* data, size_t size) {
     while (size > 0) {
@@ -113,32 +152,48 @@ void writeAll(int fd, const char* data, size_t size) {
     }
 }
 
+const char* signalName(int sig) {
+    switch (sig) {
+        case SIGSEGV: return "SIGSEGV, segmentation fault: an invalid memory access";
+        case SIGBUS: return "SIGBUS, bus error: an invalid memory access";
+        case SIGFPE: return "SIGFPE, arithmetic exception";
+        case SIGILL: return "SIGILL, illegal instruction";
+        case SIGABRT: return "SIGABRT, aborted";
+        case SIGTRAP: return "SIGTRAP, trace or breakpoint trap";
+        case SIGSYS: return "SIGSYS, bad system call";
+        default: return "a fatal signal";
+    }
+}
+
 extern "C" void onFatalSignal(int sig) {
-    // Best effort: the process is already broken; only write() on prepared data.
+    if (::getpid() != gRunPid) ::_exit(1);  // a child forked by the command file: quietly
     const auto& run = RunState::current();
-    char where[160];
-    if (run.runningCommand[0])
-        std::snprintf(where, sizeof(where), "%s (%s, line %d)", run.runningCommand, run.commBaseName.c_str(),
-                      run.runningLine);
-    else std::snprintf(where, sizeof(where), "(%s)", run.commBaseName.c_str());
-    char paragraph[640];
-    const int len = std::snprintf(paragraph, sizeof(paragraph),
-                                  "\n<F> <ABNORMAL_ABORT> %s: the process received signal %d (%s); this is a defect "
-                                  "of miniaster, please report it\n\n"
-                                  "------------------------------------------------------------\n"
-                                  "--- DIAGNOSTIC JOB : <F>_ABNORMAL_ABORT\n"
-                                  "------------------------------------------------------------\n",
-                                  where, sig, strsignal(sig));
-    const size_t size = len > 0 ? size_t(std::min<int>(len, sizeof(paragraph) - 1)) : 0;
-    writeAll(STDOUT_FILENO, paragraph, size);
-    if (gCrashFd >= 0) writeAll(gCrashFd, paragraph, size);
-    std::signal(sig, SIG_DFL);
-    std::raise(sig);
+    Text text;
+    text << "\n<F> <ABNORMAL_ABORT> ";
+    const char* file = run.commBaseName.c_str();
+    const long line = run.runningLine;
+    if (run.runningCommand[0]) text << run.runningCommand << " (" << file << ", line " << line << ")";
+    else if (line) text << "(" << file << ", in the Python code after the command of line " << line << ")";
+    else text << "(" << file << ")";
+    text << ": the process received signal " << long(sig) << " (" << signalName(sig)
+         << "); the run is stopped. Its cause is in native code: the command file's own (ctypes, a C extension "
+            "it imports), a Python recursion deeper than the stack (sys.setrecursionlimit), or a defect of "
+            "miniaster (then please report it with the command file)\n\n"
+            "------------------------------------------------------------\n"
+            "--- DIAGNOSTIC JOB : <F>_ABNORMAL_ABORT\n"
+            "------------------------------------------------------------\n";
+    writeAll(STDOUT_FILENO, text.data, text.size);
+    if (gCrashFd >= 0 && msg().streamFd() >= 0) writeAll(msg().streamFd(), text.data, text.size);
+    ::_exit(1);
 }
 
 }  // namespace
 
 void armStopSignals() {
+    if (!gRunPid) {
+        gRunPid = ::getpid();
+        gRunStart = std::chrono::steady_clock::now();
+    }
     if (gWakePipe[0] < 0 && ::pipe2(gWakePipe, O_CLOEXEC) != 0) return;
     struct sigaction action {};
     action.sa_handler = onStopSignal;
@@ -167,8 +222,19 @@ void stopRunGuard() {
 
 void installCrashHandler(int messFd) {
     gCrashFd = messFd;
-    for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(sig, onFatalSignal);
+    if (!gRunPid) gRunPid = ::getpid();
+    stack_t stack{};
+    stack.ss_sp = gAltStack;
+    stack.ss_size = sizeof(gAltStack);
+    ::sigaltstack(&stack, nullptr);  // this thread's (the main thread: the command file's)
+    struct sigaction action {};
+    action.sa_handler = onFatalSignal;
+    action.sa_flags = SA_ONSTACK;
+    sigemptyset(&action.sa_mask);
+    for (int sig : kFatalSignals) ::sigaction(sig, &action, nullptr);
 }
+
+bool isForkedChild() { return gRunPid != 0 && ::getpid() != gRunPid; }
 
 }  // namespace ma
 

@@ -18,6 +18,7 @@
 #include "core/Messages.hpp"
 #include "core/Mpi.hpp"
 #include "core/TestReport.hpp"
+#include "parser/OutputGuard.hpp"
 #include "parser/RunState.hpp"
 
 namespace fs = std::filesystem;
@@ -157,7 +158,24 @@ void applyExport(const ExportFile& exportFile, RunState& run, RunOutputs& out) {
     }
 }
 
-void prepareOutputs(RunOutputs& out) {
+// The files the run writes: the .mess, the .resu and every result unit (a compressed one by its
+// final path).
+std::vector<NamedPath> outputPaths(const RunOutputs& out, const Units& units) {
+    std::vector<NamedPath> paths = {{out.mess, "message log"}, {out.resu, "result file"}};
+    for (const auto& [unit, path] : units.outputs()) {
+        std::string written = path;
+        for (const auto& c : out.compressedResults)
+            if (c.plain == path) written = c.final;
+        paths.push_back({written, fmt::format("result file of unit {}", unit)});
+    }
+    return paths;
+}
+
+void prepareOutputs(RunOutputs& out, const RunState& run, const std::string& exportFile) {
+    std::vector<NamedPath> inputs = {{run.commFile, "command file"}, {exportFile, ".export file"}};
+    for (const auto& [unit, path] : run.units.inputs())
+        inputs.push_back({path, fmt::format("data file of unit {}", unit)});
+    checkOutputPaths(outputPaths(out, run.units), inputs);
     std::set<fs::path> folders;
     checkWritableFolder(out.outDir, "output folder");
     folders.insert(out.outDir);
@@ -181,9 +199,8 @@ void prepareOutputs(RunOutputs& out) {
 }
 
 void openMessageLog(RunOutputs& out) {
-    out.messFd = ::open(out.mess.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-    if (out.messFd < 0) throw UserError(systemError("cannot create the message log", out.mess, errno));
-    msg().streamTo(out.messFd);
+    out.messFd = openLockedMessageLog(out.mess);
+    msg().streamTo(out.messFd, out.mess);
 }
 
 bool finishOutputs(RunOutputs& out, bool failed, bool checkOnly) {
@@ -221,8 +238,11 @@ bool finishOutputs(RunOutputs& out, bool failed, bool checkOnly) {
         forgetTemporary(out.scratch);
     }
     if (out.messFd >= 0) {
-        if (!msg().streamError() && ::fsync(out.messFd) != 0 && errno != EINVAL) ok = false;
-        if (::close(out.messFd) != 0) ok = false;
+        // The log's descriptor now (reopened if the command file closed it: core/Messages.hpp).
+        const int fd = msg().streamFd();
+        if (!msg().streamError() && ::fsync(fd) != 0 && errno != EINVAL) ok = false;
+        msg().streamTo(-1);
+        if (::close(fd) != 0) ok = false;
         out.messFd = -1;
         if (ok && msg().streamError()) {
             reportOnStderr(systemError("cannot write the message log", out.mess, msg().streamError()));
@@ -292,7 +312,7 @@ void stopRunNow(RunOutputs& out, const std::string& paragraph, const std::string
         } catch (const UserError& e) { reportOnStderr(e.what()); }
     }
     removeLiveTemporaries();
-    if (out.messFd >= 0) ::fsync(out.messFd);
+    if (out.messFd >= 0) ::fsync(msg().streamFd());
     ::_exit(1);
 }
 

@@ -36,10 +36,13 @@ struct RunOutputs {
 // Units, .mess/.resu paths, R directories and DC/RC files of the .export. UserError on a file
 // that cannot be decompressed.
 void applyExport(const ExportFile& exportFile, RunState& run, RunOutputs& out);
-// Creates and checks the output folder and every result path; removes stale temporaries of dead
-// runs there. UserError naming the path and the system's reason.
-void prepareOutputs(RunOutputs& out);
-// Opens the .mess and streams the log into it (UserError when it cannot be created).
+// Checks that no output is a link, a special file, an input of the run (`exportFile` "" for a
+// .comm run) or another output (parser/OutputGuard.hpp); creates and checks the output folder and
+// every result path; removes stale temporaries of dead runs there. UserError naming the path and
+// the reason.
+void prepareOutputs(RunOutputs& out, const RunState& run, const std::string& exportFile);
+// Opens the .mess locked against another run of the case and streams the log into it (UserError
+// when it cannot be created or another run holds it).
 void openMessageLog(RunOutputs& out);
 // End of run: the .resu (see above), the compressed results, the .mess synced and closed, the
 // scratch folder removed. False when an output could not be written (reported on stderr).

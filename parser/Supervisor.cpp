@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 #include <pybind11/embed.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <filesystem>
@@ -299,11 +300,12 @@ RunLimits setUpRun(const Options& opt, RunState& run, RunOutputs& outputs) {
 
 // The outputs checked and the .mess opened by rank 0 (the other processes write nothing); every
 // process learns whether that worked. An exit status when the run cannot start.
-std::optional<int> openOutputs(RunOutputs& outputs, const std::optional<std::string>& setupFailure) {
+std::optional<int> openOutputs(RunOutputs& outputs, const RunState& run, const std::string& exportFile,
+                               const std::optional<std::string>& setupFailure) {
     std::optional<mpi::Failure> failure;
     if (mpi::isRoot()) {
         try {
-            prepareOutputs(outputs);
+            prepareOutputs(outputs, run, exportFile);
             openMessageLog(outputs);
         } catch (const UserError& e) { failure = mpi::Failure{0, e.what()}; }
     }
@@ -343,6 +345,7 @@ void runCommandFile(const Options& opt, RunState& run, RunOutputs& outputs, cons
     try {
         installPythonBuiltins();
         executeCommandFile(run);
+        if (isForkedChild()) ::_exit(0);  // forked without Python's hooks: the parent ends the run
     } catch (py::error_already_set& e) {
         run.fail("ERROR", "", 0, std::string("internal error of the supervisor: ") + e.what());
     } catch (const std::exception& e) { run.fail("ERROR", "", 0, unexpectedErrorCause(e)); }
@@ -425,7 +428,8 @@ int supervisorMain(int argc, char** argv) {
     }
     if (outputs.mess.empty()) outputs.mess = (fs::path(outputs.outDir) / (caseName + ".mess")).string();
     if (outputs.resu.empty()) outputs.resu = (fs::path(outputs.outDir) / (caseName + ".resu")).string();
-    if (const auto status = openOutputs(outputs, setupFailure)) return *status;
+    const std::string exportFile = fs::path(opt.input).extension() == ".export" ? opt.input : "";
+    if (const auto status = openOutputs(outputs, run, exportFile, setupFailure)) return *status;
     if (setupFailure) {
         run.commBaseName = fs::path(opt.input).filename().string();
         run.failure = RunFailure{"ERROR", fmt::format("<F> <ERROR> {}", *setupFailure)};

@@ -26,6 +26,8 @@ set(MINIASTER_FAMILY ssnv512a ssnv512c ssnv512e ssnv512f ssnv513a ssnv513b ssnv5
 # Beyond the family: code_aster's other interface tests as their features land (docs/commands.md).
 set(MINIASTER_BEYOND ssnv173b ssnv173d ssnv173e ssnv173f ssnv173g ssnv195a ssnv201a ssnv245a ssnv203a ssnv191b
     ssnp169a CACHE INTERNAL "")
+# Cracks (issue 26, docs/cracks.md): step 1, the level sets of a FORM_FISS crack.
+set(MINIASTER_CRACKS sslv318a CACHE INTERNAL "")
 # Originals whose NON_REGRESSION values are code_aster's own inexact results (docs/contact.md,
 # docs/family.md): exit 2 accepted when every reference check is OK (tools/run_validation.sh).
 set(MINIASTER_ORIGINALS_INEXACT_VALE_CALC ssnv511e ssnv511f ssnv511g ssnv511h ssnv512f ssnv513e ssnv513g
@@ -34,7 +36,7 @@ set(MINIASTER_ORIGINALS_INEXACT_VALE_CALC ssnv511e ssnv511f ssnv511g ssnv511h ss
 # DEPZON_4 DX-DX MAX, which the converged solution itself exceeds (0.0629 at N = 81, the refinement
 # study of docs/family.md). Its DEPZON_1 DX-DX MAX line is OK (0.044) and is not excused.
 set(_ssnv513e_allowed --allow-reference-nook "TEST_TABLE (ssnv513e.comm line 332) DEPZON_4 DX-DX MAX")
-foreach(_name ${MINIASTER_ORIGINALS} ${MINIASTER_FAMILY} ${MINIASTER_BEYOND})
+foreach(_name ${MINIASTER_ORIGINALS} ${MINIASTER_FAMILY} ${MINIASTER_BEYOND} ${MINIASTER_CRACKS})
   set(_opt "")
   if(_name IN_LIST MINIASTER_ORIGINALS_INEXACT_VALE_CALC)
     set(_opt --allow-nonregression-nook)
@@ -109,3 +111,65 @@ set_tests_properties(astest.fjunction_invariants PROPERTIES FIXTURES_REQUIRED fj
 add_test(NAME original_resplit.ssnv511h
          COMMAND ${CMAKE_SOURCE_DIR}/tests/resplit_check.sh $<TARGET_FILE:miniaster-bin> $<TARGET_FILE:resplit_layer>
                  ${CMAKE_SOURCE_DIR}/../shared/astest ${CMAKE_BINARY_DIR}/astest-out/resplit_ssnv511h)
+
+# The originals with other SOLVEUR settings (tests/solveur_variant.py: a copy of the .comm under the
+# build folder with SOLVEUR=_F(...) in its solving calls): the same TEST results as the original run,
+# and the .mess shows the setting reached the solver (docs/solver.md).
+function(miniaster_solveur_variant _label _name _keywords _expect)
+  set(_opt "")
+  if(_name IN_LIST MINIASTER_ORIGINALS_INEXACT_VALE_CALC)
+    set(_opt --allow-nonregression-nook)
+  endif()
+  add_test(NAME original_solveur_${_label}.${_name}
+           COMMAND ${Python_EXECUTABLE} ${CMAKE_SOURCE_DIR}/tests/solveur_variant.py $<TARGET_FILE:miniaster-bin>
+                   ${_run} ${CMAKE_SOURCE_DIR}/../shared/astest ${_name}
+                   ${CMAKE_BINARY_DIR}/astest-out/solveur_${_label}_${_name} ${CMAKE_BINARY_DIR}/astest-out/${_name}
+                   "${_keywords}" "${_expect}" ${_opt} ${ARGN})
+  set_tests_properties(original_solveur_${_label}.${_name} PROPERTIES FIXTURES_REQUIRED one_process.${_name})
+endfunction()
+foreach(_name ssnv511e ssnv511f ssnv511g ssnv511h)
+  miniaster_solveur_variant(mixer_precision ${_name} "METHODE='MUMPS', MIXER_PRECISION='OUI'"
+                            "MUMPS (single-precision factors) solve")
+endforeach()
+miniaster_solveur_variant(filtrage_matrice ssnv511e "METHODE='MUMPS', FILTRAGE_MATRICE=1e-12, MIXER_PRECISION='OUI'"
+                          "FILTRAGE_MATRICE=1e-12: ")
+miniaster_solveur_variant(resi_rela ssnv511b "METHODE='MUMPS', RESI_RELA=1e-12" "RESI_RELA=1e-12")
+miniaster_solveur_variant(out_of_core ssnv511a "METHODE='MUMPS', GESTION_MEMOIRE='OUT_OF_CORE'"
+                          "MUMPS out of core (ICNTL(22)=1)")
+# METHODE='PETSC' / 'GCPC' (docs/solver.md): ssnv511a-d's references are exact to 1e-13, met with
+# RESI_RELA=1e-15; ssnv511e-h go through STAT_NON_LINE's Newton, with RESI_RELA=1e-12 (ssnv511h's
+# multipliers keep FGMRES's true residual at ~5e-14: 1e-15 is refused there as unreachable).
+foreach(_case "a|cg_gamg|ALGORITHME='CG', PRE_COND='GAMG'|1e-15" "b|cg_gamg|ALGORITHME='CG', PRE_COND='GAMG'|1e-15"
+              "b|gmres_boomer|ALGORITHME='GMRES', PRE_COND='BOOMER'|1e-15" "c|cg_ml|ALGORITHME='CG', PRE_COND='ML'|1e-15"
+              "a|fgmres_ldlt_sp|PRE_COND='LDLT_SP'|1e-15" "d|cr_sor|ALGORITHME='CR', PRE_COND='SOR'|1e-15"
+              "e|fgmres_ldlt_sp|PRE_COND='LDLT_SP'|1e-12" "f|gcr_ldlt_sp|ALGORITHME='GCR', PRE_COND='LDLT_SP'|1e-12"
+              "g|gmres_ldlt_dp|ALGORITHME='GMRES', PRE_COND='LDLT_DP'|1e-12" "h|fgmres_ldlt_sp|PRE_COND='LDLT_SP'|1e-12"
+              "e|fgmres_gamg|PRE_COND='GAMG'|1e-12")
+  string(REPLACE "|" ";" _f "${_case}")
+  list(GET _f 0 _letter)
+  list(GET _f 1 _label)
+  list(GET _f 2 _keywords)
+  list(GET _f 3 _resi)
+  string(REGEX MATCH "ALGORITHME='[A-Z]+'" _algorithm "${_keywords}")
+  if(NOT _algorithm)
+    set(_algorithm "ALGORITHME='FGMRES'")
+  endif()
+  string(REGEX MATCH "PRE_COND='[A-Z_]+'" _pc "${_keywords}")
+  miniaster_solveur_variant(petsc_${_label} ssnv511${_letter} "METHODE='PETSC', ${_keywords}, RESI_RELA=${_resi}"
+                            "PETSC (${_algorithm}, ${_pc}) solve")
+endforeach()
+foreach(_case "a|1e-15" "d|1e-15" "e|1e-12")
+  string(REPLACE "|" ";" _f "${_case}")
+  list(GET _f 0 _letter)
+  list(GET _f 1 _resi)
+  miniaster_solveur_variant(gcpc_ldlt_inc ssnv511${_letter} "METHODE='GCPC', RESI_RELA=${_resi}"
+                            "GCPC (ALGORITHME='CG', PRE_COND='LDLT_INC') solve")
+endforeach()
+# On two processes PETSc is sequential (each process solves the whole system), and the LDLT_SP
+# factors are a MUMPS of one process on each: the same TEST results.
+miniaster_solveur_variant(petsc_np2 ssnv511a "METHODE='PETSC', PRE_COND='LDLT_SP', RESI_RELA=1e-15"
+                          "PETSC (ALGORITHME='FGMRES', PRE_COND='LDLT_SP') solve" -- --np 2)
+set_tests_properties(original_solveur_petsc_np2.ssnv511a PROPERTIES PROCESSORS 2)
+# GAMG gets the rigid body modes as its near null space (fe/EquationPoints rigidBodyModes).
+miniaster_solveur_variant(petsc_gamg_modes ssnv511a "METHODE='PETSC', ALGORITHME='CG', PRE_COND='GAMG', RESI_RELA=1e-15"
+                          "near null space: 3 rigid body modes")

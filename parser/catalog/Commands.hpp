@@ -40,6 +40,7 @@ void POST_ERREUR(Catalog&);
 void POST_MAIL_XFEM(Catalog&);
 void POST_RELEVE_T(Catalog&);
 void PRE_GIBI(Catalog&);
+void RECU_TABLE(Catalog&);
 void STAT_NON_LINE(Catalog&);
 void TEST_RESU(Catalog&);
 void TEST_TABLE(Catalog&);
@@ -82,6 +83,7 @@ inline const std::vector<CommandFile>& commandFiles() {
         {"POST_MAIL_XFEM", POST_MAIL_XFEM},
         {"POST_RELEVE_T", POST_RELEVE_T},
         {"PRE_GIBI", PRE_GIBI},
+        {"RECU_TABLE", RECU_TABLE},
         {"STAT_NON_LINE", STAT_NON_LINE},
         {"TEST_RESU", TEST_RESU},
         {"TEST_TABLE", TEST_TABLE},

@@ -1,7 +1,37 @@
-// DEFI_FISS_XFEM: an X-FEM interface given by level-set functions, and its junctions.
+// DEFI_FISS_XFEM: a crack (with a front) or an interface given by level-set functions, nodal
+// fields or a predefined shape (FORM_FISS), and its junctions.
 #include "parser/catalog/common/Types.hpp"
 
 namespace ma::catalog_entries {
+
+namespace {
+
+Keyword vector3(const char* name) { return R(name).min(3).max(3).mandatory(); }
+Keyword halfLength(const char* name) { return R(name).mandatory().range(0.0, {}); }
+
+// The keywords of each FORM_FISS (code_aster's blocks b_ellipse … b_droite).
+std::vector<Keyword> shapeBlocks() {
+    return {
+        bloc(when("FORM_FISS", {"ELLIPSE"}),
+             {halfLength("DEMI_GRAND_AXE"), halfLength("DEMI_PETIT_AXE"), vector3("CENTRE"), vector3("VECT_X"),
+              vector3("VECT_Y"), TXM("COTE_FISS").into({"IN", "OUT"}).def("IN")}),
+        bloc(when("FORM_FISS", {"RECTANGLE"}),
+             {halfLength("DEMI_GRAND_AXE"), halfLength("DEMI_PETIT_AXE"), R("RAYON_CONGE").range(0.0, {}).def(0.0),
+              vector3("CENTRE"), vector3("VECT_X"), vector3("VECT_Y"), TXM("COTE_FISS").into({"IN", "OUT"}).def("IN")}),
+        bloc(when("FORM_FISS", {"ENTAILLE"}),
+             {halfLength("DEMI_LONGUEUR"), halfLength("RAYON_CONGE"), vector3("CENTRE"), vector3("VECT_X"),
+              vector3("VECT_Y")}),
+        bloc(when("FORM_FISS", {"CYLINDRE"}),
+             {halfLength("DEMI_GRAND_AXE"), halfLength("DEMI_PETIT_AXE"), vector3("CENTRE"), vector3("VECT_X"),
+              vector3("VECT_Y")}),
+        bloc(when("FORM_FISS", {"DEMI_PLAN"}), {vector3("PFON"), vector3("NORMALE"), vector3("DTAN")}),
+        bloc(when("FORM_FISS", {"SEGMENT"}), {vector3("PFON_ORIG"), vector3("PFON_EXTR")}),
+        bloc(when("FORM_FISS", {"DEMI_DROITE"}), {vector3("PFON"), vector3("DTAN")}),
+        bloc(when("FORM_FISS", {"DROITE"}), {vector3("POINT"), vector3("DTAN")}),
+    };
+}
+
+}  // namespace
 
 void DEFI_FISS_XFEM(Catalog& c) {
     c.add(cmd("DEFI_FISS_XFEM", kCrack)
@@ -12,17 +42,22 @@ void DEFI_FISS_XFEM(Catalog& c) {
                        .def("FISSURE"),
                    TXM("CHAM_DISCONTINUITE").into({"DEPL"}).def("DEPL"),
                    fact("DEFI_FISS").mandatory().keywords(join({
-                       {CO("FONC_LN", kAnyFunction).mandatory(), CO("FONC_LT", kAnyFunction)},
-                       unsupported({"GROUP_MA_FISS", "GROUP_MA_FOND", "FORM_FISS", "CHAM_NO_LSN", "CHAM_NO_LST",
-                                    "GROUP_MA_BORD_FISS"},
-                                   "level sets are given by FONC_LN (and FONC_LT)"),
-                   })),
+                       {CO("FONC_LN", kAnyFunction), CO("FONC_LT", kAnyFunction),
+                        CO("CHAM_NO_LSN", {kNodalField}), CO("CHAM_NO_LST", {kNodalField}),
+                        TXM("FORM_FISS").into({"ELLIPSE", "RECTANGLE", "CYLINDRE", "DEMI_PLAN", "SEGMENT",
+                                               "DEMI_DROITE", "DROITE", "ENTAILLE"})},
+                       shapeBlocks(),
+                       unsupported({"GROUP_MA_FISS", "GROUP_MA_FOND", "GROUP_MA_BORD_FISS"},
+                                   "level sets are given by FONC_LN/FONC_LT, CHAM_NO_LSN/CHAM_NO_LST or FORM_FISS"),
+                   })).rules({unParmi({"FONC_LN", "CHAM_NO_LSN", "FORM_FISS"})}),
                    fact("JONCTION").keywords({CO("FISSURE", {kCrack}).many().mandatory(),
                                               R("POINT").max(3).mandatory()}),
                    TXM("GROUP_MA_ENRI"), info({1, 2, 3})},
-                  unsupported({"TYPE_ENRI_FOND", "RAYON_ENRI", "NB_COUCHES", "FOND_FISS",
-                               "FISS_INITIALE", "ORIE_FOND", "CHAM_NO_FOND"},
-                              "miniaster enriches every node cut by the interface"),
+                  unsupported({"TYPE_ENRI_FOND", "RAYON_ENRI", "NB_COUCHES"},
+                              "crack-tip enrichment is not implemented yet (issue 26, step 2)"),
+                  unsupported({"FOND_FISS", "FISS_INITIALE", "ORIE_FOND", "CHAM_NO_FOND", "MAILLAGE_GRILLE",
+                               "FISS_GRILLE"},
+                              "miniaster enriches every node the discontinuity cuts, on the model's mesh"),
               }))
               .rules({unParmi({"MAILLAGE", "MODELE"})}));
 }

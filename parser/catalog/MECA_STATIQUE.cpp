@@ -9,7 +9,7 @@ void MECA_STATIQUE(Catalog& c) {
               .keywords(join({
                   {CO("MODELE", {kModel}).mandatory(), CO("CHAM_MATER", {kMaterialField}), excit(false),
                    R("INST"), CO("LIST_INST", {kRealList}), R("INST_FIN"),
-                   TXM("OPTION").into({"SIEF_ELGA", "SANS"}).def("SIEF_ELGA"), solveur(), info(), titre()},
+                   TXM("OPTION").into({"SIEF_ELGA", "SANS"}).def("SIEF_ELGA"), solveur(false), info(), titre()},
                   unsupported({"CARA_ELEM", "SENSIBILITE", "SCHEMA_THM"}, "structural elements are not modelled"),
               }))
               .rules({exclus({"INST", "LIST_INST"}), presentPresent({"INST_FIN", "LIST_INST"})}));

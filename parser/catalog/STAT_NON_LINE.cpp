@@ -15,7 +15,7 @@ void STAT_NON_LINE(Catalog& c) {
                        .rules({exclus({"INST_INIT", "NUME_INST_INIT"}), exclus({"INST_FIN", "NUME_INST_FIN"})}),
                    TXM("METHODE").into({"NEWTON", "IMPLEX", "NEWTON_KRYLOV", "MODELE_REDUIT"})
                        .notSupported({"IMPLEX", "NEWTON_KRYLOV", "MODELE_REDUIT"}).def("NEWTON"),
-                   newton(), convergence(), solveur(),
+                   newton(), convergence(), solveur(true),
                    fact("ARCHIVAGE").keywords({CO("LIST_INST", {kRealList}), R("INST").many(), I("PAS_ARCH"),
                                                TXM("CHAM_EXCLU").many(), R("PRECISION").def(1.0e-6), critere()})
                        .rules({exclus({"LIST_INST", "INST", "PAS_ARCH"})}),

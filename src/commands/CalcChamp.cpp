@@ -1,9 +1,11 @@
-// CALC_CHAMP: fields derived from a static result's SIEF_ELGA (post/NodeValues.hpp) and its nodal
-// forces (post/NodalForces.hpp), stored in the result under their NOM_CHAM for the orders and cells
-// chosen. The engine is in src/post.
+// CALC_CHAMP: fields derived from a static result's SIEF_ELGA (post/NodeValues.hpp,
+// post/EquivalentStress.hpp), its strains (post/Strains.hpp) and its nodal forces
+// (post/NodalForces.hpp), stored in the result under their NOM_CHAM for the orders and cells chosen.
+// The engine is in src/post.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <functional>
 #include <optional>
 
 #include "commands/MechanicsKeywords.hpp"
@@ -11,8 +13,10 @@
 #include "core/Messages.hpp"
 #include "fe/Result.hpp"
 #include "parser/CommandRegistry.hpp"
+#include "post/EquivalentStress.hpp"
 #include "post/NodalForces.hpp"
 #include "post/NodeValues.hpp"
+#include "post/Strains.hpp"
 
 namespace ma {
 namespace {
@@ -56,7 +60,49 @@ void store(std::vector<std::pair<std::string, std::shared_ptr<F>>>& fields, cons
     fields.emplace_back(name, std::move(field));
 }
 
-// The CONTRAINTE fields of one step, from its SIEF_ELGA on the chosen cells.
+// The fields derived from one GaussField at the chosen cells, each computed once when asked: the
+// field itself (ELGA), its values at the cells' nodes (ELNO), their nodal mean (NOEU), and the
+// equivalent stresses of the first two (SIEQ_ELGA from ELGA, SIEQ_ELNO from ELNO, SIEQ_NOEU the
+// nodal mean of SIEQ_ELNO: code_aster derives every _NOEU option from its _ELNO).
+class DerivedFields {
+public:
+    DerivedFields(std::shared_ptr<GaussField> elga, const Enrichment* enrichment)
+        : elga_(std::move(elga)), enrichment_(enrichment) {}
+
+    std::shared_ptr<GaussField> elga() const { return elga_; }
+    std::shared_ptr<GaussField> elno() { return elno_ ? elno_ : (elno_ = post::nodeValues(*elga_, enrichment_)); }
+    std::shared_ptr<GaussField> equivalentElga() {
+        return eqElga_ ? eqElga_ : (eqElga_ = post::equivalentStresses(*elga_));
+    }
+    std::shared_ptr<GaussField> equivalentElno() {
+        return eqElno_ ? eqElno_ : (eqElno_ = post::equivalentStresses(*elno()));
+    }
+
+private:
+    std::shared_ptr<GaussField> elga_, elno_, eqElga_, eqElno_;
+    const Enrichment* enrichment_;
+};
+
+// `field` restricted to the chosen cells; UserError when none of them carries an element.
+std::shared_ptr<GaussField> onChosenCells(const GaussField& field, const std::vector<char>& keep, const KeywordSet& kw,
+                                          const Result& result) {
+    auto chosen = post::restrictToCells(field, keep);
+    if (chosen->cells.empty())
+        throw UserError(kw.pathOf("GROUP_MA") + ": none of these cells carries an element of the model of " +
+                        result.name);
+    return chosen;
+}
+
+// Stores NOM_CHAM `name` (suffix _ELGA, _ELNO or _NOEU) from `elga`, `elno` as asked.
+void storeAtPlace(ResultStep& step, const std::string& name, const std::function<std::shared_ptr<GaussField>()>& elga,
+                  const std::function<std::shared_ptr<GaussField>()>& elno) {
+    const std::string place = name.substr(name.size() - 4);
+    if (place == "ELGA") store(step.gaussFields, name, std::make_shared<GaussField>(*elga()));
+    else if (place == "ELNO") store(step.gaussFields, name, std::make_shared<GaussField>(*elno()));
+    else store(step.nodalFields, name, post::nodalAverage(*elno()));
+}
+
+// The CONTRAINTE and CRITERES fields of one step, from its SIEF_ELGA on the chosen cells.
 void stressFields(ResultStep& step, const Result& result, const std::vector<std::string>& asked,
                   const std::vector<char>& keep, const KeywordSet& kw) {
     const auto sief = step.gauss("SIEF_ELGA");
@@ -64,22 +110,27 @@ void stressFields(ResultStep& step, const Result& result, const std::vector<std:
         throw UserError(
             fmt::format("{}: result {} has no SIEF_ELGA at NUME_ORDRE {} (the stresses CALC_CHAMP "
                         "derives its fields from; compute them with OPTION='SIEF_ELGA')",
-                        kw.pathOf("CONTRAINTE"), result.name, step.order));
-    const auto elga = post::restrictToCells(*sief, keep);
-    if (elga->cells.empty())
-        throw UserError(kw.pathOf("GROUP_MA") + ": none of these cells carries an element of the model of " +
-                        result.name);
-    const Enrichment* enrichment = result.model ? result.model->enrichment.get() : nullptr;
-    std::shared_ptr<GaussField> elno;
-    auto nodes = [&] { return elno ? elno : (elno = post::nodeValues(*elga, enrichment)); };
+                        kw.pathOf(kw.has("CONTRAINTE") ? "CONTRAINTE" : "CRITERES"), result.name, step.order));
+    DerivedFields stress(onChosenCells(*sief, keep, kw, result),
+                         result.model ? result.model->enrichment.get() : nullptr);
     for (const auto& name : asked) {
-        if (name == "SIGM_ELGA") store(step.gaussFields, name, std::make_shared<GaussField>(*elga));
-        else if (name == "SIGM_ELNO" || name == "SIEF_ELNO")
-            store(step.gaussFields, name, std::make_shared<GaussField>(*nodes()));
-        else if (name == "SIGM_NOEU" || name == "SIEF_NOEU")
-            store(step.nodalFields, name, post::nodalAverage(*nodes()));
-        else throw NotImplemented(kw.pathOf("CONTRAINTE") + ": " + name + " is not computed by miniaster");
+        if (name.rfind("SIEQ_", 0) == 0)
+            storeAtPlace(
+                step, name, [&] { return stress.equivalentElga(); }, [&] { return stress.equivalentElno(); });
+        else
+            storeAtPlace(
+                step, name, [&] { return stress.elga(); }, [&] { return stress.elno(); });
     }
+}
+
+// The DEFORMATION fields of one step (EPSI_ELGA/ELNO/NOEU), from its displacement.
+void strainFields(ResultStep& step, const Result& result, const post::Strains& strains,
+                  const std::vector<std::string>& asked, const std::vector<char>& keep, const KeywordSet& kw) {
+    DerivedFields strain(onChosenCells(*strains.atPoints(step), keep, kw, result),
+                         result.model ? result.model->enrichment.get() : nullptr);
+    for (const auto& name : asked)
+        storeAtPlace(
+            step, name, [&] { return strain.elga(); }, [&] { return strain.elno(); });
 }
 
 // The FORCE fields of one step; the sum of each displacement component of REAC_NODA in the .mess
@@ -111,17 +162,26 @@ ConceptPtr calcChamp(const KeywordSet& kw, CommandContext& ctx) {
     if (!input->mesh) throw UserError(kw.pathOf("RESULTAT") + ": result " + input->name + " has no mesh");
     // Without reuse=, a new result sharing the input's fields, the new ones added to it.
     auto result = ctx.reused ? input : std::make_shared<Result>(*input);
-    const auto stresses = kw.has("CONTRAINTE") ? kw.texts("CONTRAINTE") : std::vector<std::string>{};
-    const auto force = kw.has("FORCE") ? kw.texts("FORCE") : std::vector<std::string>{};
+    const auto option = [&](const char* keyword) {
+        return kw.has(keyword) ? kw.texts(keyword) : std::vector<std::string>{};
+    };
+    auto stresses = option("CONTRAINTE");
+    const auto criteria = option("CRITERES"), strain = option("DEFORMATION"), force = option("FORCE");
+    stresses.insert(stresses.end(), criteria.begin(), criteria.end());
     const auto keep = chosenCells(*result, kw);
     const auto steps = chosenSteps(*result, kw);
     std::optional<post::NodalForces> forces;
     if (!force.empty()) forces.emplace(*result, kw.has("EXCIT") ? mechanics::loadCases(kw) : result->loads, keep);
+    std::optional<post::Strains> strains;
+    if (!strain.empty())
+        strains.emplace(*result, kw.has("CHAM_MATER") ? kw.object<MaterialField>("CHAM_MATER") : result->material);
     for (ResultStep* step : steps) {
         if (!stresses.empty()) stressFields(*step, *result, stresses, keep, kw);
+        if (strains) strainFields(*step, *result, *strains, strain, keep, kw);
         if (forces) forceFields(*step, *forces, force);
     }
     auto asked = stresses;
+    asked.insert(asked.end(), strain.begin(), strain.end());
     asked.insert(asked.end(), force.begin(), force.end());
     msg().infof("    {} computed at {} order(s) of {}", fmt::join(asked, ", "), steps.size(), input->name);
     return result;

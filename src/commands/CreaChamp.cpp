@@ -1,17 +1,51 @@
 // CREA_CHAMP OPERATION='EXTR': a copy of a field stored in a result (commands_spec §6), chosen
-// by NUME_ORDRE or by INST (CRITERE/PRECISION); NOEU, ELGA or ELNO (CALC_CHAMP's SIGM_ELNO).
+// by NUME_ORDRE or by INST (CRITERE/PRECISION); NOEU, ELGA or ELNO (CALC_CHAMP's SIGM_ELNO); or a
+// level set of a crack (FISSURE, NOM_CHAM LNNO, LTNO, GRLNNO, GRLTNO).
 #include <fmt/format.h>
 
 #include "core/Messages.hpp"
 #include "fe/Result.hpp"
 #include "parser/CommandRegistry.hpp"
+#include "xfem/Crack.hpp"
 
 namespace ma {
 namespace {
 
+// A level set of a crack (LNNO, LTNO: component X1) or its nodal gradient (GRLNNO, GRLTNO: X1…Xdim),
+// on the crack's mesh, as code_aster stores them in the fiss_xfem concept (NEUT_R fields).
+ConceptPtr crackField(const KeywordSet& kw) {
+    const std::string type = kw.text("TYPE_CHAM"), field = kw.text("NOM_CHAM");
+    auto crack = kw.object<xfem::Crack>("FISSURE");
+    if (type != "NOEU_NEUT_R")
+        throw UserError(
+            fmt::format("CREA_CHAMP: field {} of crack {} is a nodal NEUT_R field: give "
+                        "TYPE_CHAM='NOEU_NEUT_R' (not '{}')",
+                        field, crack->name, type));
+    const Mesh& mesh = *crack->mesh;
+    const bool normal = field == "LNNO" || field == "GRLNNO";
+    const auto& values = normal ? crack->lsn : crack->lst;
+    auto out = std::make_shared<NodalField>();
+    out->quantity = "NEUT_R";
+    if (field == "LNNO" || field == "LTNO") {
+        out->resize(crack->mesh, {"X1"});
+        for (int n = 0; n < mesh.nodeCount(); ++n) out->set(n, 0, values[size_t(n)]);
+    } else {
+        const int dim = mesh.dim == 3 ? 3 : 2;
+        out->resize(crack->mesh,
+                    dim == 3 ? std::vector<std::string>{"X1", "X2", "X3"} : std::vector<std::string>{"X1", "X2"});
+        const auto gradient = xfem::nodalLevelSetGradient(mesh, values);
+        for (int n = 0; n < mesh.nodeCount(); ++n)
+            for (int j = 0; j < dim; ++j) out->set(n, j, gradient[size_t(n)][size_t(j)]);
+    }
+    msg().infof("    {} of crack {}: {} nodes, {} component(s)", field, crack->name, mesh.nodeCount(),
+                out->componentCount());
+    return out;
+}
+
 ConceptPtr creaChamp(const KeywordSet& kw, CommandContext&) {
     const std::string operation = kw.text("OPERATION");
     if (operation != "EXTR") throw NotImplemented("CREA_CHAMP/OPERATION='" + operation + "': only 'EXTR'");
+    if (kw.has("FISSURE")) return crackField(kw);
     const std::string type = kw.text("TYPE_CHAM");
     auto result = kw.object<Result>("RESULTAT");
     const std::string field = kw.text("NOM_CHAM");

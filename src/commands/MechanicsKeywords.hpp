@@ -102,6 +102,27 @@ inline SolverOptions solverOptions(const KeywordSet& kw, int info) {
         o.pcentPivot = std::holds_alternative<long long>(v) ? int(std::get<long long>(v)) : int(std::get<double>(v));
     }
     if (s.has("STOP_SINGULIER") && s.text("STOP_SINGULIER") == "NON") o.nprec = -1;
+    if (o.method == "PETSC" || o.method == "GCPC") {
+        o.resiRela = s.real("RESI_RELA");
+        o.preconditioner = s.text("PRE_COND");
+        if (o.method == "PETSC") o.algorithm = s.text("ALGORITHME"), o.petscOptions = s.text("OPTION_PETSC");
+        o.maxIterations = int(s.integer("NMAX_ITER"));
+        o.reacPrecond = int(s.integer("REAC_PRECOND"));
+        o.fillLevel = int(s.integer("NIVE_REMPLISSAGE"));
+        msg().infof("    SOLVEUR: METHODE='{}', ALGORITHME='{}', PRE_COND='{}', RESI_RELA={:g}, NMAX_ITER={}{}",
+                    o.method, o.method == "GCPC" ? "CG" : o.algorithm, o.preconditioner, o.resiRela, o.maxIterations,
+                    o.petscOptions.empty() ? "" : ", OPTION_PETSC='" + o.petscOptions + "'");
+    }
+    if (o.method == "MUMPS") {
+        o.resiRela = s.real("RESI_RELA");
+        o.memory = s.text("GESTION_MEMOIRE");
+        if (s.has("MIXER_PRECISION")) o.mixedPrecision = s.text("MIXER_PRECISION") == "OUI";
+        if (s.has("FILTRAGE_MATRICE")) o.matrixFilter = s.real("FILTRAGE_MATRICE");
+        if (o.mixedPrecision || o.matrixFilter > 0.0 || o.resiRela > 0.0 || o.memory != "AUTO")
+            msg().infof(
+                "    SOLVEUR: MIXER_PRECISION='{}', RESI_RELA={:g}, FILTRAGE_MATRICE={:g}, GESTION_MEMOIRE='{}'",
+                o.mixedPrecision ? "OUI" : "NON", o.resiRela, o.matrixFilter, o.memory);
+    }
     // MUMPS pre/post-processing with code_aster's meaning (docs/fe.md, "Linear solvers"):
     // PRETRAITEMENTS='SANS' -> no scaling of the matrix; POSTTRAITEMENTS='SANS' -> no iterative
     // refinement, 'MINI' -> one step, 'AUTO' -> at most 4 (code_aster's ICNTL(10)=4), 'FORCE' -> at

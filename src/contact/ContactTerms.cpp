@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "contact/FacetNormal.hpp"
 #include "core/Error.hpp"
 #include "core/Vec3.hpp"
 #include "fe/ElasticityKernels.hpp"
@@ -34,24 +35,6 @@ const QuadratureRule& facetRule(int dim, const ContactIntegration& integration) 
 std::array<double, 3> facetBarycentric(int dim, const Vec3& xi) {
     if (dim == 2) return {0.5 * (1.0 - xi[0]), 0.5 * (1.0 + xi[0]), 0.0};
     return {1.0 - xi[0] - xi[1], xi[0], xi[1]};
-}
-
-// Unit gradient of the level set of the facet's interface at a point of the parent cell (nodal
-// values of the cut, physical shape-function gradients at the point), oriented like the facet's
-// geometric normal (from - to +); the geometric normal when the gradient vanishes.
-Vec3 levelSetNormal(const xfem::CellCut& cut, const ContactFacet& facet, int nodeCount,
-                    const std::vector<double>& gradN) {
-    const auto it = std::find(cut.cracks.begin(), cut.cracks.end(), facet.crack);
-    if (it == cut.cracks.end()) return facet.normal;
-    const size_t j = static_cast<size_t>(it - cut.cracks.begin());
-    Vec3 g{};
-    for (int a = 0; a < nodeCount; ++a)
-        for (int c = 0; c < 3; ++c) g[c] += cut.points[a].lsn[j] * gradN[size_t(a) * 3 + c];
-    const double len = norm(g);
-    if (!(len > 0.0)) return facet.normal;
-    const double orient = dot(g, facet.normal);
-    for (auto& v : g) v *= (orient < 0.0 ? -1.0 : 1.0) / len;
-    return g;
 }
 
 // Penalty points of the constructor by gap functional: (zone, first unknown) -> (point, sorted
@@ -120,7 +103,7 @@ const QuadratureRule* facetPointRule(const Mesh& mesh, int dim, const ContactFac
 }
 
 // Gap and normal-stress coefficients of side s (0: -, 1: +) of a contact point at facet point
-// `bary`; the - side also gives the normal nv (the level-set gradient of the facet's interface).
+// `bary`; the - side also gives the normal nv (contact/FacetNormal).
 void addSideTerms(const xfem::XfemModel& xm, const Model& model, const DofNumbering& numbering,
                   const MaterialField& material, const ContactFacet& facet, int s, const std::array<double, 3>& bary,
                   double wMinus, ElementIntegration& ei, PointGeometry& geo, Vec3& nv, ContactPoint& cp) {
@@ -143,7 +126,7 @@ void addSideTerms(const xfem::XfemModel& xm, const Model& model, const DofNumber
     ei.pointSubcell = {side.subcell};
     ei.slots.assign(n, 1);
     computePointGeometry(mesh, side.cell, dim, false, ei, geo);
-    if (s == 0) nv = levelSetNormal(*cut, facet, n, geo.gradN);
+    if (s == 0) nv = facetNormal(*cut, facet, side.subcell, n, geo.gradN);
     const Material& mat = material.at(side.cell);
     const IsotropicLaw law = IsotropicLaw::from(mat, model.modelisation, mat.name);
     for (int a = 0; a < n; ++a) {

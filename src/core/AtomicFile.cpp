@@ -10,6 +10,8 @@
 #include <mutex>
 #include <set>
 
+#include <fmt/format.h>
+
 #include "core/Error.hpp"
 
 namespace fs = std::filesystem;
@@ -71,7 +73,15 @@ std::string systemError(const std::string& what, const std::string& path, int er
 
 std::string temporaryPathFor(const std::string& finalPath) {
     static const std::string suffix = kMarker + hostName() + "." + std::to_string(::getpid());
-    return finalPath + suffix;
+    // A name near the file system's limit (255 bytes) has no room for the suffix: its head and a
+    // hash of the whole name instead (still unique, still recognised as a temporary).
+    const fs::path path(finalPath);
+    const std::string name = path.filename().string();
+    constexpr size_t kNameMax = 255;
+    if (name.size() + suffix.size() <= kNameMax) return finalPath + suffix;
+    const std::string hash = fmt::format("{:016x}", std::hash<std::string>{}(name));
+    const std::string head = name.substr(0, kNameMax - suffix.size() - hash.size() - 1);
+    return (path.parent_path() / (head + "." + hash + suffix)).string();
 }
 
 void registerTemporary(const std::string& path) {

@@ -1,6 +1,9 @@
 #include "core/Messages.hpp"
 
+#include <fcntl.h>
 #include <poll.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -14,8 +17,33 @@ Messages& Messages::instance() {
     return m;
 }
 
+bool Messages::streamIsTheLog() const {
+    struct stat st {};
+    return ::fstat(fd_, &st) == 0 && st.st_dev == dev_ && st.st_ino == ino_;
+}
+
+// The command file closed the log's descriptor (its number may now be one of its own files): the
+// log is opened again by its path, locked again (the lock may have gone with the descriptor).
+void Messages::reopenStream() {
+    const int fd = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_NOFOLLOW | O_CLOEXEC);
+    struct stat st {};
+    if (fd < 0 || ::fstat(fd, &st) != 0 || st.st_dev != dev_ || st.st_ino != ino_) {
+        if (fd >= 0) ::close(fd);
+        streamError_ = EBADF;
+        return;
+    }
+    ::flock(fd, LOCK_EX | LOCK_NB);
+    fd_ = fd;
+    const std::string note =
+        "\n <I> the descriptor of the message log was closed by the command file: the log is opened again at its end "
+        "(nothing written before is lost)\n";
+    [[maybe_unused]] const ssize_t n = ::write(fd_, note.data(), note.size());
+}
+
 void Messages::write(const std::string& text) {
-    if (fd_ < 0 || streamError_) return;
+    if (fd_ < 0 || streamError_ || ::getpid() != owner_) return;
+    if (!path_.empty() && !streamIsTheLog()) reopenStream();
+    if (streamError_) return;
     const char* data = text.data();
     size_t left = text.size();
     while (left > 0) {
@@ -30,9 +58,16 @@ void Messages::write(const std::string& text) {
     }
 }
 
-void Messages::streamTo(int fd) {
+void Messages::streamTo(int fd, const std::string& path) {
     std::lock_guard lock(mutex_);
     fd_ = fd;
+    path_ = path;
+    owner_ = ::getpid();
+    struct stat st {};
+    if (fd >= 0 && ::fstat(fd, &st) == 0) {
+        dev_ = st.st_dev;
+        ino_ = st.st_ino;
+    }
     write(mess_);
 }
 

@@ -34,7 +34,10 @@ public:
 
     // The .mess is a log: from this call on, every line is also written to `fd` at once (the text
     // logged so far first), so that `tail -f` follows the run and a killed run keeps its log.
-    void streamTo(int fd);
+    // With its `path`, a descriptor the command file closed (os.close) or that now names another
+    // file is noticed at the next line and the log opened again by its path, at its end. Only the
+    // process that called streamTo writes (a child forked by the command file writes nothing).
+    void streamTo(int fd, const std::string& path = {});
     int streamFd() const { return fd_; }
     // errno of the first write to the stream that failed (0: none).
     int streamError() const { return streamError_; }
@@ -59,11 +62,16 @@ public:
 private:
     void alarmBox(const std::string& id, const std::string& text);
     void write(const std::string& text);
+    bool streamIsTheLog() const;
+    void reopenStream();
 
     std::recursive_timed_mutex mutex_;
     bool frozen_ = false;  // freeze() holds the mutex
     int fd_ = -1;
     int streamError_ = 0;
+    std::string path_;  // of the stream, "" when it is not to be reopened
+    unsigned long dev_ = 0, ino_ = 0;
+    int owner_ = 0;  // pid of the writing process
     std::string mess_, resu_;
     int alarms_ = 0;
     std::map<std::string, int> ignored_;  // id -> times raised

@@ -12,8 +12,10 @@
 #include <functional>
 #include <new>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
+#include "core/AtomicFile.hpp"
 #include "core/Error.hpp"
 
 namespace ma::mpi {
@@ -113,6 +115,13 @@ void initialise(int* argc, char*** argv) {
         setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
         setenv("OMPI_MCA_pml", "ob1", 0);
         setenv("OMPI_MCA_btl", "self", 0);
+        // Singletons of one user otherwise share OpenMPI's default session folder
+        // (/tmp/ompi.<host>.<uid>/jf.0), which one process's MPI_Finalize removes while another's
+        // MPI_Init creates it (parallel unit tests). A folder per process, named as the run's own
+        // (src/cli/MpiConfinement, which sets it first) so that a killed process's is cleaned up.
+        const char* tmp = std::getenv("TMPDIR");
+        const std::string session = temporaryPathFor(std::string(tmp && *tmp ? tmp : "/tmp") + "/miniaster-mpi");
+        setenv("OMPI_MCA_orte_top_session_dir", session.c_str(), 0);
     }
     int provided = 0;
     if (MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS)

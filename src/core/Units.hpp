@@ -17,8 +17,11 @@ public:
     bool hasInput(int unit) const { return inputs_.count(unit) > 0; }
     // Path of the data file of `unit`; UserError when the .export does not provide it.
     std::string input(int unit) const;
-    // Path where output unit `unit` must be written.
+    // Path where output unit `unit` must be written. UserError when that is a link, a FIFO or a
+    // device already there (fort.N of the output folder: the F lines are checked before the run).
     std::string output(int unit) const;
+    const std::map<int, std::string>& inputs() const { return inputs_; }
+    const std::map<int, std::string>& outputs() const { return outputs_; }
 
 private:
     std::map<int, std::string> inputs_, outputs_;

@@ -15,6 +15,7 @@ IsotropicLaw IsotropicLaw::from(const Material& m, Modelisation modelisation, co
     if (modelisation == Modelisation::C_PLAN) {
         law.lambdaEff = E * nu / (1.0 - nu * nu);
         law.lambdaZ = 0.0;
+        law.strainZ = -nu / (1.0 - nu);
         return law;
     }
     if (nu >= 0.5)
@@ -80,6 +81,16 @@ void storeStress(const double G[3][3], const IsotropicLaw& law, int dim, double*
     } else {
         out[0] = sigma(0, 0), out[1] = sigma(1, 1), out[2] = sigma(2, 2);
         out[3] = sigma(0, 1), out[4] = sigma(0, 2), out[5] = sigma(1, 2);
+    }
+}
+
+void storeStrain(const double G[3][3], const IsotropicLaw& law, int dim, double* out) {
+    auto eps = [&](int a, int b) { return 0.5 * (G[a][b] + G[b][a]); };
+    if (dim == 2) {
+        out[0] = G[0][0], out[1] = G[1][1], out[2] = law.strainZ * (G[0][0] + G[1][1]), out[3] = eps(0, 1);
+    } else {
+        out[0] = G[0][0], out[1] = G[1][1], out[2] = G[2][2];
+        out[3] = eps(0, 1), out[4] = eps(0, 2), out[5] = eps(1, 2);
     }
 }
 

@@ -19,9 +19,10 @@
 namespace ma {
 
 // Hooke's law in the form used by the element loops: sigma = lambdaEff*tr(eps)*I + 2*mu*eps
-// in the model plane; sigma_zz from lambdaZ (D_PLAN: lambda*(eps_xx+eps_yy), C_PLAN: 0).
+// in the model plane; sigma_zz from lambdaZ (D_PLAN: lambda*(eps_xx+eps_yy), C_PLAN: 0), eps_zz
+// from strainZ (D_PLAN: 0, C_PLAN: -nu/(1-nu)*(eps_xx+eps_yy), the free contraction).
 struct IsotropicLaw {
-    double lambdaEff = 0.0, mu = 0.0, lambdaZ = 0.0;
+    double lambdaEff = 0.0, mu = 0.0, lambdaZ = 0.0, strainZ = 0.0;
     static IsotropicLaw from(const Material& m, Modelisation modelisation, const std::string& where);
 };
 
@@ -66,6 +67,8 @@ inline void stressOf(const double G[3][3], const IsotropicLaw& law, int dim, dou
 
 // SIEF_ELGA components of a point (SIXX SIYY SIZZ SIXY [SIXZ SIYZ]) from its displacement gradient.
 void storeStress(const double G[3][3], const IsotropicLaw& law, int dim, double* out);
+// EPSI_ELGA components of a point (EPXX EPYY EPZZ EPXY [EPXZ EPYZ]).
+void storeStrain(const double G[3][3], const IsotropicLaw& law, int dim, double* out);
 
 // Stiffness of any element described by an ElementIntegration (X-FEM sub-cells, psi), nd x nd.
 void generalStiffness(const ElementIntegration& ei, const PointGeometry& geo, const IsotropicLaw& law, int dim, int nd,

@@ -37,6 +37,7 @@ MechanicalProblem::MechanicalProblem(std::shared_ptr<const Model> model, std::sh
     if (const std::string cause = degenerateMaterialCause(space_->material()); !cause.empty())
         solverOptions_.singularHint = cause + "; or else " + solverOptions_.singularHint;
     distributeCells();
+    solverOptions_.nearNullSpace = [this] { return rigidBodyModes(*space_, *constraints_, matrix_.rows); };
     solver_ = makeLinearSolver(solverOptions_);
     int nodesWithUnknowns = 0;
     for (int node = 0; node < numbering.nodeCount(); ++node) nodesWithUnknowns += numbering.hasNode(node);

@@ -13,13 +13,22 @@ std::shared_ptr<NodalField> displacementField(const Discretisation& space, const
 
 namespace {
 
-// An empty SIEF_ELGA field with the point offsets of every element; the points still to fill.
-std::shared_ptr<GaussField> emptyStressField(const Discretisation& space) {
+// The components of a symmetric tensor field: XX YY ZZ XY (2D), + XZ YZ (3D), after `prefix`.
+std::vector<std::string> tensorComponents(const std::string& prefix, int dim) {
+    std::vector<std::string> out;
+    for (const char* c : {"XX", "YY", "ZZ", "XY", "XZ", "YZ"})
+        if (out.size() < (dim == 2 ? 4u : 6u)) out.push_back(prefix + c);
+    return out;
+}
+
+// An empty field at the integration points with the point offsets of every element; the points
+// still to fill.
+std::shared_ptr<GaussField> emptyPointField(const Discretisation& space, const std::string& quantity,
+                                            const std::string& prefix) {
     auto field = std::make_shared<GaussField>();
     field->mesh = space.model().mesh;
-    field->quantity = "SIEF_R";
-    field->components = space.dim() == 2 ? std::vector<std::string>{"SIXX", "SIYY", "SIZZ", "SIXY"}
-                                         : std::vector<std::string>{"SIXX", "SIYY", "SIZZ", "SIXY", "SIXZ", "SIYZ"};
+    field->quantity = quantity;
+    field->components = tensorComponents(prefix, space.dim());
     const size_t nElements = space.elementCount();
     field->cells.resize(nElements);
     field->pointOffsets.assign(nElements + 1, 0);
@@ -36,10 +45,12 @@ std::shared_ptr<GaussField> emptyStressField(const Discretisation& space) {
     return field;
 }
 
-}  // namespace
+using PointStore = void (*)(const double G[3][3], const IsotropicLaw& law, int dim, double* out);
 
-std::shared_ptr<GaussField> stressField(const Discretisation& space, const std::vector<double>& u) {
-    auto field = emptyStressField(space);
+// A tensor at every integration point (X-FEM sub-cell points included) from the displacement
+// gradient there.
+std::shared_ptr<GaussField> pointField(const Discretisation& space, const std::vector<double>& u,
+                                       std::shared_ptr<GaussField> field, PointStore tensorAt) {
     const int dim = space.dim();
     const size_t nc = field->components.size();
     const size_t nElements = space.elementCount();
@@ -58,7 +69,7 @@ std::shared_ptr<GaussField> stressField(const Discretisation& space, const std::
                 field->pointWeights[first + p] = weight;
                 field->pointSubcell[first + p] = subcell;
                 field->pointRefCoords[first + p] = ref;
-                storeStress(G, law, dim, field->values.data() + (first + p) * nc);
+                tensorAt(G, law, dim, field->values.data() + (first + p) * nc);
             };
             space.visit(
                 e, scratch,
@@ -86,6 +97,16 @@ std::shared_ptr<GaussField> stressField(const Discretisation& space, const std::
         }
     });
     return field;
+}
+
+}  // namespace
+
+std::shared_ptr<GaussField> stressField(const Discretisation& space, const std::vector<double>& u) {
+    return pointField(space, u, emptyPointField(space, "SIEF_R", "SI"), storeStress);
+}
+
+std::shared_ptr<GaussField> strainField(const Discretisation& space, const std::vector<double>& u) {
+    return pointField(space, u, emptyPointField(space, "EPSI_R", "EP"), storeStrain);
 }
 
 }  // namespace ma

@@ -12,6 +12,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "solver/SparseMatrix.hpp"
 
@@ -26,7 +27,7 @@ enum class MatrixKind {
 };
 
 struct SolverOptions {
-    std::string method = "MUMPS";  // MUMPS | MULT_FRONT | LDLT
+    std::string method = "MUMPS";  // MUMPS | MULT_FRONT | LDLT | PETSC | GCPC
     // MUMPS ordering: AUTO (coordinate nested dissection when every row has a point, else METIS)
     // METIS AMD AMF QAMD PORD SCOTCH
     std::string renum = "AUTO";
@@ -35,6 +36,27 @@ struct SolverOptions {
     std::string typeResol = "AUTO";  // MUMPS TYPE_RESOL: SYMDEF forces SYM=1 on SPD systems
     // MUMPS ACCELERATION: AUTO and FR* full rank; LR* refused (MumpsSolver.cpp says why).
     std::string acceleration = "AUTO";
+    // MUMPS MIXER_PRECISION='OUI': single-precision factors (smumps) refined against the double
+    // matrix until the answer meets RESI_RELA (or, without it, double-precision round-off).
+    bool mixedPrecision = false;
+    // RESI_RELA: a solve whose relative residual ||Ax-b||/||b|| stays above it is an error naming
+    // the solver; <= 0: no check (the alarm FACTOR_57 above 1e-6 only).
+    double resiRela = -1.0;
+    // MUMPS FILTRAGE_MATRICE: off-diagonal entries with |a_ij| < f (|a_ii| + |a_jj|) are left out of
+    // the factorised matrix (the refinement works against the whole one); <= 0: none.
+    double matrixFilter = -1.0;
+    // MUMPS GESTION_MEMOIRE: IN_CORE, OUT_OF_CORE (factors on disk under TMPDIR), AUTO (in core
+    // unless the analysis' estimate exceeds the available memory), EVAL (estimates, then stop).
+    std::string memory = "AUTO";
+    // PETSC / GCPC (docs/solver.md): ALGORITHME, PRE_COND, NMAX_ITER (0: PETSc's default, 10000),
+    // REAC_PRECOND (LDLT_SP/LDLT_DP factors kept for the next matrices while a solve needs at most that
+    // many iterations), OPTION_PETSC, NIVE_REMPLISSAGE (LDLT_INC). RESI_RELA is the Krylov tolerance.
+    std::string algorithm = "FGMRES";
+    std::string preconditioner = "LDLT_SP";
+    int maxIterations = 0;
+    int reacPrecond = 30;
+    std::string petscOptions;
+    int fillLevel = 0;
     bool conditionEstimate = false;  // MUMPS ICNTL(11)=1: condition numbers (costs a few solves)
     bool diagonalScaling = true;     // factorise D^-1/2 A D^-1/2 (code_aster: PRETRAITEMENTS)
     int maxRefinementSteps = 3;      // iterative refinement while it helps; 0 = none (POSTTRAITEMENTS)
@@ -48,6 +70,9 @@ struct SolverOptions {
     // Distributed: the pattern of the whole matrix (each process holds only its cells' part), for
     // the fill-reducing ordering on rank 0; built when asked and freed after the analysis.
     std::function<CsrMatrix()> wholePattern;
+    // The near null space of the matrix (rigid body modes, mode after mode, `rows` values each; empty
+    // when unknown), asked by the multigrid preconditioners GAMG and ML (docs/solver.md).
+    std::function<std::vector<double>()> nearNullSpace;
     // Appended to the "singular system" message: what the caller knows about likely causes.
     std::string singularHint = "a missing boundary condition (rigid body motion) or an unattached enriched dof";
 };

@@ -10,6 +10,10 @@ namespace ma {
 
 std::unique_ptr<LinearSolver> makeMumpsSolver(const SolverOptions& options);
 std::unique_ptr<LinearSolver> makeEigenSolver(const SolverOptions& options);
+std::unique_ptr<LinearSolver> makePetscSolver(const SolverOptions& options);
+class ScaledDirectSolver;
+// MUMPS as the factors of a preconditioner (PRE_COND='LDLT_SP'/'LDLT_DP': options.mixedPrecision).
+std::unique_ptr<ScaledDirectSolver> makeMumpsFactors(const SolverOptions& options);
 
 // NaN/Inf in the solution -> NumericalError; a large residual -> alarm (the caller decides what
 // the residual means for convergence).
@@ -63,6 +67,9 @@ public:
     explicit ScaledDirectSolver(const SolverOptions& options) : options_(options) {}
     void factorize(const CsrMatrix& A, MatrixKind kind, std::span<const RowPoint> rowPoints = {}) final;
     double solve(std::span<double> rhs) final;
+    // v <- S (S A S)^-1 S v with the factors alone: no refinement, no residual, no log (a
+    // preconditioner's application).
+    void applyFactors(std::span<double> v);
 
 protected:
     // Factorise S A S (entries a_ij s_i s_j), S given by `scale` (all ones when scaling is off).
@@ -73,7 +80,15 @@ protected:
 
     SolverOptions options_;
 
+    // MIXER_PRECISION: at most this many refinement steps, and without RESI_RELA the componentwise
+    // backward error they must reach (a double-precision factorisation ends at ~1e-16).
+    static constexpr int kMixedMaxSteps = 30;
+    static constexpr double kMixedBackwardError = 1e-12;
+
 private:
+    // RESI_RELA, and the convergence of a mixed-precision refinement: a NumericalError naming the
+    // solver, never a silent inaccurate answer.
+    void checkAccuracy(const ResidualInfo& res, int steps) const;
     ResidualInfo residual(std::span<const double> x, std::span<const double> b, std::vector<double>& r) const;
 
     const CsrMatrix* A_ = nullptr;

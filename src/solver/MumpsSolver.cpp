@@ -1,15 +1,20 @@
-// MUMPS (Debian's parallel libdmumps_ptscotch on OpenMPI). Only src/solver sees dmumps_c.h; the
-// communicator and the distributed input of a run on several processes are in
-// solver/MumpsDistributed (docs/mpi.md).
+// MUMPS (Debian's parallel libdmumps_ptscotch on OpenMPI; libsmumps_ptscotch for the single-precision
+// factors of MIXER_PRECISION='OUI'). Only src/solver sees the MUMPS headers; the communicator and the
+// distributed input of a run on several processes are in solver/MumpsDistributed (docs/mpi.md).
 #include <dmumps_c.h>
 #include <fmt/format.h>
 #include <malloc.h>
+#include <smumps_c.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <memory>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 #include "core/Error.hpp"
@@ -26,6 +31,20 @@
 namespace ma {
 
 namespace {
+
+// The two arithmetics: double (the default) and single (MIXER_PRECISION='OUI': half the factors'
+// memory and about twice the factorisation's speed, refined against the double matrix by
+// ScaledDirectSolver).
+struct DoubleArithmetic {
+    using Struc = DMUMPS_STRUC_C;
+    using Real = double;
+    static void call(Struc& id) { dmumps_c(&id); }
+};
+struct SingleArithmetic {
+    using Struc = SMUMPS_STRUC_C;
+    using Real = float;
+    static void call(Struc& id) { smumps_c(&id); }
+};
 
 constexpr int kJobInit = -1, kJobEnd = -2, kJobAnalyse = 1, kJobFactorise = 2, kJobSolve = 3;
 constexpr int kUserOrdering = 1;  // ICNTL(7)=1: PERM_IN
@@ -86,23 +105,47 @@ std::string mumpsErrorText(int code, int detail) {
     }
 }
 
+// MemAvailable of /proc/meminfo in MB (0 when unreadable).
+double availableMemoryMb() {
+    std::ifstream in("/proc/meminfo");
+    std::string key;
+    double kb = 0.0;
+    std::string unit;
+    while (in >> key >> kb >> unit)
+        if (key == "MemAvailable:") return kb / 1024.0;
+    return 0.0;
+}
+
+// Where MUMPS writes its factors out of core: $TMPDIR, else /tmp.
+std::string outOfCoreDirectory() {
+    const char* dir = std::getenv("TMPDIR");
+    return dir && *dir ? dir : "/tmp";
+}
+
+template <class Arithmetic>
 class MumpsSolver : public ScaledDirectSolver {
+    using Struc = typename Arithmetic::Struc;
+    using Real = typename Arithmetic::Real;
+    static constexpr bool kSingle = std::is_same_v<Real, float>;
+
 public:
     explicit MumpsSolver(const SolverOptions& options) : ScaledDirectSolver(options) {}
     ~MumpsSolver() override { release(); }
 
-    std::string name() const override { return "MUMPS"; }
+    std::string name() const override { return kSingle ? "MUMPS (single-precision factors)" : "MUMPS"; }
 
 protected:
     void factorizeScaled(const CsrMatrix& A, std::span<const double> s, MatrixKind kind,
                          std::span<const RowPoint> rowPoints) override {
         release();
+        outOfCoreDir_.clear();
         const auto t0 = std::chrono::steady_clock::now();
         MemoryPhase phase;
         residentBeforeMb_ = phase.startMb();
         upperTriangle(A, s);
         initialise(kind);
         analyse(A, rowPoints);
+        chooseMemoryMode();
         const double analysisPeak = phase.peakMb();
         // The ordering's graphs and METIS's work arrays were freed in the heap: give those pages
         // back before MUMPS allocates its factors, or they stay resident beside them.
@@ -110,7 +153,7 @@ protected:
         MemoryPhase factorisation;
         factorise();
         logFactorisation(A, kind, secondsSince(t0), analysisPeak, factorisation);
-        mumps::logProcesses(options_, id_, std::max(analysisPeak, factorisation.peakMb()));
+        mumps::logProcesses(options_, id_.infog[20], id_.infog[21], std::max(analysisPeak, factorisation.peakMb()));
         // The factors are all the solve needs, unless MUMPS's error analysis (ICNTL(11)) reads A.
         if (!options_.conditionEstimate) {
             triplets_ = {};
@@ -119,26 +162,33 @@ protected:
     }
 
     void solveScaled(std::span<double> rhs) override {
-        id_.rhs = rhs.data();
+        if constexpr (kSingle) {
+            rhsReal_.resize(rhs.size());  // rounded to single: the refinement corrects it
+            for (size_t i = 0; i < rhs.size(); ++i) rhsReal_[i] = static_cast<Real>(rhs[i]);
+            id_.rhs = rhsReal_.data();
+        } else {
+            id_.rhs = rhs.data();
+        }
         id_.nrhs = 1;
         id_.lrhs = id_.n;
         id_.icntl[10] = options_.conditionEstimate && !conditionLogged_ ? 1 : 0;
         id_.job = kJobSolve;
-        dmumps_c(&id_);
+        Arithmetic::call(id_);
         if (id_.infog[0] < 0) throw NumericalError(mumpsErrorText(id_.infog[0], id_.infog[1]));
+        if constexpr (kSingle) std::copy(rhsReal_.begin(), rhsReal_.end(), rhs.begin());
         mumps::shareSolution(options_, rhs);
         // Estimates are for the matrix MUMPS factorised: the diagonal-scaled one when scaling is on.
         if (options_.conditionEstimate && !conditionLogged_)
             msg().infof(
                 "    MUMPS condition number estimates ({} matrix): cond1 = {:.3e}, cond2 = {:.3e}, backward errors "
                 "{:.2e} {:.2e}",
-                options_.diagonalScaling ? "scaled" : "unscaled", id_.rinfog[9], id_.rinfog[10], id_.rinfog[6],
-                id_.rinfog[7]);
+                options_.diagonalScaling ? "scaled" : "unscaled", double(id_.rinfog[9]), double(id_.rinfog[10]),
+                double(id_.rinfog[6]), double(id_.rinfog[7]));
         conditionLogged_ = conditionLogged_ || options_.conditionEstimate;
     }
 
 private:
-    // Upper triangle of S A S, 1-based coordinates.
+    // Upper triangle of S A S, 1-based coordinates, without the entries FILTRAGE_MATRICE leaves out.
     // Each row's entries from its diagonal on (columns are sorted), written at offsets counted
     // first, on the solver's threads: 0.9 s on one thread at 2e6 rows, most of it the first
     // touch of 0.3 GB of fresh pages.
@@ -148,7 +198,14 @@ private:
             return std::lower_bound(A.cols.begin() + A.rowStart[i], A.cols.begin() + A.rowStart[i + 1], i) -
                    A.cols.begin();
         };
-        auto passes = [&](int i, long long k) { return mumps::passes(options_, i, A.cols[k], A.values[k]); };
+        const std::vector<double> kept = filterDiagonal(A);
+        const double f = options_.matrixFilter;
+        auto passes = [&](int i, long long k) {
+            const int j = A.cols[k];
+            if (!kept.empty() && i != j && std::abs(A.values[k]) < f * (kept[size_t(i)] + kept[size_t(j)]))
+                return false;
+            return mumps::passes(options_, i, j, A.values[k]);
+        };
         std::vector<long long> offset(size_t(A.rows) + 1, 0);
         inRowRanges(A.rows, [&](int begin, int end) {
             for (int i = begin; i < end; ++i)
@@ -157,15 +214,37 @@ private:
         for (int i = 0; i < A.rows; ++i) offset[i + 1] += offset[i];
         triplets_.size = size_t(offset.back());
         triplets_.irn.reset(new MUMPS_INT[triplets_.size]), triplets_.jcn.reset(new MUMPS_INT[triplets_.size]);
-        triplets_.a.reset(new double[triplets_.size]);
+        triplets_.a.reset(new Real[triplets_.size]);
         inRowRanges(A.rows, [&](int begin, int end) {
             for (int i = begin; i < end; ++i)
                 for (long long k = diagonal(i), at = offset[i]; k < A.rowStart[i + 1]; ++k)
                     if (passes(i, k)) {
                         triplets_.irn[at] = i + 1, triplets_.jcn[at] = A.cols[k] + 1;
-                        triplets_.a[at++] = s[i] * A.values[k] * s[A.cols[k]];
+                        triplets_.a[at++] = static_cast<Real>(s[i] * A.values[k] * s[A.cols[k]]);
                     }
         });
+        if (!kept.empty()) {
+            long long upper = 0;
+            for (int i = 0; i < A.rows; ++i) upper += A.rowStart[i + 1] - diagonal(i);
+            msg().infof(
+                "    FILTRAGE_MATRICE={:g}: {} of the {} entries of the upper triangle factorised (|K_ij| < {:g} "
+                "(|K_ii| + |K_jj|) left out; the refinement works against the whole matrix)",
+                f, triplets_.size, upper, f);
+        }
+    }
+
+    // |K_ii| of the assembled matrix (summed over the processes when distributed) when
+    // FILTRAGE_MATRICE is on, else empty.
+    std::vector<double> filterDiagonal(const CsrMatrix& A) const {
+        if (!(options_.matrixFilter > 0.0)) return {};
+        std::vector<double> d = options_.distributed ? summedDiagonal(A) : std::vector<double>(size_t(A.rows), 0.0);
+        if (!options_.distributed)
+            for (int i = 0; i < A.rows; ++i) {
+                const long long k = A.find(i, i);
+                d[size_t(i)] = k >= 0 ? A.values[size_t(k)] : 0.0;
+            }
+        for (double& v : d) v = std::abs(v);
+        return d;
     }
 
     // fn(begin, end) over `rows` split in options_.threads equal ranges, one per thread.
@@ -180,7 +259,7 @@ private:
     }
 
     void initialise(MatrixKind kind) {
-        id_ = DMUMPS_STRUC_C{};
+        id_ = Struc{};
         conditionLogged_ = false;
         id_.job = kJobInit;
         id_.par = 1;
@@ -190,7 +269,7 @@ private:
         const bool spd = kind == MatrixKind::SymmetricPositiveDefinite;
         id_.sym = spd && (options_.nprec < 0 || options_.typeResol == "SYMDEF") ? 1 : 2;
         id_.comm_fortran = mumps::communicator(options_);
-        dmumps_c(&id_);
+        Arithmetic::call(id_);
         initialised_ = true;
         if (id_.infog[0] < 0) throw NumericalError(mumpsErrorText(id_.infog[0], id_.infog[1]));
         // Silence MUMPS's own printing; we log what matters.
@@ -202,9 +281,11 @@ private:
         id_.icntl[13] = options_.pcentPivot;
         mumps::setInputFormat(id_, options_);
         refuseLowRank(options_);
+        if (options_.acceleration == "FR+" || options_.acceleration == "FR++")
+            msg().alarm(FACTOR_48, options_.acceleration);
         if (options_.nprec >= 0) {  // null pivot detection (code_aster's NPREC)
             id_.icntl[23] = 1;
-            id_.cntl[2] = std::pow(10.0, -options_.nprec);
+            id_.cntl[2] = static_cast<Real>(std::pow(10.0, -options_.nprec));
         }
     }
 
@@ -215,10 +296,12 @@ private:
         const bool havePoints = rowPoints.size() == size_t(A.rows) && A.rows > 0;
         id_.icntl[6] = orderingCode(options_.renum, havePoints, ordering_);
         orderingNote_.clear();
-        // On the host (rank 0) only, on the whole matrix's pattern (docs/mpi.md).
+        // On the host (rank 0) only, on the whole matrix's pattern (docs/mpi.md), when distributed.
         if (id_.icntl[6] == kUserOrdering)
             mpi::collectively([&] {
-                if (!mpi::isRoot()) return;
+                // A MUMPS of one process (MPI_COMM_SELF: PETSc's LDLT_SP factors on each of several
+                // processes) is its own host: every process orders its own matrix.
+                if (options_.distributed && !mpi::isRoot()) return;
                 const CsrMatrix whole = options_.wholePattern ? options_.wholePattern() : CsrMatrix{};
                 const CsrMatrix& graph = options_.wholePattern ? whole : A;
                 const bool byPoints = ordering_ == "COORDINATES";
@@ -237,12 +320,12 @@ private:
         mumps::setEntries(id_, options_, nnz, triplets_.irn.get(), triplets_.jcn.get(), triplets_.a.get());
         entries_ = mumps::totalEntries(options_, nnz);
         id_.job = kJobAnalyse;
-        dmumps_c(&id_);
+        Arithmetic::call(id_);
         std::vector<MUMPS_INT>().swap(permIn_);
         id_.perm_in = nullptr;
         if (id_.infog[0] < 0) throw NumericalError(mumpsErrorText(id_.infog[0], id_.infog[1]));
         analysisSeconds_ = secondsSince(t0);
-        predictedFlops_ = id_.rinfog[0];
+        predictedFlops_ = double(id_.rinfog[0]);
     }
 
     // JOB=2; on a workspace error the analysis is kept and only JOB=2 reruns with a larger
@@ -252,7 +335,7 @@ private:
         const auto t0 = std::chrono::steady_clock::now();
         for (int attempt = 0;; ++attempt) {
             id_.job = kJobFactorise;
-            dmumps_c(&id_);
+            Arithmetic::call(id_);
             const int code = id_.infog[0];
             if (isWorkspaceError(code) && attempt < 4) {
                 const int before = id_.icntl[13];
@@ -270,8 +353,9 @@ private:
                 continue;
             }
             if (code == -10 || code == -6)
-                throw SingularSystemError(fmt::format("singular system: {}. Likely cause: {}.",
-                                                      mumpsErrorText(code, id_.infog[1]), options_.singularHint));
+                throw SingularSystemError(fmt::format("singular system: {}{}. Likely cause: {}.",
+                                                      mumpsErrorText(code, id_.infog[1]), singleNote(),
+                                                      options_.singularHint));
             if (code < 0) throw NumericalError(mumpsErrorText(code, id_.infog[1]));
             break;
         }
@@ -280,8 +364,50 @@ private:
             throw SingularSystemError(
                 fmt::format("singular system: MUMPS found {} null pivot(s) (pivot below 1e-{} of the norm of the "
                             "diagonal-scaled matrix, "
-                            "SOLVEUR/NPREC={}). Likely cause: {}.",
-                            id_.infog[27], options_.nprec, options_.nprec, options_.singularHint));
+                            "SOLVEUR/NPREC={}){}. Likely cause: {}.",
+                            id_.infog[27], options_.nprec, options_.nprec, singleNote(), options_.singularHint));
+    }
+
+    std::string singleNote() const {
+        return kSingle ? " in the single-precision factorisation of MIXER_PRECISION='OUI' (with 'NON' the double "
+                         "factorisation may not be singular)"
+                       : "";
+    }
+
+    // GESTION_MEMOIRE after the analysis: IN_CORE, OUT_OF_CORE (ICNTL(22)=1, the factors in files
+    // under $TMPDIR), AUTO (in core unless MUMPS's in-core estimate INFOG(17) exceeds the memory
+    // available now), EVAL (the estimates, then the command stops, as in code_aster).
+    void chooseMemoryMode() {
+        const std::string& mode = options_.memory;
+        const double available = availableMemoryMb();
+        const double inCore = id_.infog[16], outOfCore = id_.infog[26];
+        bool ooc = mode == "OUT_OF_CORE";
+        if (mode == "AUTO" && available > 0.0 && inCore > available) {
+            ooc = true;
+            msg().infof(
+                "    GESTION_MEMOIRE='AUTO': MUMPS's in-core estimate {:.0f} MB exceeds the {:.0f} MB available: "
+                "the factors go out of core",
+                inCore, available);
+        }
+        if (mode == "EVAL" || ooc || mode == "IN_CORE")
+            msg().infof(
+                "    GESTION_MEMOIRE='{}': MUMPS estimates {:.0f} MB in core (INFOG(17)), {:.0f} MB out of core "
+                "(INFOG(27)); {:.0f} MB available",
+                mode, inCore, outOfCore, available);
+        if (mode == "EVAL")
+            throw UserError(fmt::format(
+                "SOLVEUR/GESTION_MEMOIRE='EVAL': the memory estimates of MUMPS for this system of {} unknowns are in "
+                "the .mess ({:.0f} MB in core, {:.0f} MB out of core); the command stops after them without "
+                "factorising, as in code_aster (choose IN_CORE, OUT_OF_CORE or AUTO to compute)",
+                id_.n, inCore, outOfCore));
+        id_.icntl[21] = ooc ? 1 : 0;
+        if (ooc) {
+            const std::string dir = outOfCoreDirectory();
+            const std::string prefix = fmt::format("miniaster_{}_", mpi::rank());
+            std::snprintf(id_.ooc_tmpdir, sizeof id_.ooc_tmpdir, "%s", dir.c_str());
+            std::snprintf(id_.ooc_prefix, sizeof id_.ooc_prefix, "%s", prefix.c_str());
+            outOfCoreDir_ = dir;
+        }
     }
 
     void logFactorisation(const CsrMatrix& A, MatrixKind kind, double total, double analysisPeakMb,
@@ -304,9 +430,11 @@ private:
         msg().infof(
             "    MUMPS factorisation {:.3f} s: {:.3e} flops (RINFOG(3), {:.1f} GFLOP/s), factor entries = {}, "
             "peak memory {} MB (INFOG(22)); analysis + factorisation {:.3f} s",
-            factorisationSeconds_, id_.rinfog[2],
-            factorisationSeconds_ > 0 ? id_.rinfog[2] / factorisationSeconds_ / 1e9 : 0.0,
+            factorisationSeconds_, double(id_.rinfog[2]),
+            factorisationSeconds_ > 0 ? double(id_.rinfog[2]) / factorisationSeconds_ / 1e9 : 0.0,
             static_cast<long long>(mumpsCount(id_.infog[28])), id_.infog[21], total);
+        if (!outOfCoreDir_.empty())
+            msg().infof("    MUMPS out of core (ICNTL(22)=1): factors written under {}", outOfCoreDir_);
         msg().infof(
             "    memory (resident, process): {:.0f} MB before the analysis, peak {:.0f} MB in the analysis, "
             "{:.0f} MB in the factorisation",
@@ -320,11 +448,13 @@ private:
     void release() {
         if (!initialised_ || !mpi::running()) return;  // (MPI already ended at exit: nothing to free)
         id_.job = kJobEnd;
-        dmumps_c(&id_);
+        Arithmetic::call(id_);
         initialised_ = false;
     }
 
-    DMUMPS_STRUC_C id_{};
+    Struc id_{};
+    std::vector<Real> rhsReal_;  // single precision: the right-hand side MUMPS solves in place
+    std::string outOfCoreDir_;
     bool conditionLogged_ = false;  // once per factorisation (refinement steps solve again)
     bool initialised_ = false;
     std::string ordering_, orderingNote_;
@@ -335,15 +465,21 @@ private:
     // written once by upperTriangle).
     struct Triplets {
         std::unique_ptr<MUMPS_INT[]> irn, jcn;
-        std::unique_ptr<double[]> a;
+        std::unique_ptr<Real[]> a;
         size_t size = 0;
     } triplets_;
 };
 
 }  // namespace
 
+std::unique_ptr<ScaledDirectSolver> makeMumpsFactors(const SolverOptions& options) {
+    if (options.mixedPrecision) return std::make_unique<MumpsSolver<SingleArithmetic>>(options);
+    return std::make_unique<MumpsSolver<DoubleArithmetic>>(options);
+}
+
 std::unique_ptr<LinearSolver> makeMumpsSolver(const SolverOptions& options) {
-    return std::make_unique<MumpsSolver>(options);
+    if (options.mixedPrecision) return std::make_unique<MumpsSolver<SingleArithmetic>>(options);
+    return std::make_unique<MumpsSolver<DoubleArithmetic>>(options);
 }
 
 }  // namespace ma

@@ -1,5 +1,7 @@
 #pragma once
 // The linear solvers' alarms (docs/messages.md).
+#include <string>
+
 #include "core/Message.hpp"
 
 namespace ma {
@@ -14,6 +16,13 @@ inline constexpr Message<int> FACTOR_10{
     "MUMPS found {} negative pivot(s) in a stiffness matrix that should be positive definite (inverted or "
     "degenerate elements?)"};
 
-inline constexpr MessageText solverMessages[] = {entry(FACTOR_57), entry(FACTOR_10)};
+// SOLVEUR/ACCELERATION='FR+' or 'FR++' on the public MUMPS.
+inline constexpr Message<std::string> FACTOR_48{
+    "FACTOR_48",
+    "SOLVEUR/ACCELERATION='{}' asks for the aggressive full-rank optimisations of the consortium version of "
+    "MUMPS; the public MUMPS 5.5.1 of this system has none: the factorisation is the plain full-rank one "
+    "(ACCELERATION='FR')"};
+
+inline constexpr MessageText solverMessages[] = {entry(FACTOR_57), entry(FACTOR_10), entry(FACTOR_48)};
 
 }  // namespace ma

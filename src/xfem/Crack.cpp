@@ -21,15 +21,17 @@ constexpr double kMachineEpsilon = DBL_EPSILON;  // code_aster's r8prem
 constexpr double kSnapTolerance = 1e-6;          // xajuls
 
 // Nodal average of the level-set gradient computed at the nodes of every volume cell (§1.3), for
-// the nodes of the cut cells (the only ones the contact normals use); 0 elsewhere.
+// the nodes of the cut cells (the only ones the contact normals use; 0 elsewhere), or of all
+// cells when cutCells is null.
 std::vector<std::array<double, 3>> nodalGradient(const Mesh& mesh, const std::vector<double>& lsn,
-                                                 const std::vector<int>& cutCells) {
+                                                 const std::vector<int>* cutCells) {
     const int dim = mesh.maxCellDimension();
     std::vector<std::array<double, 3>> grad(mesh.nodeCount(), {0, 0, 0});
     std::vector<int> count(mesh.nodeCount(), 0);
-    std::vector<char> wanted(mesh.nodeCount(), 0);
-    for (int c : cutCells)
-        for (int n : mesh.cellNodes(c)) wanted[n] = 1;
+    std::vector<char> wanted(mesh.nodeCount(), cutCells ? 0 : 1);
+    if (cutCells)
+        for (int c : *cutCells)
+            for (int n : mesh.cellNodes(c)) wanted[n] = 1;
     std::array<double, 24> dN{};
     for (int c = 0; c < mesh.cellCount(); ++c) {
         const CellType type = mesh.cellTypes[c];
@@ -128,7 +130,15 @@ std::vector<JunctionMaster> junctionMasters(const Mesh& mesh, const JunctionInpu
 
 }  // namespace
 
-int Crack::enrichedNodeCount() const { return static_cast<int>(std::count(nodeStatus.begin(), nodeStatus.end(), 1)); }
+int Crack::enrichedNodeCount() const { return nodeCountWithStatus(1); }
+
+int Crack::nodeCountWithStatus(int status) const {
+    return static_cast<int>(std::count(nodeStatus.begin(), nodeStatus.end(), status));
+}
+
+std::vector<std::array<double, 3>> nodalLevelSetGradient(const Mesh& mesh, const std::vector<double>& values) {
+    return nodalGradient(mesh, values, nullptr);
+}
 
 bool Crack::hasMaster(const Crack* crack) const {
     return std::any_of(masters.begin(), masters.end(), [&](const JunctionMaster& m) { return m.crack.get() == crack; });
@@ -174,6 +184,13 @@ std::vector<int> cutCellsOf(const Mesh& mesh, const std::vector<double>& ls, con
     return cells;
 }
 
+std::string noCutCellText(const Mesh& mesh, const char* what) {
+    return fmt::format(
+        "DEFI_FISS: the {} (LSN = 0) does not cut any cell of the mesh {}: it lies outside the structure or on "
+        "its boundary; code_aster stops with XFEM_57",
+        what, mesh.name);
+}
+
 // Heaviside cells (§1.6): every cell but POI1 with an enriched node.
 std::vector<int> heavisideCellsOf(const Mesh& mesh, const std::vector<unsigned char>& nodeStatus) {
     std::vector<int> cells;
@@ -199,15 +216,14 @@ std::shared_ptr<Crack> buildCrack(const std::shared_ptr<const Mesh>& meshPtr, st
         if (!std::isfinite(v)) throw NumericalError("FONC_LN gives a non-finite value at a node");
     crack->adjustedLevelSets = snapLevelSet(mesh, lsn);
     crack->lsn = std::move(lsn);
+    crack->lst.assign(crack->lsn.size(), -1.0);
     const auto& ls = crack->lsn;
     if (junction && !junction->masters.empty()) crack->masters = junctionMasters(mesh, *junction);
 
     crack->cutCells = cutCellsOf(mesh, ls, zone);
     if (crack->cutCells.empty())
-        throw UserError("DEFI_FISS/FONC_LN: the interface does not cut any cell of the mesh " + mesh.name +
-                        (zone ? " in GROUP_MA_ENRI" : "") +
-                        " (it lies outside the structure); code_aster stops with XFEM_57");
-    crack->lsnGradient = nodalGradient(mesh, ls, crack->cutCells);
+        throw UserError(noCutCellText(mesh, zone ? "interface (in GROUP_MA_ENRI)" : "interface"));
+    crack->lsnGradient = nodalGradient(mesh, ls, &crack->cutCells);
 
     // Node status (§1.5): min * max of LSN over the vertices of the cut cells around the node < 0.
     const int nn = mesh.nodeCount();
@@ -254,6 +270,91 @@ std::shared_ptr<Crack> buildCrack(const std::shared_ptr<const Mesh>& meshPtr, st
     }
 
     crack->heavisideCells = heavisideCellsOf(mesh, crack->nodeStatus);
+    return crack;
+}
+
+namespace {
+
+// Node status of a crack (code_aster's xstano, linear cells, no junction): over the cut cells
+// around the node, LSN's extremes at their vertices and LST's at the points of their edges where
+// LSN = 0. Heaviside (1) when LSN changes sign there and that part of the surface is behind the
+// front (LST <= 0); crack tip (2) when the front crosses the support (LST changes sign on
+// LSN = 0); both (3). code_aster marks tip-only nodes -2 until NB_COUCHES is applied: 2 here.
+std::vector<unsigned char> crackNodeStatus(const Mesh& mesh, const std::vector<double>& lsn,
+                                           const std::vector<double>& lst, const std::vector<int>& cutCells) {
+    const size_t nn = lsn.size();
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    std::vector<double> nLo(nn, inf), nHi(nn, -inf), tLo(nn, inf), tHi(nn, -inf);
+    for (int c : cutCells) {
+        const CellType type = mesh.cellTypes[size_t(c)];
+        if (!xfemSupports(type))  // a status left at 0 there would pass for a front outside the mesh
+            throw NotImplemented(fmt::format(
+                "DEFI_FISS_XFEM: the crack cuts cell {} ({}): the node status and the front of a crack are found "
+                "on SEG2, TRIA3, QUAD4, TETRA4 and HEXA8 cells only",
+                mesh.cellNames[size_t(c)], cellTypeName(type)));
+        const auto nodes = mesh.cellNodes(c);
+        double cnLo = inf, cnHi = -inf, ctLo = inf, ctHi = -inf;
+        auto zeroAt = [&](double v) { ctLo = std::min(ctLo, v), ctHi = std::max(ctHi, v); };
+        for (int n : nodes) cnLo = std::min(cnLo, lsn[size_t(n)]), cnHi = std::max(cnHi, lsn[size_t(n)]);
+        for (const auto& e : cellEdges(type)) {
+            const size_t a = size_t(nodes[size_t(e[0])]), b = size_t(nodes[size_t(e[1])]);
+            if (lsn[a] == 0.0 && lsn[b] == 0.0) {
+                zeroAt(lst[a]), zeroAt(lst[b]);
+            } else if (lsn[a] * lsn[b] <= 0.0) {
+                zeroAt(lst[a] + lsn[a] / (lsn[a] - lsn[b]) * (lst[b] - lst[a]));
+            }
+        }
+        for (int n : nodes) {
+            const size_t k = size_t(n);
+            nLo[k] = std::min(nLo[k], cnLo), nHi[k] = std::max(nHi[k], cnHi);
+            tLo[k] = std::min(tLo[k], ctLo), tHi[k] = std::max(tHi[k], ctHi);
+        }
+    }
+    std::vector<unsigned char> status(nn, 0);
+    for (size_t n = 0; n < nn; ++n) {
+        if (nLo[n] > nHi[n]) continue;  // no cut cell around the node
+        const bool heaviside = nLo[n] * nHi[n] < 0.0 && tHi[n] <= kMachineEpsilon;
+        const bool tip = nLo[n] * nHi[n] <= kMachineEpsilon && tLo[n] * tHi[n] <= kMachineEpsilon;
+        status[n] = static_cast<unsigned char>(tip ? (heaviside ? 3 : 2) : (heaviside ? 1 : 0));
+    }
+    return status;
+}
+
+// MAFOND (xstam1): cut cells of the mesh's dimension whose nodes all have status 2 or 3.
+std::vector<int> tipCellsOf(const Mesh& mesh, const Crack& crack) {
+    const int dim = mesh.maxCellDimension();
+    std::vector<int> cells;
+    for (int c : crack.cutCells) {
+        if (cellDimension(mesh.cellTypes[size_t(c)]) != dim) continue;
+        const auto nodes = mesh.cellNodes(c);
+        if (std::all_of(nodes.begin(), nodes.end(), [&](int n) { return crack.nodeStatus[size_t(n)] >= 2; }))
+            cells.push_back(c);
+    }
+    return cells;
+}
+
+}  // namespace
+
+std::shared_ptr<Crack> buildCrackWithFront(const std::shared_ptr<const Mesh>& meshPtr, std::vector<double> lsn,
+                                           std::vector<double> lst) {
+    const Mesh& mesh = *meshPtr;
+    auto crack = std::make_shared<Crack>();
+    crack->mesh = meshPtr;
+    crack->isCrack = true;
+    for (size_t n = 0; n < lsn.size(); ++n)
+        if (!std::isfinite(lsn[n]) || !std::isfinite(lst[n]))
+            throw NumericalError(fmt::format("DEFI_FISS: the level sets are not finite at node {} (LSN {}, LST {})",
+                                             mesh.nodeNames[n], lsn[n], lst[n]));
+    crack->adjustedLevelSets = snapLevelSet(mesh, lsn) + snapLevelSet(mesh, lst);
+    crack->lsn = std::move(lsn);
+    crack->lst = std::move(lst);
+    crack->cutCells = cutCellsOf(mesh, crack->lsn, nullptr);
+    if (crack->cutCells.empty()) throw UserError(noCutCellText(mesh, "crack"));
+    crack->lsnGradient = nodalGradient(mesh, crack->lsn, &crack->cutCells);
+    crack->nodeStatus = crackNodeStatus(mesh, crack->lsn, crack->lst, crack->cutCells);
+    crack->heavisideCells = heavisideCellsOf(mesh, crack->nodeStatus);
+    crack->tipCells = tipCellsOf(mesh, *crack);
+    crack->fronts = crackFronts(mesh, crack->lsn, crack->lst, crack->tipCells);
     return crack;
 }
 

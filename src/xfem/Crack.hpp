@@ -1,7 +1,7 @@
 #pragma once
-// The crack concept (fiss_xfem) made by DEFI_FISS_XFEM with TYPE_DISCONTINUITE='INTERFACE':
-// the normal level set at the nodes, the cut cells, the enriched nodes and the junction data
-// (xfem_spec §1, §2).
+// The crack concept (fiss_xfem) made by DEFI_FISS_XFEM: the level sets at the nodes, the cut
+// cells, the node status and the junction data (xfem_spec §1, §2); for TYPE_DISCONTINUITE='FISSURE'
+// also the tangential level set, the cells containing the front and the front (docs/cracks.md).
 #include <array>
 #include <memory>
 #include <string>
@@ -9,6 +9,7 @@
 
 #include "core/Concept.hpp"
 #include "mesh/Mesh.hpp"
+#include "xfem/CrackFront.hpp"
 
 namespace ma::xfem {
 
@@ -27,15 +28,20 @@ public:
     std::string typeName() const override { return "fiss_xfem"; }
 
     std::shared_ptr<const Mesh> mesh;
+    bool isCrack = false;                            // TYPE_DISCONTINUITE='FISSURE': it has a front
     std::vector<double> lsn;                         // normal level set at every mesh node
+    std::vector<double> lst;                         // tangential level set (-1 everywhere for an interface)
     std::vector<std::array<double, 3>> lsnGradient;  // nodal average of the cell gradients (§1.3), nodes of cut cells
     std::vector<int> cutCells;                       // MAFIS (§1.4), increasing
-    std::vector<unsigned char> nodeStatus;           // STNO: 1 = Heaviside enriched (§1.5, §2.4)
+    std::vector<unsigned char> nodeStatus;           // STNO: 0, 1 Heaviside, 2 crack tip, 3 both (§1.5, §2.4)
+    std::vector<int> tipCells;                       // MAFOND: cut cells whose nodes all have status 2 or 3
+    std::vector<CrackFront> fronts;                  // FONDFISS, in order (empty for an interface)
     std::vector<int> heavisideCells;                 // MAILFISS.HEAV (§1.6), increasing
     std::vector<JunctionMaster> masters;             // JONFISS / JONCOEF (§2.2), chain included
     int adjustedLevelSets = 0;                       // nodal values moved onto the interface (§1.2)
 
-    int enrichedNodeCount() const;
+    int enrichedNodeCount() const;  // status 1
+    int nodeCountWithStatus(int status) const;
     // True when `crack` is a master (directly or through a chain) of this crack.
     bool hasMaster(const Crack* crack) const;
 };
@@ -51,12 +57,21 @@ struct JunctionInput {
 // edge end are set to 0, cell by cell, edge by edge, in place. Returns the number of changes.
 int snapLevelSet(const Mesh& mesh, std::vector<double>& lsn);
 
-// Builds a crack from its (unsnapped) nodal level set: snapping, gradient, cut cells, node
+// Builds an interface from its (unsnapped) nodal level set: snapping, gradient, cut cells, node
 // status with the junction correction, Heaviside cells. UserError when the interface does not
 // cut the mesh, when POINT lies in no cell or on a master interface (the master's level set
 // interpolated at POINT, which also gives the side). `zone` (GROUP_MA_ENRI, flags by cell): only its
 // cells are cut cells, hence only their nodes are enriched; null: the whole mesh.
 std::shared_ptr<Crack> buildCrack(const std::shared_ptr<const Mesh>& mesh, std::vector<double> lsn,
                                   const JunctionInput* junction, const std::vector<char>* zone = nullptr);
+
+// Builds a crack (TYPE_DISCONTINUITE='FISSURE', no junction) from its unsnapped nodal level sets:
+// both snapped as code_aster's xajuls does, cut cells, node status (xstano), tip cells, fronts.
+std::shared_ptr<Crack> buildCrackWithFront(const std::shared_ptr<const Mesh>& mesh, std::vector<double> lsn,
+                                           std::vector<double> lst);
+
+// The average at each node of the gradients of a nodal field computed at that node in every cell
+// of the mesh's dimension around it (GRLNNO, GRLTNO).
+std::vector<std::array<double, 3>> nodalLevelSetGradient(const Mesh& mesh, const std::vector<double>& values);
 
 }  // namespace ma::xfem

@@ -10,6 +10,12 @@ namespace ma {
 inline constexpr Message<std::string> XFEM_25{"XFEM_25", "{} is ignored with TYPE_DISCONTINUITE='INTERFACE'"};
 inline constexpr Message<int> XFEM_63{
     "XFEM_63", "{} nodal level-set values were moved onto the interface (their zero lay within 1e-6 of an edge end)"};
+// DEFI_FISS_XFEM, TYPE_DISCONTINUITE='FISSURE': the crack's name.
+inline constexpr Message<std::string> XFEM_58{
+    "XFEM_58",
+    "no point of the front of crack {} was found: the front lies outside the structure, which the crack cuts "
+    "through (Heaviside enrichment only). If an interface was meant, give TYPE_DISCONTINUITE='INTERFACE'; "
+    "otherwise check the tangential level set"};
 inline constexpr Message<> XFEM_ENRI{
     "XFEM_ENRI",
     "the interface enriches no node (it lies on the boundary of the structure or between the cells without "
@@ -39,6 +45,7 @@ inline constexpr Message<std::string, std::string, std::string, std::string> XFE
 inline constexpr MessageText xfemMessages[] = {
     entry(XFEM_25),
     entry(XFEM_63),
+    entry(XFEM_58),
     entry(XFEM_ENRI),
     entry(XFEM_SUBCELL_RULE),
     entry(XFEM_22),

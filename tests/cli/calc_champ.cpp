@@ -14,13 +14,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string readAll(const std::string& path) {
-    std::ifstream in(path);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 const char* kCalcChamp =
     "UTOT1=CALC_CHAMP(reuse=UTOT1, RESULTAT=UTOT1, CONTRAINTE=('SIGM_ELGA','SIGM_ELNO','SIGM_NOEU'))\n"
     "IMPR_RESU(FORMAT='MED', UNITE=80, RESU=_F(RESULTAT=UTOT1, NOM_CHAM=('SIGM_ELGA','SIGM_ELNO','SIGM_NOEU')))\n"
@@ -39,11 +32,8 @@ protected:
         dir_ = fs::temp_directory_path() / ("miniaster-calc-champ." + std::to_string(getpid()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
-        std::string comm = readAll(ma::test::astest("ssnv511e.comm"));
-        const auto fin = comm.rfind("\nFIN(");
-        ASSERT_NE(fin, std::string::npos);
-        comm = comm.substr(0, fin + 1) + kCalcChamp + comm.substr(fin + 1);
-        ma::test::writeText(dir_ / "t.comm", comm);
+        ma::test::writeText(dir_ / "t.comm",
+                            ma::test::beforeFin(ma::test::readText(ma::test::astest("ssnv511e.comm")), kCalcChamp));
         run_ = ma::test::runMiniaster(dir_, "t.comm", "--mesh '" + ma::test::astest("ssnv511a.mmed") + "'");
     }
     static void TearDownTestSuite() { fs::remove_all(dir_); }
@@ -128,9 +118,7 @@ TEST_F(CalcChampSsnv511e, Mdump4ReadsTheFieldsWithTheirEntities) {
 // `miniaster convert`.
 TEST(CalcChampClassical, PatchTestStressesAtNodesAndInTheMedFile) {
     const auto dir = ma::test::freshDir();
-    std::string comm = readAll(std::string(MINIASTER_SOURCE_DIR) + "/astest/fe_patch_quad4.comm");
-    const auto fin = comm.rfind("\nFIN(");
-    ASSERT_NE(fin, std::string::npos);
+    const std::string comm = ma::test::readText(std::string(MINIASTER_SOURCE_DIR) + "/astest/fe_patch_quad4.comm");
     const std::string extra =
         "R2 = CALC_CHAMP(RESULTAT=RES2, NUME_ORDRE=1, GROUP_MA='SURF', CONTRAINTE=('SIGM_NOEU', 'SIEF_ELNO'))\n"
         "TEST_RESU(RESU=(_F(RESULTAT=R2, NOM_CHAM='SIGM_NOEU', NUME_ORDRE=1, NOM_CMP='SIXX', TYPE_TEST='MIN',\n"
@@ -140,7 +128,7 @@ TEST(CalcChampClassical, PatchTestStressesAtNodesAndInTheMedFile) {
         "                _F(RESULTAT=R2, NOM_CHAM='SIGM_NOEU', NUME_ORDRE=1, NOM_CMP='SIYY', TYPE_TEST='MAX',\n"
         "                   VALE_CALC=0.5E6, VALE_REFE=0.5E6, REFERENCE='ANALYTIQUE', PRECISION=1.E-9)))\n"
         "IMPR_RESU(FORMAT='MED', UNITE=80, RESU=_F(RESULTAT=R2, NOM_CHAM=('SIGM_NOEU', 'SIEF_ELNO')))\n";
-    ma::test::writeText(dir / "t.comm", comm.substr(0, fin + 1) + extra + comm.substr(fin + 1));
+    ma::test::writeText(dir / "t.comm", ma::test::beforeFin(comm, extra));
     const auto r =
         ma::test::runMiniaster(dir, "t.comm",
                                "--mesh '" + std::string(MINIASTER_SOURCE_DIR) + "/astest/fe_patch_quad4.mmed'");
@@ -164,7 +152,7 @@ TEST(CalcChampClassical, PatchTestStressesAtNodesAndInTheMedFile) {
                                  (dir / "r2.vtu").string() + "' 2>&1",
                              &status);
     EXPECT_EQ(status, 0) << out;
-    const std::string vtu = readAll((dir / "r2.vtu").string());
+    const std::string vtu = ma::test::readText((dir / "r2.vtu").string());
     EXPECT_NE(vtu.find("SIGM_NOEU"), std::string::npos) << out;
     EXPECT_NE(vtu.find("SIEF_ELNO"), std::string::npos) << out;
 }
@@ -172,13 +160,11 @@ TEST(CalcChampClassical, PatchTestStressesAtNodesAndInTheMedFile) {
 // What miniaster's CALC_CHAMP does not compute is refused by the static check, before any command.
 TEST(CalcChampStatic, UnsupportedOptionsAreRefusedBeforeTheSolve) {
     const auto dir = ma::test::freshDir();
-    std::string comm = readAll(ma::test::astest("ssnv511e.comm"));
-    const auto fin = comm.rfind("\nFIN(");
-    ASSERT_NE(fin, std::string::npos);
+    const std::string comm = ma::test::readText(ma::test::astest("ssnv511e.comm"));
     const std::string extra =
         "UTOT1=CALC_CHAMP(reuse=UTOT1, RESULTAT=UTOT1, CONTRAINTE='SIGM_NOEU', ENERGIE='EPOT_ELEM')\n"
         "R=CALC_CHAMP(RESULTAT=UTOT1, CONTRAINTE='EFGE_ELNO')\n";
-    ma::test::writeText(dir / "t.comm", comm.substr(0, fin + 1) + extra + comm.substr(fin + 1));
+    ma::test::writeText(dir / "t.comm", ma::test::beforeFin(comm, extra));
     const auto r = ma::test::runMiniaster(dir, "t.comm", "--mesh '" + ma::test::astest("ssnv511a.mmed") + "'");
     EXPECT_EQ(r.status, 1) << r.output;
     const std::string mess = r.file("out/t.mess");

@@ -15,13 +15,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string readAll(const std::string& path) {
-    std::ifstream in(path);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 std::vector<std::string> words(const std::string& line) {
     std::istringstream in(line);
     std::vector<std::string> out;
@@ -56,9 +49,7 @@ void expectRelative(const std::map<std::string, double>& row, const std::string&
 
 // Appends `extra` to code_aster's file `name` before its FIN.
 std::string originalWith(const std::string& name, const std::string& extra) {
-    std::string comm = readAll(ma::test::astest(name));
-    const auto fin = comm.rfind("\nFIN(");
-    return comm.substr(0, fin + 1) + extra + comm.substr(fin + 1);
+    return ma::test::beforeFin(ma::test::readText(ma::test::astest(name)), extra);
 }
 
 // Classical D_PLAN square on ssnv511a's mesh: SIYY = -2 MPa, SIXX = -1 MPa, supports on LB (DY) and
@@ -182,7 +173,7 @@ TEST(CalcChampForce, ReactionsBalanceTheLoadsOnSsnv511eWithContact) {
                                  (dir / "r.vtu").string() + "' 2>&1",
                              &status);
     EXPECT_EQ(status, 0) << out;
-    EXPECT_NE(readAll((dir / "r.vtu").string()).find("REAC_NODA"), std::string::npos);
+    EXPECT_NE(ma::test::readText((dir / "r.vtu").string()).find("REAC_NODA"), std::string::npos);
 }
 
 // ssnv511g (3D, HEXA8, three interfaces with contact, 1 m thick): 1.5e7 N on SB in y and on SG in x,

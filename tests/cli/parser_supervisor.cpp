@@ -176,9 +176,11 @@ TEST(ParserSupervisor, Latin1CommandFileIsRead) {
 
 TEST(ParserSupervisor, CrashLeavesADiagnosisAndNoResult) {
     auto r = runComm("DEBUT()\nimport ctypes\nctypes.string_at(0)\nFIN()\n");
-    EXPECT_NE(r.status, 0);
+    EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.output.find("--- DIAGNOSTIC JOB : <F>_ABNORMAL_ABORT"), std::string::npos) << r.output;
-    EXPECT_NE(r.file("out/t.mess").find("<F> <ABNORMAL_ABORT> (t.comm): the process received signal 11"),
+    EXPECT_NE(r.file("out/t.mess")
+                  .find("<F> <ABNORMAL_ABORT> (t.comm, in the Python code after the command of line "
+                        "1): the process received signal 11"),
               std::string::npos)
         << r.file("out/t.mess");
     EXPECT_FALSE(r.exists("out/t.resu"));

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <tuple>
 
 #include "parser/Catalog.hpp"
 #include "parser_run.hpp"
@@ -37,6 +38,10 @@ LN2 = FORMULE(VALE='X', NOM_PARA=('X', 'Y'))
 F1 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN1), INFO=1)
 F2 = DEFI_FISS_XFEM(MODELE=MO, TYPE_DISCONTINUITE='INTERFACE', DEFI_FISS=_F(FONC_LN=LN2),
                     JONCTION=_F(FISSURE=F1, POINT=(0, 5)))
+F3 = DEFI_FISS_XFEM(MAILLAGE=MA, DEFI_FISS=_F(FORM_FISS='DEMI_DROITE', PFON=(0.3, 0.45, 0.), DTAN=(1., 0., 0.)))
+F4 = DEFI_FISS_XFEM(MAILLAGE=MA, TYPE_DISCONTINUITE='FISSURE', DEFI_FISS=_F(FONC_LN=LN1, FONC_LT=LN2), INFO=2)
+LF3 = CREA_CHAMP(TYPE_CHAM='NOEU_NEUT_R', OPERATION='EXTR', FISSURE=F3, NOM_CHAM='LTNO')
+TF3 = RECU_TABLE(CO=F3, NOM_TABLE='FOND_FISS')
 MX = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=(F1, F2), CONTACT='STANDARD', INFO=1)
 MA2 = COPIER(CONCEPT=MA)
 MA2 = DEFI_GROUP(reuse=MA2, MAILLAGE=MA2,
@@ -184,12 +189,29 @@ TEST(ParserCatalog, AFormatRThatIsNotFortranIsRefusedBeforeAnyCommandRuns) {
     auto r = runComm(std::string(kEveryCommand)
                          .replace(std::string(kEveryCommand).find("FORMAT_R='1PE12.5'"), 18, "FORMAT_R='1PQ12.5'"));
     EXPECT_EQ(r.status, 1) << r.output;
-    EXPECT_NE(r.output.find("<F> <ERROR> IMPR_TABLE (t.comm, line 116): keyword FORMAT_R: value '1PQ12.5' is not a "
+    EXPECT_NE(r.output.find("<F> <ERROR> IMPR_TABLE (t.comm, line 120): keyword FORMAT_R: value '1PQ12.5' is not a "
                             "Fortran real format such as 'E12.5', '1PE12.5', 'D15.8', 'F10.3' or 'G14.7'"),
               std::string::npos)
         << r.output;
     EXPECT_EQ(r.output.find("# Command #0001"), std::string::npos) << r.output;  // nothing ran
     EXPECT_FALSE(r.exists("out/t.resu"));
+}
+
+// DEFI_GROUP selections miniaster does not model (crack propagation zones, tunnels) are refused by
+// the static check too, with the keyword's path.
+TEST(ParserCatalog, UnmodelledDefiGroupOptionsAreRefusedBeforeAnyCommandRuns) {
+    const std::string every = kEveryCommand;
+    for (const auto& [from, to, cause] :
+         {std::tuple<std::string, std::string, std::string>{
+              "TYPE_GROUP='HEAVISIDE')", "TYPE_GROUP='ZONE_MAJ')",
+              "keyword CREA_GROUP_NO[6]/TYPE_GROUP: value 'ZONE_MAJ' is not supported by miniaster"},
+          {"OPTION='NOEUD_ORDO', GROUP_MA='LD',", "OPTION='TUNNEL', GROUP_MA='LD',",
+           "keyword CREA_GROUP_NO[5]/OPTION: value 'TUNNEL' is not supported by miniaster"}}) {
+        auto r = runComm(std::string(every).replace(every.find(from), from.size(), to));
+        EXPECT_EQ(r.status, 1) << r.output;
+        EXPECT_NE(r.output.find("<F> <ERROR> DEFI_GROUP (t.comm, line 26): " + cause), std::string::npos) << r.output;
+        EXPECT_EQ(r.output.find("# Command #0001"), std::string::npos) << r.output;  // nothing ran
+    }
 }
 
 // A command file in the syntax of the 2011-2012 versions of ssnv511 (commands_spec §9, old-only

@@ -50,6 +50,21 @@ inline void writeText(const std::filesystem::path& path, const std::string& text
     out << text;
 }
 
+inline std::string readText(const std::string& path) {
+    std::ifstream in(path);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// `comm` with `extra` inserted before its last FIN() (a test's commands appended to a case).
+inline std::string beforeFin(const std::string& comm, const std::string& extra) {
+    const auto fin = comm.rfind("\nFIN(");
+    EXPECT_NE(fin, std::string::npos) << "no FIN( in the command file";
+    if (fin == std::string::npos) return comm + extra;
+    return comm.substr(0, fin + 1) + extra + comm.substr(fin + 1);
+}
+
 // Runs `miniaster run <input> --out-dir <dir>/out <extra>` in `dir`.
 inline RunResult runMiniaster(const std::filesystem::path& dir, const std::string& input, const std::string& extra = "",
                               const std::string& env = "") {

@@ -186,6 +186,42 @@ TEST(Ssnv511Mesh, ThreeDimensionalVolumeSkinAndConformity) {
         }
 }
 
+// HEXA8 in several layers (the 3D block of `study solvers`): counts, the volume of [-5,5]^2 x [0,10],
+// positive cells, a conforming outward skin with SD/SG on every layer; other kinds refuse layers.
+TEST(Ssnv511Mesh, Hexa8LayersMakeAConformingBlock) {
+    for (auto [n, layers] : {std::pair{1, 2}, std::pair{4, 3}, std::pair{5, 5}}) {
+        Ssnv511MeshOptions o;
+        o.kind = Kind::Hexa8, o.divisions = n, o.layers = layers, o.zmax = 10.0;
+        auto m = buildSsnv511Mesh(o);
+        EXPECT_EQ(m->nodeCount(), (layers + 1) * (n + 1) * (n + 1));
+        EXPECT_EQ(count(*m, CellType::HEXA8), n * n * layers);
+        const int skin = 2 * n * n + 4 * n * layers;
+        EXPECT_EQ(count(*m, CellType::QUAD4), skin);
+        double volume = 0;
+        for (int c : m->cellGroups.get("VOLU")) {
+            EXPECT_GT(measure(*m, c), 0.0);
+            volume += measure(*m, c);
+        }
+        EXPECT_NEAR(volume, 1000.0, 1e-9);
+        std::multiset<std::vector<int>> env;
+        for (int c : m->cellGroups.get("ENV")) {
+            auto nodes = m->cellNodes(c);
+            std::vector<int> f(nodes.begin(), nodes.end());
+            std::sort(f.begin(), f.end());
+            env.insert(f);
+            const Vec3 g = vertexCentroid(*m, c), nrm = cellNormal(*m, c);
+            const Vec3 out = std::abs(g[2] - 10.0) < 1e-12 ? Vec3{0, 0, 1} : outwardAt(g);
+            EXPECT_NEAR(dot(nrm, out), norm(nrm), 1e-9);
+        }
+        EXPECT_EQ(env, boundaryFaces(*m));
+        EXPECT_EQ(m->cellGroups.get("SD").size(), size_t(n * layers));
+        EXPECT_EQ(m->cellGroups.get("SG").size(), size_t(n * layers));
+    }
+    Ssnv511MeshOptions t;
+    t.kind = Kind::Tetra4, t.layers = 2;
+    EXPECT_THROW(buildSsnv511Mesh(t), UserError);
+}
+
 TEST(Ssnv511Mesh, OffsetsMoveInteriorLinesOnly) {
     auto m = build(Kind::Quad4, 4, 0.3, -0.25);
     std::set<double> xs, ys;

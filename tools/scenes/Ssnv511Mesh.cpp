@@ -58,7 +58,9 @@ struct Builder {
         mesh->coords.reserve(total);
         mesh->nodeNames.reserve(total);
         for (int l = 0; l < layers; ++l) {
-            const double z = layers == 1 ? 0.0 : (l == 0 ? opt.zmin : opt.zmax);
+            const double z = layers == 1       ? 0.0
+                             : l == layers - 1 ? opt.zmax
+                                               : opt.zmin + (opt.zmax - opt.zmin) * l / (layers - 1);
             for (int j = 0; j <= n; ++j)
                 for (int i = 0; i <= n; ++i) mesh->coords.push_back({xs[size_t(i)], ys[size_t(j)], z});
         }
@@ -117,7 +119,8 @@ struct Builder {
 
     void hexa8() {
         mesh->dim = 3;
-        addNodes(2);
+        const int top = opt.layers;
+        addNodes(top + 1);
         std::vector<int> env, sd, sg, volu;
         // Skin, every face outward (as ssnv511g): z=zmin, z=zmax, x=xmax (SD), x=xmin (SG),
         // y=ymax, y=ymin.
@@ -126,25 +129,32 @@ struct Builder {
                 env.push_back(cell(CellType::QUAD4, {node(i, j), node(i, j + 1), node(i + 1, j + 1), node(i + 1, j)}));
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i)
-                env.push_back(cell(CellType::QUAD4,
-                                   {node(i, j, 1), node(i + 1, j, 1), node(i + 1, j + 1, 1), node(i, j + 1, 1)}));
-        for (int j = 0; j < n; ++j) {
-            const int c = cell(CellType::QUAD4, {node(n, j), node(n, j + 1), node(n, j + 1, 1), node(n, j, 1)});
-            env.push_back(c), sd.push_back(c);
-        }
-        for (int j = 0; j < n; ++j) {
-            const int c = cell(CellType::QUAD4, {node(0, j + 1), node(0, j), node(0, j, 1), node(0, j + 1, 1)});
-            env.push_back(c), sg.push_back(c);
-        }
-        for (int i = 0; i < n; ++i)
-            env.push_back(cell(CellType::QUAD4, {node(i + 1, n), node(i, n), node(i, n, 1), node(i + 1, n, 1)}));
-        for (int i = 0; i < n; ++i)
-            env.push_back(cell(CellType::QUAD4, {node(i, 0), node(i + 1, 0), node(i + 1, 0, 1), node(i, 0, 1)}));
-        for (int j = 0; j < n; ++j)
+                env.push_back(cell(CellType::QUAD4, {node(i, j, top), node(i + 1, j, top), node(i + 1, j + 1, top),
+                                                     node(i, j + 1, top)}));
+        for (int l = 0; l < top; ++l) {
+            for (int j = 0; j < n; ++j) {
+                const int c =
+                    cell(CellType::QUAD4, {node(n, j, l), node(n, j + 1, l), node(n, j + 1, l + 1), node(n, j, l + 1)});
+                env.push_back(c), sd.push_back(c);
+            }
+            for (int j = 0; j < n; ++j) {
+                const int c =
+                    cell(CellType::QUAD4, {node(0, j + 1, l), node(0, j, l), node(0, j, l + 1), node(0, j + 1, l + 1)});
+                env.push_back(c), sg.push_back(c);
+            }
             for (int i = 0; i < n; ++i)
-                volu.push_back(cell(CellType::HEXA8,
-                                    {node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1), node(i, j, 1),
-                                     node(i + 1, j, 1), node(i + 1, j + 1, 1), node(i, j + 1, 1)}));
+                env.push_back(cell(CellType::QUAD4,
+                                   {node(i + 1, n, l), node(i, n, l), node(i, n, l + 1), node(i + 1, n, l + 1)}));
+            for (int i = 0; i < n; ++i)
+                env.push_back(cell(CellType::QUAD4,
+                                   {node(i, 0, l), node(i + 1, 0, l), node(i + 1, 0, l + 1), node(i, 0, l + 1)}));
+        }
+        for (int l = 0; l < top; ++l)
+            for (int j = 0; j < n; ++j)
+                for (int i = 0; i < n; ++i)
+                    volu.push_back(cell(CellType::HEXA8, {node(i, j, l), node(i + 1, j, l), node(i + 1, j + 1, l),
+                                                          node(i, j + 1, l), node(i, j, l + 1), node(i + 1, j, l + 1),
+                                                          node(i + 1, j + 1, l + 1), node(i, j + 1, l + 1)}));
         mesh->cellGroups.set("ENV", std::move(env));
         mesh->cellGroups.set("SD", std::move(sd));
         mesh->cellGroups.set("SG", std::move(sg));
@@ -212,6 +222,8 @@ bool ssnv511KindFromName(const std::string& name, Ssnv511MeshOptions::Kind& kind
 std::shared_ptr<Mesh> buildSsnv511Mesh(const Ssnv511MeshOptions& o) {
     if (o.divisions < 1)
         throw UserError(fmt::format("the number of divisions must be at least 1 (got {})", o.divisions));
+    if (o.layers < 1 || (o.layers > 1 && o.kind != Kind::Hexa8))
+        throw UserError(fmt::format("--layers {}: at least 1, and more only for HEXA8", o.layers));
     if (!(o.xmax > o.xmin) || !(o.ymax > o.ymin) || !(o.zmax > o.zmin))
         throw UserError("the bounds must satisfy xmin < xmax, ymin < ymax, zmin < zmax");
     if (!(std::abs(o.offsetX) < 1) || !(std::abs(o.offsetY) < 1))

@@ -1,7 +1,7 @@
 #pragma once
 // The ssnv511-family meshes with N divisions per side (tools/ssnv511_mesh, tests): the rectangle
 // [xmin,xmax]x[ymin,ymax] (default the square [-5,5]^2), 2D QUAD4 or TRIA3 with the edge groups
-// LB/LD/LH/LG (SEG2, counter-clockwise), or one layer zmin<=z<=zmax of HEXA8 or TETRA4 with VOLU
+// LB/LD/LH/LG (SEG2, counter-clockwise), or one layer zmin<=z<=zmax of HEXA8 (or `layers` of them) or TETRA4 with VOLU
 // and the outward skin ENV (HEXA8 also SD/SG, the faces x=xmax and x=xmin). The same cells and
 // group names as code_aster's ssnv511 meshes in ../shared/astest, numbered row by row and with
 // right-handed volumes (code_aster's HEXA8 files are left-handed; docs/med.md).
@@ -21,6 +21,8 @@ struct Ssnv511MeshOptions {
     // fixed: moves the interfaces x=0 / y=0 and the junction point away from cell centres (odd N)
     // or off the grid lines (even N).
     double offsetX = 0, offsetY = 0;
+    // HEXA8 only: the cells in z (a true 3D block for the solver study: N x N x layers).
+    int layers = 1;
 };
 
 // UserError on bad options (N < 1, empty box, |offset| >= 1).

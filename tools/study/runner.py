@@ -192,7 +192,7 @@ def parse_error_tables(text):
     return r
 
 
-def make_mesh(build, element, n, path, bounds=None, zbounds=None, offset=None):
+def make_mesh(build, element, n, path, bounds=None, zbounds=None, offset=None, layers=None):
     cmd = [os.path.join(build, "tools", "ssnv511_mesh"), "--type", element, "--n", str(n), "-o", path]
     if bounds:
         cmd += ["--bounds"] + [repr(float(b)) for b in bounds]
@@ -200,6 +200,8 @@ def make_mesh(build, element, n, path, bounds=None, zbounds=None, offset=None):
         cmd += ["--zbounds"] + [repr(float(z)) for z in zbounds]
     if offset:
         cmd += ["--offset"] + [repr(float(o)) for o in offset]
+    if layers:
+        cmd += ["--layers", str(int(layers))]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
 
 

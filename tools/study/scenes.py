@@ -21,7 +21,10 @@ ELEMENTS = {  # element -> (modelisation, dimension)
 
 
 def solveur_text(solver):
-    """SOLVEUR=_F(...) keywords for a study label: 'MUMPS', 'MUMPS:SCOTCH', 'MULT_FRONT', 'LDLT'."""
+    """SOLVEUR=_F(...) keywords for a study label: 'MUMPS', 'MUMPS:SCOTCH', 'MULT_FRONT', 'LDLT', or the
+    keywords themselves when the label has an '=' ("METHODE='PETSC', PRE_COND='GAMG'")."""
+    if "=" in solver:
+        return solver
     method, _, renum = solver.partition(":")
     kw = [f"METHODE='{method}'"]
     if renum:

@@ -998,7 +998,7 @@ def main():
     ap = argparse.ArgumentParser(prog="miniaster study", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("name", choices=["smooth", "stability", "penalty", "perf", "all", "check-field", "astest",
-                                     "ssnv513e"])
+                                     "ssnv513e", "lame", "solvers"])
     ap.add_argument("--full", action="store_true", help="the big grid (2D up to N=1001, perf at N=1001)")
     ap.add_argument("--out", default=None,
                     help="tables and plots (default: a fresh folder miniaster-study-<name>-<UTC time> in the "
@@ -1023,6 +1023,9 @@ def main():
     if args.name == "ssnv513e":  # refinement study of the family file (docs/family.md)
         import ssnv513e_refinement
         return ssnv513e_refinement.main(["--build", args.build, "--out", args.out])
+    if args.name == "lame":  # the Lame ring with a circular interface in contact (docs/contact.md)
+        import lame_ring
+        return lame_ring.main(["--build", args.build, "--out", args.out])
     ctx = Context(args)
     if not os.path.exists(ctx.binary):
         sys.exit(f"study: {ctx.binary} not found (build first)")
@@ -1037,6 +1040,9 @@ def main():
             study_perf(ctx)
         if args.name == "astest":
             study_astest(ctx)
+        if args.name == "solvers":  # SOLVEUR settings (docs/solver.md)
+            import solvers
+            solvers.study_solvers(ctx)
     finally:
         ctx.finish()
     print(f"study {args.name}: tables and plots in {ctx.out}")

@@ -10,7 +10,8 @@
 namespace ma::catalog_entries {
 
 // SOLVEUR of MECA_STATIQUE and STAT_NON_LINE (the linear solver and its options).
-cata::Keyword solveur();
+// `nonLinear`: STAT_NON_LINE's variant (RESI_RELA=-1 by default, FILTRAGE_MATRICE, MIXER_PRECISION).
+cata::Keyword solveur(bool nonLinear);
 // EXCIT: the loads and their multiplier functions; `nonlinear` adds TYPE_CHARGE (STAT_NON_LINE).
 cata::Keyword excit(bool nonlinear);
 // COMPORTEMENT, or its legacy name COMP_ELAS (≤ 2013), which is stored as COMPORTEMENT.

@@ -1,0 +1,144 @@
+#include "solver/KrylovSettings.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+
+#include "core/Error.hpp"
+#include "core/Messages.hpp"
+
+namespace ma {
+
+namespace {
+
+void check(PetscErrorCode code, const char* call) {
+    if (code != 0) throw NumericalError(fmt::format("PETSc: {} failed (PETSc error code {})", call, int(code)));
+}
+
+bool isOneOf(const std::string& value, std::initializer_list<const char*> values) {
+    return std::any_of(values.begin(), values.end(), [&](const char* v) { return value == v; });
+}
+
+}  // namespace
+
+std::string krylovAlgorithm(const SolverOptions& options) {
+    return options.method == "GCPC" ? "CG" : options.algorithm;
+}
+
+bool usesFactors(const SolverOptions& options) { return isOneOf(options.preconditioner, {"LDLT_SP", "LDLT_DP"}); }
+
+void refuseUnsound(const SolverOptions& options, bool indefinite) {
+    const std::string& pc = options.preconditioner;
+    const std::string algorithm = krylovAlgorithm(options);
+    if (isOneOf(pc, {"BLOC_LAGR", "FIELDSPLIT"}))
+        throw NotImplemented(
+            "SOLVEUR/PRE_COND='" + pc +
+            "': the block preconditioners of the multipliers are not available; use PRE_COND='LDLT_SP' "
+            "(docs/solver.md)");
+    if (algorithm == "GMRES_LMP")
+        throw NotImplemented(
+            "SOLVEUR/ALGORITHME='GMRES_LMP': the limited-memory preconditioner update is not available; use "
+            "'FGMRES' (REAC_PRECOND keeps the LDLT_SP factors between matrices)");
+    if (options.distributed && usesFactors(options))
+        throw NotImplemented("SOLVEUR/METHODE='" + options.method +
+                             "' on several processes: each process solves the whole system (docs/solver.md)");
+    if (!indefinite) return;
+    if (!usesFactors(options))
+        throw UserError(fmt::format(
+            "SOLVEUR/METHODE='{}', PRE_COND='{}' cannot converge on this system: its Lagrange multipliers or contact "
+            "unknowns make it a saddle point with zero diagonal entries, which {} ; use PRE_COND='LDLT_SP' (MUMPS "
+            "single-precision factors as preconditioner, docs/solver.md) or METHODE='MUMPS'",
+            options.method, pc,
+            isOneOf(pc, {"JACOBI", "SOR", "LDLT_INC"}) ? "this preconditioner divides by"
+            : pc == "SANS"                             ? "an unpreconditioned Krylov method cannot handle"
+                                                       : "algebraic multigrid cannot coarsen"));
+    if (isOneOf(algorithm, {"CG", "CR"}))
+        throw UserError(fmt::format(
+            "SOLVEUR/{} cannot converge on this system: {} needs a positive definite matrix and preconditioner, and "
+            "its Lagrange multipliers or contact unknowns make it indefinite; use METHODE='PETSC' with "
+            "ALGORITHME='FGMRES' (or 'GMRES', 'GCR') and PRE_COND='LDLT_SP'",
+            options.method == "GCPC" ? "METHODE='GCPC'" : "ALGORITHME='" + algorithm + "'", algorithm));
+}
+
+SolverOptions factorOptions(const SolverOptions& options) {
+    SolverOptions f;
+    f.method = "MUMPS";
+    f.mixedPrecision = options.preconditioner == "LDLT_SP";
+    f.diagonalScaling = false;  // the operator is already scaled
+    f.maxRefinementSteps = 0;
+    f.resiRela = -1.0;
+    f.pcentPivot = options.pcentPivot;
+    f.nprec = options.nprec;
+    f.info = options.info;
+    f.threads = options.threads;
+    f.singularHint = options.singularHint;
+    return f;
+}
+
+void configureKrylov(KSP ksp, const SolverOptions& options) {
+    const std::string algorithm = krylovAlgorithm(options);
+    const KSPType type = algorithm == "CG"      ? KSPCG
+                         : algorithm == "CR"    ? KSPCR
+                         : algorithm == "GMRES" ? KSPGMRES
+                         : algorithm == "GCR"   ? KSPGCR
+                                                : KSPFGMRES;
+    check(KSPSetType(ksp, type), "KSPSetType");
+    // code_aster's criterion: ||b - A x|| <= RESI_RELA ||b||, the unpreconditioned residual. CG
+    // computes it with a left preconditioner; GMRES gets it from right preconditioning; FGMRES and GCR
+    // are right-preconditioned. PETSc's CR iterates on the preconditioned norm only (with the other one
+    // it stalls at once): the true residual is checked after every solve (PetscSolver.cpp).
+    if (algorithm == "GMRES") check(KSPSetPCSide(ksp, PC_RIGHT), "KSPSetPCSide");
+    if (algorithm == "CG") check(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+    const PetscInt maxIterations = options.maxIterations > 0 ? PetscInt(options.maxIterations) : PETSC_DEFAULT;
+    check(KSPSetTolerances(ksp, options.resiRela, PETSC_DEFAULT, PETSC_DEFAULT, maxIterations), "KSPSetTolerances");
+}
+
+void configurePreconditioner(PC pc, const SolverOptions& options) {
+    const std::string& p = options.preconditioner;
+    if (p == "SANS") check(PCSetType(pc, PCNONE), "PCSetType");
+    else if (p == "JACOBI") check(PCSetType(pc, PCJACOBI), "PCSetType");
+    else if (p == "SOR") check(PCSetType(pc, PCSOR), "PCSetType");  // symmetric sweeps: fit for CG
+    else if (p == "GAMG") check(PCSetType(pc, PCGAMG), "PCSetType");
+    else if (p == "ML") check(PCSetType(pc, PCML), "PCSetType");
+    else if (p == "BOOMER") {
+        check(PCSetType(pc, PCHYPRE), "PCSetType");
+        check(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
+    } else if (p == "LDLT_INC") {
+        check(PCSetType(pc, PCICC), "PCSetType");
+        check(PCFactorSetLevels(pc, PetscInt(options.fillLevel)), "PCFactorSetLevels");
+    } else {
+        throw InternalError("SOLVEUR/PRE_COND='" + p + "' reached the PETSc setup");
+    }
+}
+
+void applyOptionPetsc(KSP ksp, const SolverOptions& options) {
+    if (options.petscOptions.empty()) {
+        check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
+        return;
+    }
+    check(PetscOptionsInsertString(nullptr, options.petscOptions.c_str()),
+          "PetscOptionsInsertString (SOLVEUR/OPTION_PETSC)");
+    const PetscErrorCode code = KSPSetFromOptions(ksp);
+    PetscInt unused = 0;
+    PetscOptionsAllUsed(nullptr, &unused);
+    check(PetscOptionsClear(nullptr), "PetscOptionsClear");
+    check(PetscOptionsSetValue(nullptr, "-no_signal_handler", "true"), "PetscOptionsSetValue");
+    check(code, "KSPSetFromOptions (SOLVEUR/OPTION_PETSC)");
+    msg().infof("    OPTION_PETSC='{}' given to PETSc{}", options.petscOptions,
+                unused > 0 ? fmt::format(" ({} option(s) not used by this solver)", int(unused)) : "");
+}
+
+std::string stallAdvice(const SolverOptions& options, bool inaccurate) {
+    if (inaccurate && options.preconditioner == "LDLT_SP")
+        return "With single-precision factors the method's own residual is not the true one (GMRES rebuilds the "
+               "solution through factors that are not exactly linear, CR measures the preconditioned residual): use "
+               "ALGORITHME='FGMRES' (code_aster's default) or 'GCR', which keep the preconditioned vectors.";
+    if (usesFactors(options))
+        return "The factors of the preconditioner do not approximate the matrix well enough: use PRE_COND='LDLT_DP' "
+               "or METHODE='MUMPS'.";
+    return "Raise NMAX_ITER, or use a stronger preconditioner (PRE_COND='LDLT_SP', or 'GAMG' / 'BOOMER' / 'ML' for "
+           "elasticity without multipliers).";
+}
+
+}  // namespace ma

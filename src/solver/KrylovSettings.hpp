@@ -1,0 +1,35 @@
+#pragma once
+// Internal to src/solver: what SOLVEUR METHODE='PETSC' / 'GCPC' means in PETSc's terms (the Krylov
+// method, the preconditioner, OPTION_PETSC) and which combinations are refused before iterating
+// (docs/solver.md, "Which preconditioner for which system").
+#include <petscksp.h>
+
+#include <string>
+
+#include "solver/LinearSolver.hpp"
+
+namespace ma {
+
+// ALGORITHME, or CG for GCPC.
+std::string krylovAlgorithm(const SolverOptions& options);
+// A NotImplemented / UserError for what PETSc cannot do here or cannot converge on: a saddle-point
+// system (`indefinite`: multipliers, contact unknowns) with a preconditioner that divides by its
+// zero diagonal or coarsens it (JACOBI, SOR, LDLT_INC, GAMG, BOOMER, ML, SANS), or with CG / CR
+// (which need a positive definite operator and preconditioner).
+void refuseUnsound(const SolverOptions& options, bool indefinite);
+// PRE_COND='LDLT_SP' / 'LDLT_DP': MUMPS factors of the scaled matrix, applied once per iteration.
+bool usesFactors(const SolverOptions& options);
+SolverOptions factorOptions(const SolverOptions& options);
+// Method, tolerances (RESI_RELA on the unpreconditioned residual, NMAX_ITER), preconditioning side.
+void configureKrylov(KSP ksp, const SolverOptions& options);
+// PETSc's own preconditioners: SANS, JACOBI, SOR, LDLT_INC (ICC with NIVE_REMPLISSAGE levels),
+// GAMG, BOOMER (hypre's BoomerAMG), ML.
+void configurePreconditioner(PC pc, const SolverOptions& options);
+// OPTION_PETSC into the options database, read by the KSP and its PC, then cleared (a later solve
+// starts from the SOLVEUR keywords again); the options the solver did not use are logged.
+void applyOptionPetsc(KSP ksp, const SolverOptions& options);
+// What to try when the method stalls (or converged by its own estimate only: `inaccurate`), for the
+// error message.
+std::string stallAdvice(const SolverOptions& options, bool inaccurate);
+
+}  // namespace ma

@@ -1,0 +1,311 @@
+// Krylov methods of Debian's PETSc 3.18 (SOLVEUR METHODE='PETSC' and 'GCPC', docs/solver.md). Only
+// this file sees petscksp.h. The system PETSc iterates on is the diagonal-scaled S A S of the direct
+// solvers (docs/fe.md): the X-FEM enriched rows cut in small fractions come to a unit diagonal, and
+// the residual PETSc tests against RESI_RELA is that of the scaled system; the .mess gives the
+// residual of the assembled one too.
+#include <fmt/format.h>
+#include <petscksp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/Error.hpp"
+#include "core/MemoryUsage.hpp"
+#include "core/Messages.hpp"
+#include "core/Mpi.hpp"
+#include "core/Timing.hpp"
+#include "solver/KrylovSettings.hpp"
+#include "solver/LinearSolverImpl.hpp"
+
+namespace ma {
+
+namespace {
+
+void check(PetscErrorCode code, const char* call) {
+    if (code != 0) throw NumericalError(fmt::format("PETSc: {} failed (PETSc error code {})", call, int(code)));
+}
+
+// PETSc on the MPI the process already runs, once; its errors come back as codes (no printing,
+// no signal handlers of its own). PetscFinalize is not called: it must precede MPI_Finalize, which
+// core/Mpi runs at exit; the objects are destroyed by their owners before.
+void initialisePetsc() {
+    static bool done = false;
+    if (done) return;
+    mpi::initialise();
+    check(PetscOptionsSetValue(nullptr, "-no_signal_handler", "true"), "PetscOptionsSetValue");
+    check(PetscInitializeNoArguments(), "PetscInitializeNoArguments");
+    check(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr), "PetscPushErrorHandler");
+    done = true;
+}
+
+// S A S, the operator PETSc and the factorisation preconditioners see.
+CsrMatrix scaledCopy(const CsrMatrix& A, const std::vector<double>& s) {
+    CsrMatrix B = A;
+    for (int i = 0; i < A.rows; ++i)
+        for (long long k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k)
+            B.values[size_t(k)] = s[size_t(i)] * A.values[size_t(k)] * s[size_t(A.cols[size_t(k)])];
+    return B;
+}
+
+// The MUMPS factors of PRE_COND='LDLT_SP'/'LDLT_DP', applied once per Krylov iteration.
+struct FactorPreconditioner {
+    std::unique_ptr<ScaledDirectSolver> factors;
+    int applications = 0;
+    double seconds = 0.0;
+};
+
+PetscErrorCode applyFactors(PC pc, Vec x, Vec y) {
+    void* context = nullptr;
+    PetscCall(PCShellGetContext(pc, &context));
+    auto* p = static_cast<FactorPreconditioner*>(context);
+    const auto t0 = std::chrono::steady_clock::now();
+    PetscCall(VecCopy(x, y));
+    PetscInt n = 0;
+    PetscCall(VecGetLocalSize(y, &n));
+    PetscScalar* v = nullptr;
+    PetscCall(VecGetArray(y, &v));
+    try {
+        p->factors->applyFactors(std::span<double>(v, size_t(n)));
+    } catch (const std::exception&) {
+        PetscCall(VecRestoreArray(y, &v));
+        return PETSC_ERR_LIB;
+    }
+    PetscCall(VecRestoreArray(y, &v));
+    ++p->applications;
+    p->seconds += secondsSince(t0);
+    return 0;
+}
+
+class PetscKrylovSolver : public LinearSolver {
+public:
+    explicit PetscKrylovSolver(const SolverOptions& options) : options_(options) { initialisePetsc(); }
+    ~PetscKrylovSolver() override { destroy(); }
+
+    std::string name() const override {
+        return fmt::format("{} (ALGORITHME='{}', PRE_COND='{}')", options_.method, krylovAlgorithm(options_),
+                           options_.preconditioner);
+    }
+
+    void factorize(const CsrMatrix& A, MatrixKind kind, std::span<const RowPoint> rowPoints) override {
+        refuseUnsound(options_, kind == MatrixKind::SymmetricIndefinite);
+        const bool keep = factors_.factors && A.rows == scaled_.rows && lastIterations_ >= 0 &&
+                          lastIterations_ <= options_.reacPrecond;
+        A_ = &A;
+        kind_ = kind;
+        rowPoints_.assign(rowPoints.begin(), rowPoints.end());
+        scale_ = options_.diagonalScaling ? symmetricDiagonalScaling(A) : std::vector<double>(size_t(A.rows), 1.0);
+        scaled_ = scaledCopy(A, scale_);
+        rowStart_.assign(scaled_.rowStart.begin(), scaled_.rowStart.end());
+        destroyOperator();
+        check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, A.rows, A.rows, rowStart_.data(), scaled_.cols.data(),
+                                        scaled_.values.data(), &matrix_),
+              "MatCreateSeqAIJWithArrays");
+        check(MatSetOption(matrix_, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+        if (options_.preconditioner == "GAMG" || options_.preconditioner == "ML") attachNearNullSpace();
+        if (keep) {
+            msg().infof(
+                "    {}: preconditioner kept from the previous matrix (its last solve took {} iterations, "
+                "REAC_PRECOND={})",
+                name(), lastIterations_, options_.reacPrecond);
+            check(KSPSetOperators(ksp_, matrix_, matrix_), "KSPSetOperators");
+            stale_ = true;
+            return;
+        }
+        setUp();
+    }
+
+    double solve(std::span<double> rhs) override {
+        const std::vector<double> b(rhs.begin(), rhs.end());
+        for (;;) {
+            const int reason = iterate(b, rhs);
+            if (reason > 0) break;
+            if (!stale_) throw NumericalError(stallText(reason));
+            msg().infof("    {}: {} with the kept preconditioner: computed again for this matrix", name(),
+                        reason == kInaccurate ? "inaccurate" : KSPConvergedReasons[reason]);
+            setUp();
+        }
+        std::vector<double> r;
+        const ResidualInfo res = residualOf(*A_, rhs, b, r, options_.threads);
+        msg().infof(
+            "    {}: residual of the assembled system ||Ku-f||/||f|| = {:.3e}, componentwise backward error {:.2e}",
+            name(), res.normwise, res.componentwise);
+        checkSolution(rhs, options_.resiRela > 0.0 ? 0.0 : res.normwise, options_);
+        return res.normwise;
+    }
+
+private:
+    // A new KSP and preconditioner for the current operator; logs the preconditioner's cost.
+    void setUp() {
+        const auto t0 = std::chrono::steady_clock::now();
+        MemoryPhase phase;
+        destroySolver();
+        check(KSPCreate(PETSC_COMM_SELF, &ksp_), "KSPCreate");
+        check(KSPSetOperators(ksp_, matrix_, matrix_), "KSPSetOperators");
+        configureKrylov(ksp_, options_);
+        PC pc = nullptr;
+        check(KSPGetPC(ksp_, &pc), "KSPGetPC");
+        if (usesFactors(options_)) {
+            SolverOptions f = factorOptions(options_);
+            factors_.factors = makeMumpsFactors(f);
+            factors_.factors->factorize(scaled_, kind_, rowPoints_);
+            factors_.applications = 0, factors_.seconds = 0.0;
+            check(PCSetType(pc, PCSHELL), "PCSetType");
+            check(PCShellSetContext(pc, &factors_), "PCShellSetContext");
+            check(PCShellSetApply(pc, applyFactors), "PCShellSetApply");
+            check(PCShellSetName(pc, options_.preconditioner.c_str()), "PCShellSetName");
+        } else {
+            factors_.factors.reset();
+            configurePreconditioner(pc, options_);
+        }
+        applyOptionPetsc(ksp_, options_);
+        check(KSPSetUp(ksp_), "KSPSetUp (the preconditioner's construction)");
+        stale_ = false;
+        msg().infof("    {}: preconditioner built in {:.3f} s, resident peak {:.0f} MB (from {:.0f} MB){}", name(),
+                    secondsSince(t0), phase.peakMb(), phase.startMb(),
+                    nearNullModes_ ? fmt::format("; near null space: {} rigid body modes", nearNullModes_)
+                                   : std::string());
+    }
+
+    // The rigid body modes of the model (SolverOptions::nearNullSpace) as the near null space of
+    // S A S (y = S^-1 x: each mode divided by S), orthonormalised, for GAMG's and ML's coarse spaces:
+    // without them aggregation sees only constants, and the iterations grow with N (docs/solver.md).
+    void attachNearNullSpace() {
+        std::vector<double> modes = options_.nearNullSpace ? options_.nearNullSpace() : std::vector<double>{};
+        const size_t n = scale_.size();
+        if (n == 0 || modes.size() < n || modes.size() % n != 0) return;
+        const size_t k = modes.size() / n;
+        std::vector<Vec> vecs;
+        for (size_t m = 0; m < k; ++m) {
+            double* v = modes.data() + m * n;
+            for (size_t i = 0; i < n; ++i) v[i] /= scale_[i];
+            for (size_t p = 0; p < m; ++p) {  // modified Gram-Schmidt against the previous modes
+                const double* q = modes.data() + p * n;
+                double dotq = 0.0;
+                for (size_t i = 0; i < n; ++i) dotq += v[i] * q[i];
+                for (size_t i = 0; i < n; ++i) v[i] -= dotq * q[i];
+            }
+            double norm = 0.0;
+            for (size_t i = 0; i < n; ++i) norm += v[i] * v[i];
+            norm = std::sqrt(norm);
+            if (!(norm > 0.0)) continue;
+            for (size_t i = 0; i < n; ++i) v[i] /= norm;
+            Vec vec = nullptr;
+            check(VecCreateSeq(PETSC_COMM_SELF, PetscInt(n), &vec), "VecCreateSeq");
+            PetscScalar* a = nullptr;
+            check(VecGetArray(vec, &a), "VecGetArray");
+            std::copy(v, v + n, a);
+            check(VecRestoreArray(vec, &a), "VecRestoreArray");
+            vecs.push_back(vec);
+        }
+        MatNullSpace space = nullptr;
+        const PetscErrorCode code =
+            MatNullSpaceCreate(PETSC_COMM_SELF, PETSC_FALSE, PetscInt(vecs.size()), vecs.data(), &space);
+        if (code == 0) MatSetNearNullSpace(matrix_, space), MatNullSpaceDestroy(&space);
+        for (Vec& v : vecs) VecDestroy(&v);
+        check(code, "MatNullSpaceCreate");
+        nearNullModes_ = int(vecs.size());
+    }
+
+    // KSPSolve on S A S y = S b, x = S y; returns PETSc's converged reason. lastResidual_ is the true
+    // relative residual ||S b - S A S y|| / ||S b||, whatever norm the method iterated on.
+    int iterate(const std::vector<double>& b, std::span<double> x) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const size_t n = size_t(A_->rows);
+        std::vector<double> sb(n), y(n, 0.0), r(n);
+        for (size_t i = 0; i < n; ++i) sb[i] = scale_[i] * b[i];
+        Vec vb = nullptr, vy = nullptr;
+        check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, PetscInt(n), sb.data(), &vb), "VecCreateSeqWithArray");
+        check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, PetscInt(n), y.data(), &vy), "VecCreateSeqWithArray");
+        const int appliedBefore = factors_.applications;
+        const double applyBefore = factors_.seconds;
+        const PetscErrorCode code = KSPSolve(ksp_, vb, vy);
+        KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+        PetscInt iterations = 0;
+        PetscReal estimate = 0.0;
+        KSPGetConvergedReason(ksp_, &reason);
+        KSPGetIterationNumber(ksp_, &iterations);
+        KSPGetResidualNorm(ksp_, &estimate);
+        VecDestroy(&vb), VecDestroy(&vy);
+        check(code, "KSPSolve");
+        scaled_.multiply(y, r);
+        long double num = 0.0L, den = 0.0L;
+        for (size_t i = 0; i < n; ++i) num += (sb[i] - r[i]) * (sb[i] - r[i]), den += sb[i] * sb[i];
+        lastIterations_ = int(iterations);
+        lastResidual_ = double(den > 0.0L ? std::sqrt(num / den) : std::sqrt(num));
+        for (size_t i = 0; i < n; ++i) x[i] = scale_[i] * y[i];
+        msg().infof(
+            "    {} solve {:.3f} s: {} iterations, {}, relative residual of the scaled system {:.3e} (the method's "
+            "own estimate {:.3e}; RESI_RELA={:g}){}",
+            name(), secondsSince(t0), lastIterations_, KSPConvergedReasons[reason], lastResidual_,
+            den > 0.0L ? double(estimate) / double(std::sqrt(den)) : double(estimate), options_.resiRela,
+            factors_.factors
+                ? fmt::format("; {} applications of the {} factors, {:.3f} s", factors_.applications - appliedBefore,
+                              options_.preconditioner, factors_.seconds - applyBefore)
+                : std::string());
+        // Converged by its own estimate but not in truth (GMRES right-preconditioned by single-precision
+        // factors rebuilds x with a preconditioner that is not exactly linear): not an answer either.
+        if (reason > 0 && lastResidual_ > kTrueResidualSlack * options_.resiRela) return kInaccurate;
+        return int(reason);
+    }
+
+    std::string stallText(int reason) const {
+        const std::string what =
+            reason == kInaccurate
+                ? fmt::format(
+                      "converged by its own residual estimate after {} iterations, but the true relative "
+                      "residual {:.3e} is above {} x SOLVEUR/RESI_RELA = {:g}",
+                      lastIterations_, lastResidual_, kTrueResidualSlack, options_.resiRela)
+                : fmt::format(
+                      "{} after {} iterations, relative residual {:.3e} above SOLVEUR/RESI_RELA = {:g} "
+                      "(NMAX_ITER={})",
+                      KSPConvergedReasons[reason], lastIterations_, lastResidual_, options_.resiRela,
+                      options_.maxIterations);
+        return fmt::format("linear solver {} did not converge: {}. {}", name(), what,
+                           stallAdvice(options_, reason == kInaccurate));
+    }
+
+    void destroyOperator() {
+        if (matrix_) MatDestroy(&matrix_);
+    }
+    void destroySolver() {
+        if (ksp_) KSPDestroy(&ksp_);
+    }
+    void destroy() {
+        if (!mpi::running()) return;
+        destroySolver();
+        destroyOperator();
+    }
+
+    // iterate()'s reason for "converged, but the true residual is above kTrueResidualSlack x RESI_RELA"
+    // (the recursive residual of a converged Krylov method drifts from the true one by a few units).
+    static constexpr int kInaccurate = -1000;
+    static constexpr double kTrueResidualSlack = 10.0;
+
+    SolverOptions options_;
+    const CsrMatrix* A_ = nullptr;
+    MatrixKind kind_ = MatrixKind::SymmetricPositiveDefinite;
+    std::vector<RowPoint> rowPoints_;
+    std::vector<double> scale_;
+    CsrMatrix scaled_;
+    std::vector<PetscInt> rowStart_;
+    Mat matrix_ = nullptr;
+    KSP ksp_ = nullptr;
+    FactorPreconditioner factors_;
+    int nearNullModes_ = 0;
+    bool stale_ = false;  // the preconditioner is that of a previous matrix (REAC_PRECOND)
+    int lastIterations_ = -1;
+    double lastResidual_ = 0.0;
+};
+
+}  // namespace
+
+std::unique_ptr<LinearSolver> makePetscSolver(const SolverOptions& options) {
+    refuseUnsound(options, false);
+    return std::make_unique<PetscKrylovSolver>(options);
+}
+
+}  // namespace ma
