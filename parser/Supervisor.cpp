@@ -157,11 +157,6 @@ void executeCommandFile(RunState& run) {
     if (code.is_none()) return;
     if (!checkCommandFileStatically(source, run)) return;  // every visible problem at once, nothing run
     py::dict globals;
-    // code_aster runs command files after `from math import *` (its legacy AUTO_IMPORT): files call
-    // cos, atan2, pi... in their own Python functions without importing them.
-    py::dict math = py::module_::import("math").attr("__dict__");
-    for (auto [key, value] : math)
-        if (!py::str(key).cast<std::string>().starts_with("_")) globals[key] = value;
     globals["__builtins__"] = builtins;
     globals["__name__"] = "__main__";
     globals["__file__"] = fileName;
