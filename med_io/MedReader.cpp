@@ -237,6 +237,18 @@ private:
         cellFamily_.insert(cellFamily_.end(), fam.begin(), fam.end());
     }
 
+    // A family of a MED 2.3 file (gmsh writes them; MEDfamilyInfo has no 2.3 implementation): its
+    // attributes are read and ignored.
+    bool family23Info(int f, char* famName, med_int& famNum, std::vector<char>& groups) {
+        const med_int na = MEDnFamily23Attribute(fid_, mname_, f);
+        if (na < 0) return false;
+        const size_t n = size_t(std::max<med_int>(na, 1));
+        std::vector<med_int> numbers(n), values(n);
+        std::vector<char> descriptions(n * MED_COMMENT_SIZE + 1, '\0');
+        return MEDfamily23Info(fid_, mname_, f, famName, numbers.data(), values.data(), descriptions.data(), &famNum,
+                               groups.data()) >= 0;
+    }
+
     // Families -> group indices.
     void readFamilies() {
         const med_int nfam = MEDnFamily(fid_, mname_);
@@ -247,7 +259,8 @@ private:
             char famName[MED_NAME_SIZE + 1] = {};
             med_int famNum = 0;
             std::vector<char> groups(size_t(std::max<med_int>(ng, 1)) * MED_LNAME_SIZE + 1, '\0');
-            if (MEDfamilyInfo(fid_, mname_, int(f), famName, &famNum, groups.data()) < 0)
+            if (MEDfamilyInfo(fid_, mname_, int(f), famName, &famNum, groups.data()) < 0 &&
+                !family23Info(int(f), famName, famNum, groups))
                 damaged(path_, "the families of " + where_);
             Family& fam = families_[famNum];
             for (med_int g = 0; g < ng; ++g) {

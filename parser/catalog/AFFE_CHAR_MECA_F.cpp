@@ -6,7 +6,8 @@ namespace ma::catalog_entries {
 void AFFE_CHAR_MECA_F(Catalog& c) {
     c.add(cmd("AFFE_CHAR_MECA_F", kMechanicalLoad)
               .keywords(loadKeywords(true))
-              .rules({auMoinsUn({"DDL_IMPO", "PRES_REP", "FORCE_INTERNE"})}));
+              .rules({auMoinsUn({"DDL_IMPO", "FACE_IMPO", "ARETE_IMPO", "LIAISON_DDL", "LIAISON_GROUP", "PRES_REP",
+                                   "FORCE_CONTOUR", "FORCE_FACE", "FORCE_ARETE", "FORCE_INTERNE"})}));
 }
 
 }  // namespace ma::catalog_entries

@@ -52,11 +52,11 @@ void DEFI_FISS_XFEM(Catalog& c) {
                    })).rules({unParmi({"FONC_LN", "CHAM_NO_LSN", "FORM_FISS"})}),
                    fact("JONCTION").keywords({CO("FISSURE", {kCrack}).many().mandatory(),
                                               R("POINT").max(3).mandatory()}),
-                   info({1, 2, 3})},
+                   TXM("GROUP_MA_ENRI"), info({1, 2, 3})},
                   unsupported({"TYPE_ENRI_FOND", "RAYON_ENRI", "NB_COUCHES"},
                               "crack-tip enrichment is not implemented yet (issue 26, step 2)"),
-                  unsupported({"GROUP_MA_ENRI", "FOND_FISS", "FISS_INITIALE", "ORIE_FOND", "CHAM_NO_FOND",
-                               "MAILLAGE_GRILLE", "FISS_GRILLE"},
+                  unsupported({"FOND_FISS", "FISS_INITIALE", "ORIE_FOND", "CHAM_NO_FOND", "MAILLAGE_GRILLE",
+                               "FISS_GRILLE"},
                               "miniaster enriches every node the discontinuity cuts, on the model's mesh"),
               }))
               .rules({unParmi({"MAILLAGE", "MODELE"})}));

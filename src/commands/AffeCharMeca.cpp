@@ -1,10 +1,14 @@
-// AFFE_CHAR_MECA: DDL_IMPO, PRES_REP, FORCE_INTERNE with real values (commands_spec §8.5).
+// AFFE_CHAR_MECA: DDL_IMPO, FORCE_INTERNE here; FACE_IMPO, ARETE_IMPO, LIAISON_DDL, LIAISON_GROUP
+// (RelationLoads.cpp); PRES_REP, FORCE_CONTOUR, FORCE_FACE, FORCE_ARETE (BoundaryLoads.cpp); real
+// values (commands_spec §8.5).
 // The same reader serves AFFE_CHAR_MECA_F (AffeCharMecaF.cpp), where values are functions of
 // X, Y, Z, INST evaluated in batch when the analysis needs them.
 #include <fmt/format.h>
 
+#include "commands/BoundaryLoads.hpp"
 #include "commands/LegacyContactLoad.hpp"
 #include "commands/MechanicsKeywords.hpp"
+#include "commands/RelationLoads.hpp"
 #include "core/Messages.hpp"
 #include "fe/DofNumbering.hpp"
 #include "fe/MechanicalLoad.hpp"
@@ -65,27 +69,11 @@ ConceptPtr buildMechanicalLoad(const KeywordSet& kw, bool functions) {
         msg().infof("    {}: {} component(s) on {} node(s)", occ.path(), components, nodes.size());
     }
 
-    // Boundary and volume elements of the model, by cell.
-    std::vector<char> isSkin(mesh.cellCount(), 0), isVolume(mesh.cellCount(), 0);
-    for (const auto& e : model->skinElements) isSkin[e.cell] = 1;
+    readRelationLoads(kw, functions, modelNodes, *load);
+    readSurfaceLoads(kw, functions, *load);
+
+    std::vector<char> isVolume(mesh.cellCount(), 0);
     for (const auto& e : model->elements) isVolume[e.cell] = 1;
-
-    for (const auto& occ : kw.factor("PRES_REP")) {
-        std::string what;
-        PressureLoad p;
-        p.path = occ.path();
-        for (int c : selectedCells(mesh, occ, &what))
-            if (isSkin[c]) p.cells.push_back(c);
-        if (p.cells.empty())
-            throw UserError(
-                fmt::format("{} ({}): no boundary element of the model {} there; the boundary cells must "
-                            "be listed in AFFE_MODELE",
-                            occ.path(), what, model->name));
-        readValue(occ, "PRES", functions, p.value, p.function);
-        msg().infof("    {}: pressure on {} boundary element(s) ({})", occ.path(), p.cells.size(), what);
-        load->pressures.push_back(std::move(p));
-    }
-
     for (const auto& occ : kw.factor("FORCE_INTERNE")) {
         std::string what;
         VolumeForce f;

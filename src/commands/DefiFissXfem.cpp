@@ -172,7 +172,17 @@ std::shared_ptr<xfem::Crack> interfaceOf(const KeywordSet& kw, std::shared_ptr<c
         for (size_t i = 0; i < point.size(); ++i) junction.point[i] = point[i];
         junction.keywordPath = j.path().empty() ? "JONCTION" : j.path();
     }
-    return xfem::buildCrack(mesh, std::move(lsn), jonction.empty() ? nullptr : &junction);
+    // GROUP_MA_ENRI: the cells where the interface may enrich (code_aster's xlenri; all cells without it).
+    std::vector<char> zone;
+    if (kw.has("GROUP_MA_ENRI")) {
+        zone.assign(size_t(mesh->cellCount()), 0);
+        const auto& cells = namedGroup(*mesh, GroupKind::Cells, kw.text("GROUP_MA_ENRI"), kw.pathOf("GROUP_MA_ENRI"));
+        for (int c : cells) zone[size_t(c)] = 1;
+        msg().infof("    GROUP_MA_ENRI: the interface enriches only in the {} cell(s) of {}", cells.size(),
+                    kw.text("GROUP_MA_ENRI"));
+    }
+    return xfem::buildCrack(mesh, std::move(lsn), jonction.empty() ? nullptr : &junction,
+                            zone.empty() ? nullptr : &zone);
 }
 
 ConceptPtr defiFissXfem(const KeywordSet& kw, CommandContext& ctx) {
@@ -194,6 +204,10 @@ ConceptPtr defiFissXfem(const KeywordSet& kw, CommandContext& ctx) {
             throw NotImplemented(kw.pathOf("JONCTION") +
                                  ": junctions of a crack with a front (TYPE_DISCONTINUITE='FISSURE') are not "
                                  "implemented; junctions join interfaces (TYPE_DISCONTINUITE='INTERFACE')");
+        if (kw.has("GROUP_MA_ENRI"))
+            throw NotImplemented(kw.pathOf("GROUP_MA_ENRI") +
+                                 ": an enrichment zone for a crack with a front (TYPE_DISCONTINUITE='FISSURE') is "
+                                 "not implemented; it restricts interfaces (TYPE_DISCONTINUITE='INTERFACE')");
         crack = xfem::buildCrackWithFront(mesh, std::move(ls.lsn), std::move(ls.lst));
     } else {
         crack = interfaceOf(kw, mesh, std::move(ls.lsn));

@@ -221,14 +221,18 @@ ConceptPtr imprResuGmsh(const KeywordSet& kw, CommandContext& ctx) {
     if (!mpi::isRoot()) return nullptr;  // rank 0 writes (docs/mpi.md)
     const bool append = gmshFilesOfThisRun().count(path) > 0;
 
-    std::string text = append ? readExisting(path) : gmsh::header(version);
+    std::string text = append ? readExisting(path) : std::string();
+    bool headerWritten = append;
     int written = 0;
     for (const auto& occ : kw.factor("RESU")) {
-        if (occ.has("MAILLAGE"))
-            throw NotImplemented(occ.pathOf("MAILLAGE") +
-                                 ": FORMAT='GMSH' writes result fields (RESULTAT, CHAM_GD); "
-                                 "the mesh alone (gmsh's mesh format 1.0) is not written by "
-                                 "miniaster");
+        if (occ.has("MAILLAGE")) {  // the mesh alone, gmsh's mesh format 1.0 (code_aster's irmgms)
+            const auto mesh = occ.object<Mesh>("MAILLAGE");
+            text += gmsh::meshFormat1(*mesh);
+            msg().infof("    mesh {} ({} nodes, {} cells) in gmsh's mesh format 1.0", mesh->name, mesh->nodeCount(),
+                        mesh->cellCount());
+            if (!occ.has("RESULTAT") && !occ.has("CHAM_GD")) continue;
+        }
+        if (!headerWritten) text += gmsh::header(version), headerWritten = true;
         // TYPE_CHAM has no catalog default: the RESU keywords are shared with FORMAT='MED', which has
         // none; code_aster's default for GMSH is 'SCALAIRE'.
         const std::string type = occ.has("TYPE_CHAM") ? occ.text("TYPE_CHAM") : std::string("SCALAIRE");

@@ -60,6 +60,14 @@ void computePointGeometry(const Mesh& mesh, int cell, int spaceDim, bool boundar
         geo.xyz[p] = x;
         double J[3][3] = {};
         jacobian(3, rdim, n, X, d, J);
+        if (boundary && rdim + 2 == spaceDim) {  // an edge of a 3D model (FORCE_ARETE): no normal
+            geo.normal[p] = {0.0, 0.0, 0.0};
+            geo.weight[p] = integration.refWeights[p] * jacobianMeasure(J, rdim);
+            if (!(geo.weight[p] > 0.0))
+                throw NumericalError(fmt::format("edge cell {} ({}) is degenerate (zero length)", mesh.cellNames[cell],
+                                                 cellTypeName(type)));
+            continue;
+        }
         if (boundary) {
             Vec3 nrm = boundaryNormal(J, rdim);
             const double measure = norm(nrm);

@@ -3,6 +3,7 @@
 // more unknowns per node, sub-cell integration of cut elements, and what DDL_IMPO means on
 // enriched nodes. The engine (src/fe) knows
 // only this interface, so fe does not depend on xfem.
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,7 +13,19 @@
 
 namespace ma {
 
-class Model;  // fe/Model.hpp
+class Model;    // fe/Model.hpp
+class Concept;  // core/Concept.hpp
+
+// The points of one side of an interface inside one parent cell, for loads on the lips
+// (PRES_REP FISSURE): the faces of that side's integration sub-cells that lie on the interface.
+struct LipIntegration {
+    // Parent cell, points in its reference element, the node slots and psi of that side; the
+    // physical weights are `weight` (refWeights unused).
+    ElementIntegration element;
+    std::vector<std::array<double, 3>> xyz;     // physical points
+    std::vector<double> weight;                 // physical weights (length or area of the faces)
+    std::vector<std::array<double, 3>> normal;  // unit, out of this side's material (towards the other lip)
+};
 
 class Enrichment {
 public:
@@ -40,6 +53,9 @@ public:
                            std::vector<LinearRelation>& /*out*/) const {
         return false;
     }
+    // The lips of `crack` (a fiss_xfem of this model): appends one LipIntegration per side and
+    // parent cell; false when `crack` is not an interface of this model.
+    virtual bool lipIntegration(const Concept& /*crack*/, std::vector<LipIntegration>& /*out*/) const { return false; }
 };
 
 }  // namespace ma

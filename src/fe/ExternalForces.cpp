@@ -2,7 +2,10 @@
 
 #include <array>
 
+#include "core/Error.hpp"
 #include "fe/ElasticityKernels.hpp"
+#include "fe/Enrichment.hpp"
+#include "mesh/ShapeFunctions.hpp"
 
 namespace ma {
 
@@ -13,13 +16,52 @@ public:
     ExternalForceAssembler(const Discretisation& space, std::vector<double>& f) : space_(space), f_(f) {}
 
     void addPressure(const PressureLoad& pr, double factor, double inst) {
-        std::vector<double> values;
-        if (pr.function) values = evaluateAtPoints(*pr.function, pointsOf(pr.cells, true), inst);
+        const bool anyFunction = pr.function || pr.shear.function;
+        const auto pts = anyFunction ? pointsOf(pr.cells, true) : std::vector<std::array<double, 3>>{};
+        const auto pres = valuesAt({pr.value, pr.function}, pts, inst);
+        const auto shear = valuesAt(pr.shear, pts, inst);
         size_t next = 0;
         distribute(pr.cells, true, [&](size_t p, const PointGeometry& g) {
-            const double pres = factor * (pr.function ? values[next++] : pr.value);
-            return std::array<double, 3>{-pres * g.normal[p][0], -pres * g.normal[p][1], -pres * g.normal[p][2]};
+            const size_t i = next++;
+            return traction(g.normal[p], factor * pick(pres, i, pr.value), factor * pick(shear, i, pr.shear.value));
         });
+    }
+
+    void addSurfaceForce(const SurfaceForce& sf, double factor, double inst) {
+        bool anyFunction = false;
+        for (const auto& c : sf.component) anyFunction = anyFunction || c.function;
+        const auto pts = anyFunction ? pointsOf(sf.cells, true) : std::vector<std::array<double, 3>>{};
+        std::array<std::vector<double>, 3> values;
+        for (int c = 0; c < 3; ++c) values[c] = valuesAt(sf.component[c], pts, inst);
+        size_t next = 0;
+        distribute(sf.cells, true, [&](size_t, const PointGeometry&) {
+            std::array<double, 3> t{};
+            for (int c = 0; c < 3; ++c) t[c] = factor * pick(values[c], next, sf.component[c].value);
+            ++next;
+            return t;
+        });
+    }
+
+    // Both lips of an interface: each side's faces with that side's psi and outward normal.
+    void addLipPressure(const LipPressure& lp, double factor, double inst) {
+        const Model& model = space_.model();
+        std::vector<LipIntegration> lips;
+        if (!model.enrichment || !model.enrichment->lipIntegration(*lp.crack, lips))
+            throw InternalError(lp.path + ": the interface is not one of the model's");
+        for (const auto& lip : lips) {
+            if (!lp.onlyCells.empty() && !lp.onlyCells[size_t(lip.element.cell)]) continue;
+            const auto pres = valuesAt(lp.pressure, lip.xyz, inst);
+            const auto shear = valuesAt(lp.shear, lip.xyz, inst);
+            localDofs(space_.mesh(), space_.numbering(), lip.element, dofs_);
+            const int n = lip.element.nodeCount;
+            std::vector<double> N(static_cast<size_t>(n));
+            for (size_t p = 0; p < lip.xyz.size(); ++p) {
+                shapeValues(space_.mesh().cellTypes[size_t(lip.element.cell)], lip.element.refPoints[p], N);
+                const auto t = traction(lip.normal[p], factor * pick(pres, p, lp.pressure.value),
+                                        factor * pick(shear, p, lp.shear.value));
+                addAtPoint(lip.element, int(p), N.data(), lip.weight[p], t);
+            }
+        }
     }
 
     void addVolumeForce(const VolumeForce& vf, double factor, double inst) {
@@ -49,19 +91,35 @@ private:
             computePointGeometry(space_.mesh(), cell, dim, boundary, ei_, geo_);
             localDofs(space_.mesh(), space_.numbering(), ei_, dofs_);
             const int n = ei_.nodeCount;
-            for (size_t p = 0; p < ei_.refPoints.size(); ++p) {
-                const std::array<double, 3> t = density(p, geo_);
-                const double w = geo_.weight[p];
-                int i = 0;
-                for (int a = 0; a < n; ++a) {
-                    const double Na = geo_.N[p * n + a];
-                    for (int k = 0; k < ei_.slots[a]; ++k) {
-                        const double pa = ei_.multiplier(int(p), a, k);
-                        for (int c = 0; c < dim; ++c, ++i) f_[dofs_[i]] += w * pa * Na * t[c];
-                    }
-                }
-            }
+            for (size_t p = 0; p < ei_.refPoints.size(); ++p)
+                addAtPoint(ei_, int(p), &geo_.N[p * size_t(n)], geo_.weight[p], density(p, geo_));
         }
+    }
+
+    // f += w psi_ak N_a t at one point of an element (dofs_ holds the element's dofs).
+    void addAtPoint(const ElementIntegration& ei, int p, const double* N, double w, const std::array<double, 3>& t) {
+        const int dim = space_.dim();
+        int i = 0;
+        for (int a = 0; a < ei.nodeCount; ++a)
+            for (int k = 0; k < ei.slots[size_t(a)]; ++k) {
+                const double pa = ei.multiplier(p, a, k);
+                for (int c = 0; c < dim; ++c, ++i) f_[size_t(dofs_[size_t(i)])] += w * pa * N[a] * t[size_t(c)];
+            }
+    }
+
+    // Traction of a pressure p and (plane models) a shear c on a surface of unit outward normal m.
+    static std::array<double, 3> traction(const std::array<double, 3>& m, double p, double c) {
+        return {-p * m[0] - c * m[1], -p * m[1] + c * m[0], -p * m[2]};
+    }
+
+    // Function values at the points (empty for a constant value).
+    static std::vector<double> valuesAt(const LoadValue& v, const std::vector<std::array<double, 3>>& pts,
+                                        double inst) {
+        if (!v.function) return {};
+        return evaluateAtPoints(*v.function, pts, inst);
+    }
+    static double pick(const std::vector<double>& values, size_t i, double constant) {
+        return values.empty() ? constant : values[i];
     }
 
     std::vector<std::array<double, 3>> pointsOf(const std::vector<int>& cells, bool boundary) {
@@ -91,6 +149,8 @@ void assembleExternalForces(const Discretisation& space, const std::vector<LoadC
         const double factor = lc.factor(inst);
         if (factor == 0.0) continue;
         for (const auto& pr : lc.load->pressures) assembler.addPressure(pr, factor, inst);
+        for (const auto& sf : lc.load->surfaceForces) assembler.addSurfaceForce(sf, factor, inst);
+        for (const auto& lp : lc.load->lipPressures) assembler.addLipPressure(lp, factor, inst);
         for (const auto& vf : lc.load->volumeForces) assembler.addVolumeForce(vf, factor, inst);
     }
 }

@@ -37,7 +37,35 @@ void MechanicalLoad::appendRelations(double inst, std::vector<LinearRelation>& o
         }
         for (size_t i = 0; i < nodes.size(); ++i) out.push_back({{{nodes[i], request.component, 1.0}}, values[i]});
     }
+    appendDirectional(inst, out);
+    for (const auto& request : relationRequests) {
+        double value = request.value.value;
+        if (request.value.function)  // a function of INST (X, Y, Z: the first node's, if it asks)
+            value = evaluateAtPoints(*request.value.function, {mesh.coords[request.terms.front().node]}, inst)[0];
+        out.push_back({request.terms, value});
+    }
     out.insert(out.end(), relations.begin(), relations.end());
+}
+
+void MechanicalLoad::appendDirectional(double inst, std::vector<LinearRelation>& out) const {
+    const Mesh& mesh = *model->mesh;
+    static const char* const kComponents[] = {"DX", "DY", "DZ"};
+    for (const auto& request : directional) {
+        std::vector<double> values(request.nodes.size(), request.value.value);
+        if (request.value.function) {
+            std::vector<std::array<double, 3>> points;
+            for (int n : request.nodes) points.push_back(mesh.coords[n]);
+            values = evaluateAtPoints(*request.value.function, points, inst);
+        }
+        for (size_t i = 0; i < request.nodes.size(); ++i) {
+            LinearRelation r;
+            for (int c = 0; c < model->dim; ++c)
+                if (request.direction[i][c] != 0.0)
+                    r.terms.push_back({request.nodes[i], kComponents[c], request.direction[i][c]});
+            r.value = values[i];
+            out.push_back(std::move(r));
+        }
+    }
 }
 
 }  // namespace ma

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <map>
 
+#include "core/Error.hpp"
+
 namespace ma::gmsh {
 
 namespace {
@@ -198,6 +200,69 @@ std::string view(const Mesh& mesh, const View& v, int version, std::vector<CellT
         for (const auto& [cell, piece] : byKind[size_t(kind)]) appendRecord(out, mesh, v, cell, piece);
     }
     return out + "$EndView\n";
+}
+
+namespace {
+
+int meshFormat1Type(CellType t) {
+    switch (t) {
+        case CellType::POI1: return 15;
+        case CellType::SEG2: return 1;
+        case CellType::TRIA3: return 2;
+        case CellType::QUAD4: return 3;
+        case CellType::TETRA4: return 4;
+        case CellType::HEXA8: return 5;
+        case CellType::PENTA6: return 6;
+        case CellType::PYRA5: return 7;
+        default: return 0;
+    }
+}
+
+// Region number of each cell (irmgms): groups in creation order, the last one wins.
+std::vector<int> cellRegions(const Mesh& mesh) {
+    int largest = 10000;
+    auto numbered = [](const std::string& name, int& n) {
+        if (name.size() < 3 || name.find_first_not_of("0123456789", 2) != std::string::npos) return false;
+        n = std::stoi(name.substr(2));
+        return true;
+    };
+    for (const auto& g : mesh.cellGroups.names())
+        if (int n = 0; numbered(g, n)) largest = std::max(largest, n);
+    std::vector<int> region(size_t(mesh.cellCount()), 10000);
+    int k = 0;
+    for (const auto& g : mesh.cellGroups.names()) {
+        ++k;
+        int n = 0;
+        const int number = numbered(g, n) ? n : k + largest;
+        for (int c : mesh.cellGroups.get(g)) region[size_t(c)] = number;
+    }
+    return region;
+}
+
+}  // namespace
+
+std::string meshFormat1(const Mesh& mesh) {
+    std::string out = fmt::format("$NOD\n{}\n", mesh.nodeCount());
+    for (int n = 0; n < mesh.nodeCount(); ++n) {
+        const auto& x = mesh.coords[size_t(n)];
+        out += fmt::format(" {:>7} {:23.16E} {:23.16E} {:23.16E}\n", n + 1, x[0], x[1], mesh.dim == 3 ? x[2] : 0.0);
+    }
+    out += "$ENDNOD\n$ELM\n" + std::to_string(mesh.cellCount()) + "\n";
+    const auto region = cellRegions(mesh);
+    for (int c = 0; c < mesh.cellCount(); ++c) {
+        const int type = meshFormat1Type(mesh.cellTypes[size_t(c)]);
+        if (type == 0)
+            throw NotImplemented(
+                fmt::format("FORMAT='GMSH' of the mesh {}: cell {} is a {}; miniaster writes linear "
+                            "cells only (code_aster splits quadratic ones)",
+                            mesh.name, mesh.cellNames[size_t(c)], cellTypeName(mesh.cellTypes[size_t(c)])));
+        const auto nodes = mesh.cellNodes(c);
+        out += fmt::format(" {:>7} {:2d} {:8d} {:8d} {:8d}", c + 1, type, region[size_t(c)], region[size_t(c)],
+                           nodes.size());
+        for (int n : nodes) out += fmt::format(" {:>7}", n + 1);
+        out += "\n";
+    }
+    return out + "$ENDELM\n";
 }
 
 }  // namespace ma::gmsh

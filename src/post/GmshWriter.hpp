@@ -31,6 +31,13 @@ std::string header(int version);
 // in `skipped`; quadratic cells are split into linear ones as code_aster's irgmtb does.
 std::string view(const Mesh& mesh, const View& v, int version, std::vector<CellType>* skipped = nullptr);
 
+// The mesh alone in gmsh's mesh format 1.0 ($NOD/$ELM), as code_aster's irmgms writes it for
+// IMPR_RESU(FORMAT='GMSH', RESU=_F(MAILLAGE=...)): nodes and cells numbered from 1 in mesh order, the
+// physical and elementary region of a cell the number of its last cell group (a group named GM<n>
+// has number n, the k-th other group k + max(10000, the largest such n); 10000 without a group).
+// Linear cells only (NotImplemented for quadratic ones, which code_aster splits).
+std::string meshFormat1(const Mesh& mesh);
+
 // code_aster's number format E15.7E3 (" 1.0000000E+000"); |v| <= 1e-99 is written as 0.
 std::string fortranE(double v);
 

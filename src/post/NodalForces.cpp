@@ -28,7 +28,7 @@ std::vector<int> flaggedOnly(const std::vector<int>& cells, const std::vector<ch
     return out;
 }
 
-// Each load with its pressures and volume forces on the flagged cells only.
+// Each load with its pressures and forces on the flagged cells only.
 std::vector<LoadCase> restrictLoads(const std::vector<LoadCase>& loads, const std::vector<char>& cells) {
     if (std::all_of(cells.begin(), cells.end(), [](char c) { return c != 0; })) return loads;
     std::vector<LoadCase> out;
@@ -36,6 +36,8 @@ std::vector<LoadCase> restrictLoads(const std::vector<LoadCase>& loads, const st
         auto load = std::make_shared<MechanicalLoad>(*lc.load);
         for (auto& p : load->pressures) p.cells = flaggedOnly(p.cells, cells);
         for (auto& v : load->volumeForces) v.cells = flaggedOnly(v.cells, cells);
+        for (auto& f : load->surfaceForces) f.cells = flaggedOnly(f.cells, cells);
+        for (auto& l : load->lipPressures) l.onlyCells = cells;
         out.push_back({std::move(load), lc.multiplier});
     }
     return out;

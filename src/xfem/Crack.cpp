@@ -166,11 +166,13 @@ int snapLevelSet(const Mesh& mesh, std::vector<double>& lsn) {
 
 namespace {
 
-// Cut cells (§1.4): some vertex has LSN * LSN(first vertex) <= 0.
-std::vector<int> cutCellsOf(const Mesh& mesh, const std::vector<double>& ls) {
+// Cut cells (§1.4): some vertex has LSN * LSN(first vertex) <= 0; only cells of the enrichment zone
+// (GROUP_MA_ENRI, code_aster's xmafis) when there is one.
+std::vector<int> cutCellsOf(const Mesh& mesh, const std::vector<double>& ls, const std::vector<char>* zone) {
     std::vector<int> cells;
     for (int c = 0; c < mesh.cellCount(); ++c) {
         if (mesh.cellTypes[c] == CellType::POI1) continue;
+        if (zone && !(*zone)[size_t(c)]) continue;
         const auto nodes = mesh.cellNodes(c);
         const double pivot = ls[nodes[0]];
         for (size_t k = 1; k < nodes.size(); ++k)
@@ -206,7 +208,7 @@ std::vector<int> heavisideCellsOf(const Mesh& mesh, const std::vector<unsigned c
 }  // namespace
 
 std::shared_ptr<Crack> buildCrack(const std::shared_ptr<const Mesh>& meshPtr, std::vector<double> lsn,
-                                  const JunctionInput* junction) {
+                                  const JunctionInput* junction, const std::vector<char>* zone) {
     const Mesh& mesh = *meshPtr;
     auto crack = std::make_shared<Crack>();
     crack->mesh = meshPtr;
@@ -218,8 +220,9 @@ std::shared_ptr<Crack> buildCrack(const std::shared_ptr<const Mesh>& meshPtr, st
     const auto& ls = crack->lsn;
     if (junction && !junction->masters.empty()) crack->masters = junctionMasters(mesh, *junction);
 
-    crack->cutCells = cutCellsOf(mesh, ls);
-    if (crack->cutCells.empty()) throw UserError(noCutCellText(mesh, "interface"));
+    crack->cutCells = cutCellsOf(mesh, ls, zone);
+    if (crack->cutCells.empty())
+        throw UserError(noCutCellText(mesh, zone ? "interface (in GROUP_MA_ENRI)" : "interface"));
     crack->lsnGradient = nodalGradient(mesh, ls, &crack->cutCells);
 
     // Node status (§1.5): min * max of LSN over the vertices of the cut cells around the node < 0.
@@ -345,7 +348,7 @@ std::shared_ptr<Crack> buildCrackWithFront(const std::shared_ptr<const Mesh>& me
     crack->adjustedLevelSets = snapLevelSet(mesh, lsn) + snapLevelSet(mesh, lst);
     crack->lsn = std::move(lsn);
     crack->lst = std::move(lst);
-    crack->cutCells = cutCellsOf(mesh, crack->lsn);
+    crack->cutCells = cutCellsOf(mesh, crack->lsn, nullptr);
     if (crack->cutCells.empty()) throw UserError(noCutCellText(mesh, "crack"));
     crack->lsnGradient = nodalGradient(mesh, crack->lsn, &crack->cutCells);
     crack->nodeStatus = crackNodeStatus(mesh, crack->lsn, crack->lst, crack->cutCells);

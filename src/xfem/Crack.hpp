@@ -60,9 +60,10 @@ int snapLevelSet(const Mesh& mesh, std::vector<double>& lsn);
 // Builds an interface from its (unsnapped) nodal level set: snapping, gradient, cut cells, node
 // status with the junction correction, Heaviside cells. UserError when the interface does not
 // cut the mesh, when POINT lies in no cell or on a master interface (the master's level set
-// interpolated at POINT, which also gives the side).
+// interpolated at POINT, which also gives the side). `zone` (GROUP_MA_ENRI, flags by cell): only its
+// cells are cut cells, hence only their nodes are enriched; null: the whole mesh.
 std::shared_ptr<Crack> buildCrack(const std::shared_ptr<const Mesh>& mesh, std::vector<double> lsn,
-                                  const JunctionInput* junction);
+                                  const JunctionInput* junction, const std::vector<char>* zone = nullptr);
 
 // Builds a crack (TYPE_DISCONTINUITE='FISSURE', no junction) from its unsnapped nodal level sets:
 // both snapped as code_aster's xajuls does, cut cells, node status (xstano), tip cells, fronts.

@@ -297,7 +297,11 @@ std::shared_ptr<NodalField> visualisationDisplacement(const XfemModel* xm, const
         for (int j = 0; j < dim; ++j) field->set(v, j, u[j]);
         if (withContact && vn.onCrack && vn.original < 0) {
             const double lagsC = contactPressure(*xm, *input.material, model.modelisation, vn, value);
-            if (!std::isnan(lagsC)) field->set(v, dim, lagsC);
+            if (!std::isnan(lagsC)) {
+                field->set(v, dim, lagsC);
+                // Frictionless: the tangential multipliers are zero where LAGS_C is defined.
+                for (int f = 1; f < dim; ++f) field->set(v, dim + f, 0.0);
+            }
         }
     }
     return field;
@@ -398,9 +402,12 @@ std::shared_ptr<Result> visualisationResult(const Result& input, const std::shar
     std::vector<std::string> comps =
         dim == 3 ? std::vector<std::string>{"DX", "DY", "DZ"} : std::vector<std::string>{"DX", "DY"};
     // Contact models: the contact pressure LAGS_C (<= 0 in compression, code_aster's sign) at the
-    // interface nodes, after the displacement components (docs/contact.md).
+    // interface nodes, after the displacement components, and the friction multipliers LAGS_F1
+    // [, LAGS_F2] as code_aster's contact elements carry them (0: no friction; docs/contact.md).
     const bool withContact = xm->contact() == XfemContact::Standard && input.material;
     if (withContact) comps.push_back("LAGS_C");
+    if (withContact) comps.push_back("LAGS_F1");
+    if (withContact && dim == 3) comps.push_back("LAGS_F2");
     for (const auto& step : input.steps) {
         ResultStep s;
         s.order = step.order;

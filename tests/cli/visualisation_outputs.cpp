@@ -210,7 +210,7 @@ TEST_F(Visualisation, MeshioReadsBothResults) {
     EXPECT_NE(out.find("meshio: OK 36 points, 45 cells, 576 nodal values equal to h5py's"), std::string::npos) << out;
     out = runCommand(checkScript() + " meshio " + dir_ + "/fort.83", &raw);
     EXPECT_EQ(exitStatus(raw), 0) << out;
-    EXPECT_NE(out.find("meshio: OK 180 points, 100 cells, 1080 nodal values equal to h5py's"), std::string::npos)
+    EXPECT_NE(out.find("meshio: OK 180 points, 100 cells, 1440 nodal values equal to h5py's"), std::string::npos)
         << out;
     for (const char* med : {"fort.80", "fort.81"}) {
         const std::string vtu = dir_ + "/meshio_" + med + ".vtu";
