@@ -209,7 +209,7 @@ TEST(ParserCatalog, UnmodelledDefiGroupOptionsAreRefusedBeforeAnyCommandRuns) {
            "keyword CREA_GROUP_NO[5]/OPTION: value 'TUNNEL' is not supported by miniaster"}}) {
         auto r = runComm(std::string(every).replace(every.find(from), from.size(), to));
         EXPECT_EQ(r.status, 1) << r.output;
-        EXPECT_NE(r.output.find("<F> <ERROR> DEFI_GROUP (t.comm, line 26): " + cause), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("<F> <ERROR> DEFI_GROUP (t.comm, line 30): " + cause), std::string::npos) << r.output;
         EXPECT_EQ(r.output.find("# Command #0001"), std::string::npos) << r.output;  // nothing ran
     }
 }

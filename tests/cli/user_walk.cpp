@@ -93,8 +93,9 @@ TEST_F(UserWalk, ConvertWritesTheDisplacementAsAVectorAndAPvdTimeSeries) {
     // VTK's reader (python3-vtk9's or python3-paraview's): every MED value in the new layout.
     out = run(check() + " vtu " + dir_ + "/e.vtu " + med_ + " DX DY LAGS_C");
     ASSERT_EQ(out.status, 0) << out.text;
-    // 180 nodes, 2 steps: the vector (DX, DY, DZ = 0) and LAGS_C apart: 2 x 180 x (3 + 1) values.
-    EXPECT_NE(out.text.find("vtu: OK 2 nodal fields, 1440 values equal to the MED file's; active vectors "
+    // 180 nodes, 2 steps: the vector (DX, DY, DZ = 0), LAGS_C and LAGS_F1 (0 without friction) apart:
+    // 2 x 180 x (3 + 1 + 1) values.
+    EXPECT_NE(out.text.find("vtu: OK 2 nodal fields, 1800 values equal to the MED file's; active vectors "
                             "RES_XFEMDEPL@1"),
               std::string::npos)
         << out.text;
