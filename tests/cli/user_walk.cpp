@@ -13,20 +13,15 @@
 #include <sstream>
 
 #include "med_test_support.hpp"
+#include "parser_run.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
 using ma::test::astest;
+using ma::test::readText;
 using ma::test::runCommand;
-
-std::string readText(const std::string& path) {
-    std::ifstream in(path);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 int exitStatus(int raw) { return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1; }
 

@@ -12,23 +12,12 @@
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
+#include "csr_test_support.hpp"
 #include "solver/LinearSolver.hpp"
 
 using namespace ma;
 
 namespace {
-
-CsrMatrix fromRows(std::vector<std::vector<std::pair<int, double>>> rows) {
-    CsrMatrix A;
-    A.rows = int(rows.size());
-    A.rowStart.assign(1, 0);
-    for (auto& row : rows) {
-        std::sort(row.begin(), row.end());
-        for (auto [c, v] : row) A.cols.push_back(c), A.values.push_back(v);
-        A.rowStart.push_back(static_cast<long long>(A.cols.size()));
-    }
-    return A;
-}
 
 // k x k 5-point Laplacian (Dirichlet around) times `factor`, plus one multiplier tying each pair
 // (2r, 2r + 1) of the first `multipliers` pairs.
@@ -44,7 +33,7 @@ CsrMatrix laplacian2d(int k, int multipliers = 0, double factor = 1.0) {
     for (int r = 0; r < multipliers; ++r)
         for (auto [node, c] : {std::pair{2 * r, 1.0}, std::pair{2 * r + 1, -1.0}})
             add(n + r, node, c), add(node, n + r, c);
-    return fromRows(std::move(rows));
+    return ma::test::fromRows(std::move(rows));
 }
 
 SolverOptions krylov(const std::string& method, const std::string& algorithm, const std::string& pc,

@@ -15,24 +15,12 @@
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "core/Mpi.hpp"
+#include "csr_test_support.hpp"
 #include "solver/LinearSolver.hpp"
 
 using namespace ma;
 
 namespace {
-
-// Rows given as (column, value) lists -> CSR (columns sorted).
-CsrMatrix fromRows(std::vector<std::vector<std::pair<int, double>>> rows) {
-    CsrMatrix A;
-    A.rows = int(rows.size());
-    A.rowStart.assign(1, 0);
-    for (auto& row : rows) {
-        std::sort(row.begin(), row.end());
-        for (auto [c, v] : row) A.cols.push_back(c), A.values.push_back(v);
-        A.rowStart.push_back(static_cast<long long>(A.cols.size()));
-    }
-    return A;
-}
 
 // k x k 5-point Laplacian (Dirichlet around), plus `weak` x the couplings (a, a + 2) when weak > 0,
 // plus one multiplier tying each pair (2r, 2r + 1) of the first `multipliers` pairs.
@@ -49,7 +37,7 @@ CsrMatrix laplacian2d(int k, double weak = 0.0, int multipliers = 0) {
     for (int r = 0; r < multipliers; ++r)
         for (auto [node, c] : {std::pair{2 * r, 1.0}, std::pair{2 * r + 1, -1.0}})
             add(n + r, node, c), add(node, n + r, c);
-    return fromRows(std::move(rows));
+    return ma::test::fromRows(std::move(rows));
 }
 
 // 1D Laplacian with Dirichlet ends: condition number ~ 4 n^2 / pi^2 (4e9 at n = 1e5).
@@ -59,7 +47,7 @@ CsrMatrix laplacian1d(int n) {
         rows[size_t(i)].push_back({i, 2.0});
         if (i + 1 < n) rows[size_t(i)].push_back({i + 1, -1.0}), rows[size_t(i + 1)].push_back({i, -1.0});
     }
-    return fromRows(std::move(rows));
+    return ma::test::fromRows(std::move(rows));
 }
 
 struct Solved {

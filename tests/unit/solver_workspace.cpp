@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/Messages.hpp"
+#include "csr_test_support.hpp"
 #include "solver/LinearSolver.hpp"
 
 using namespace ma;
@@ -32,15 +33,7 @@ CsrMatrix saddlePoint(int k) {
     for (int r = 0; 2 * r + 1 < n; ++r)
         for (auto [node, c] : {std::pair{2 * r, 1.0}, std::pair{2 * r + 1, -1.0}})
             add(n + r, node, c), add(node, n + r, c);
-    CsrMatrix A;
-    A.rows = int(rows.size());
-    A.rowStart.assign(1, 0);
-    for (auto& row : rows) {
-        std::sort(row.begin(), row.end());
-        for (auto [c, v] : row) A.cols.push_back(c), A.values.push_back(v);
-        A.rowStart.push_back(static_cast<long long>(A.cols.size()));
-    }
-    return A;
+    return ma::test::fromRows(std::move(rows));
 }
 
 // Solves A x = A x0 with PCENT_PIVOT `relaxation`; returns max |x - x0| and the .mess it wrote.
