@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <functional>
 #include <optional>
 
 #include "commands/MechanicsKeywords.hpp"
@@ -60,47 +59,43 @@ void store(std::vector<std::pair<std::string, std::shared_ptr<F>>>& fields, cons
     fields.emplace_back(name, std::move(field));
 }
 
-// The fields derived from one GaussField at the chosen cells, each computed once when asked: the
-// field itself (ELGA), its values at the cells' nodes (ELNO), their nodal mean (NOEU), and the
-// equivalent stresses of the first two (SIEQ_ELGA from ELGA, SIEQ_ELNO from ELNO, SIEQ_NOEU the
-// nodal mean of SIEQ_ELNO: code_aster derives every _NOEU option from its _ELNO).
+// The fields derived from one GaussField of a result at the chosen cells, each computed once when
+// asked: the field itself (ELGA), its values at the cells' nodes (ELNO), and the equivalent stresses
+// of each (SIEQ_ELGA from ELGA, SIEQ_ELNO from ELNO); _NOEU is the nodal mean of its _ELNO, as
+// code_aster derives every _NOEU option.
 class DerivedFields {
 public:
-    DerivedFields(std::shared_ptr<GaussField> elga, const Enrichment* enrichment)
-        : elga_(std::move(elga)), enrichment_(enrichment) {}
-
-    std::shared_ptr<GaussField> elga() const { return elga_; }
-    std::shared_ptr<GaussField> elno() { return elno_ ? elno_ : (elno_ = post::nodeValues(*elga_, enrichment_)); }
-    std::shared_ptr<GaussField> equivalentElga() {
-        return eqElga_ ? eqElga_ : (eqElga_ = post::equivalentStresses(*elga_));
+    DerivedFields(const GaussField& field, const std::vector<char>& keep, const KeywordSet& kw, const Result& result)
+        : elga_(post::restrictToCells(field, keep)),
+          enrichment_(result.model ? result.model->enrichment.get() : nullptr) {
+        if (elga_->cells.empty())
+            throw UserError(kw.pathOf("GROUP_MA") + ": none of these cells carries an element of the model of " +
+                            result.name);
     }
-    std::shared_ptr<GaussField> equivalentElno() {
-        return eqElno_ ? eqElno_ : (eqElno_ = post::equivalentStresses(*elno()));
+
+    // Stores NOM_CHAM `name` (suffix _ELGA, _ELNO or _NOEU; SIEQ_* the equivalent stresses).
+    void store(ResultStep& step, const std::string& name) {
+        const bool equivalent = name.rfind("SIEQ_", 0) == 0;
+        const std::string place = name.substr(name.size() - 4);
+        if (place == "ELGA") ma::store(step.gaussFields, name, std::make_shared<GaussField>(*points(equivalent)));
+        else if (place == "ELNO") ma::store(step.gaussFields, name, std::make_shared<GaussField>(*nodes(equivalent)));
+        else ma::store(step.nodalFields, name, post::nodalAverage(*nodes(equivalent)));
     }
 
 private:
+    std::shared_ptr<GaussField> points(bool equivalent) {
+        if (!equivalent) return elga_;
+        return eqElga_ ? eqElga_ : (eqElga_ = post::equivalentStresses(*elga_));
+    }
+    std::shared_ptr<GaussField> nodes(bool equivalent) {
+        if (!elno_) elno_ = post::nodeValues(*elga_, enrichment_);
+        if (!equivalent) return elno_;
+        return eqElno_ ? eqElno_ : (eqElno_ = post::equivalentStresses(*elno_));
+    }
+
     std::shared_ptr<GaussField> elga_, elno_, eqElga_, eqElno_;
     const Enrichment* enrichment_;
 };
-
-// `field` restricted to the chosen cells; UserError when none of them carries an element.
-std::shared_ptr<GaussField> onChosenCells(const GaussField& field, const std::vector<char>& keep, const KeywordSet& kw,
-                                          const Result& result) {
-    auto chosen = post::restrictToCells(field, keep);
-    if (chosen->cells.empty())
-        throw UserError(kw.pathOf("GROUP_MA") + ": none of these cells carries an element of the model of " +
-                        result.name);
-    return chosen;
-}
-
-// Stores NOM_CHAM `name` (suffix _ELGA, _ELNO or _NOEU) from `elga`, `elno` as asked.
-void storeAtPlace(ResultStep& step, const std::string& name, const std::function<std::shared_ptr<GaussField>()>& elga,
-                  const std::function<std::shared_ptr<GaussField>()>& elno) {
-    const std::string place = name.substr(name.size() - 4);
-    if (place == "ELGA") store(step.gaussFields, name, std::make_shared<GaussField>(*elga()));
-    else if (place == "ELNO") store(step.gaussFields, name, std::make_shared<GaussField>(*elno()));
-    else store(step.nodalFields, name, post::nodalAverage(*elno()));
-}
 
 // The CONTRAINTE and CRITERES fields of one step, from its SIEF_ELGA on the chosen cells.
 void stressFields(ResultStep& step, const Result& result, const std::vector<std::string>& asked,
@@ -111,26 +106,15 @@ void stressFields(ResultStep& step, const Result& result, const std::vector<std:
             fmt::format("{}: result {} has no SIEF_ELGA at NUME_ORDRE {} (the stresses CALC_CHAMP "
                         "derives its fields from; compute them with OPTION='SIEF_ELGA')",
                         kw.pathOf(kw.has("CONTRAINTE") ? "CONTRAINTE" : "CRITERES"), result.name, step.order));
-    DerivedFields stress(onChosenCells(*sief, keep, kw, result),
-                         result.model ? result.model->enrichment.get() : nullptr);
-    for (const auto& name : asked) {
-        if (name.rfind("SIEQ_", 0) == 0)
-            storeAtPlace(
-                step, name, [&] { return stress.equivalentElga(); }, [&] { return stress.equivalentElno(); });
-        else
-            storeAtPlace(
-                step, name, [&] { return stress.elga(); }, [&] { return stress.elno(); });
-    }
+    DerivedFields stress(*sief, keep, kw, result);
+    for (const auto& name : asked) stress.store(step, name);
 }
 
 // The DEFORMATION fields of one step (EPSI_ELGA/ELNO/NOEU), from its displacement.
 void strainFields(ResultStep& step, const Result& result, const post::Strains& strains,
                   const std::vector<std::string>& asked, const std::vector<char>& keep, const KeywordSet& kw) {
-    DerivedFields strain(onChosenCells(*strains.atPoints(step), keep, kw, result),
-                         result.model ? result.model->enrichment.get() : nullptr);
-    for (const auto& name : asked)
-        storeAtPlace(
-            step, name, [&] { return strain.elga(); }, [&] { return strain.elno(); });
+    DerivedFields strain(*strains.atPoints(step), keep, kw, result);
+    for (const auto& name : asked) strain.store(step, name);
 }
 
 // The FORCE fields of one step; the sum of each displacement component of REAC_NODA in the .mess
