@@ -65,7 +65,7 @@ SolverOptions factorOptions(const SolverOptions& options) {
     SolverOptions f;
     f.method = "MUMPS";
     f.mixedPrecision = options.preconditioner == "LDLT_SP";
-    f.diagonalScaling = false;  // the operator is already scaled
+    f.diagonalScaling = options.diagonalScaling;  // factors of S A S from A, S as the Krylov operator's
     f.maxRefinementSteps = 0;
     f.resiRela = -1.0;
     f.pcentPivot = options.pcentPivot;

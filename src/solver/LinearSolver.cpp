@@ -195,13 +195,6 @@ double ScaledDirectSolver::solve(std::span<double> rhs) {
     return res.normwise;
 }
 
-void ScaledDirectSolver::applyFactors(std::span<double> v) {
-    const size_t n = v.size();
-    for (size_t i = 0; i < n; ++i) v[i] *= scale_[i];
-    solveScaled(v);
-    for (size_t i = 0; i < n; ++i) v[i] *= scale_[i];
-}
-
 void ScaledDirectSolver::checkAccuracy(const ResidualInfo& res, int steps) const {
     const bool mixed = options_.mixedPrecision;
     const char* why = mixed ? "the matrix is too ill-conditioned for single-precision factors: use "

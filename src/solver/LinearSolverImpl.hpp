@@ -67,9 +67,11 @@ public:
     explicit ScaledDirectSolver(const SolverOptions& options) : options_(options) {}
     void factorize(const CsrMatrix& A, MatrixKind kind, std::span<const RowPoint> rowPoints = {}) final;
     double solve(std::span<double> rhs) final;
-    // v <- S (S A S)^-1 S v with the factors alone: no refinement, no residual, no log (a
-    // preconditioner's application).
-    void applyFactors(std::span<double> v);
+    // v <- (S A S)^-1 v with the factors alone: no refinement, no residual, no log (a
+    // preconditioner's application to the scaled system).
+    void applyFactors(std::span<double> v) { solveScaled(v); }
+    // S (all ones when scaling is off), from the last factorize.
+    const std::vector<double>& scale() const { return scale_; }
 
 protected:
     // Factorise S A S (entries a_ij s_i s_j), S given by `scale` (all ones when scaling is off).
