@@ -165,11 +165,23 @@ foreach(_case "a|1e-15" "d|1e-15" "e|1e-12")
   miniaster_solveur_variant(gcpc_ldlt_inc ssnv511${_letter} "METHODE='GCPC', RESI_RELA=${_resi}"
                             "GCPC (ALGORITHME='CG', PRE_COND='LDLT_INC') solve")
 endforeach()
-# On two processes PETSc is sequential (each process solves the whole system), and the LDLT_SP
-# factors are a MUMPS of one process on each: the same TEST results.
-miniaster_solveur_variant(petsc_np2 ssnv511a "METHODE='PETSC', PRE_COND='LDLT_SP', RESI_RELA=1e-15"
-                          "PETSC (ALGORITHME='FGMRES', PRE_COND='LDLT_SP') solve" -- --np 2)
-set_tests_properties(original_solveur_petsc_np2.ssnv511a PROPERTIES PROCESSORS 2)
+# On two processes each assembles its own cells (MATR_DISTRIBUEE): PETSc multiplies by the sum of
+# the parts, LDLT_SP's factors are MUMPS's on both processes, GAMG gets the summed matrix: the same
+# TEST results.
+foreach(_case "a|ldlt_sp|PRE_COND='LDLT_SP'|1e-15|FGMRES" "e|ldlt_sp|PRE_COND='LDLT_SP'|1e-12|FGMRES"
+              "a|gamg|ALGORITHME='CG', PRE_COND='GAMG'|1e-15|CG")
+  string(REPLACE "|" ";" _f "${_case}")
+  list(GET _f 0 _letter)
+  list(GET _f 1 _label)
+  list(GET _f 2 _keywords)
+  list(GET _f 3 _resi)
+  list(GET _f 4 _algorithm)
+  string(REGEX MATCH "PRE_COND='[A-Z_]+'" _pc "${_keywords}")
+  miniaster_solveur_variant(petsc_np2_${_label} ssnv511${_letter} "METHODE='PETSC', ${_keywords}, RESI_RELA=${_resi}"
+                            "cells partitioned over 2 processes && PETSC (ALGORITHME='${_algorithm}', ${_pc}) solve"
+                            -- --np 2)
+  set_tests_properties(original_solveur_petsc_np2_${_label}.ssnv511${_letter} PROPERTIES PROCESSORS 2)
+endforeach()
 # GAMG gets the rigid body modes as its near null space (fe/EquationPoints rigidBodyModes).
 miniaster_solveur_variant(petsc_gamg_modes ssnv511a "METHODE='PETSC', ALGORITHME='CG', PRE_COND='GAMG', RESI_RELA=1e-15"
                           "near null space: 3 rigid body modes")

@@ -50,15 +50,15 @@ MechanicalProblem::MechanicalProblem(std::shared_ptr<const Model> model, std::sh
 
 MechanicalProblem::~MechanicalProblem() = default;
 
-// With several processes and MUMPS, each process assembles its own cells into its part of the
-// distributed matrix (docs/mpi.md). Eigen's solvers are sequential: every process then assembles
-// and solves the whole system (the same on each).
+// With several processes and MUMPS, PETSC or GCPC, each process assembles its own cells into its
+// part of the distributed matrix (docs/mpi.md). Eigen's solvers are sequential: every process then
+// assembles and solves the whole system (the same on each).
 void MechanicalProblem::distributeCells() {
     if (mpi::size() == 1) return;
-    if (solverOptions_.method != "MUMPS") {
+    if (solverOptions_.method != "MUMPS" && solverOptions_.method != "PETSC" && solverOptions_.method != "GCPC") {
         msg().infof(
             "    SOLVEUR METHODE='{}' is sequential: each of the {} processes assembles and solves the whole "
-            "system (METHODE='MUMPS' distributes it)",
+            "system (METHODE='MUMPS', 'PETSC' or 'GCPC' distributes it)",
             solverOptions_.method, mpi::size());
         return;
     }

@@ -40,9 +40,6 @@ void refuseUnsound(const SolverOptions& options, bool indefinite) {
         throw NotImplemented(
             "SOLVEUR/ALGORITHME='GMRES_LMP': the limited-memory preconditioner update is not available; use "
             "'FGMRES' (REAC_PRECOND keeps the LDLT_SP factors between matrices)");
-    if (options.distributed && usesFactors(options))
-        throw NotImplemented("SOLVEUR/METHODE='" + options.method +
-                             "' on several processes: each process solves the whole system (docs/solver.md)");
     if (!indefinite) return;
     if (!usesFactors(options))
         throw UserError(fmt::format(
@@ -66,6 +63,8 @@ SolverOptions factorOptions(const SolverOptions& options) {
     f.method = "MUMPS";
     f.mixedPrecision = options.preconditioner == "LDLT_SP";
     f.diagonalScaling = options.diagonalScaling;  // factors of S A S from A, S as the Krylov operator's
+    f.distributed = options.distributed;          // MUMPS on the processes' parts
+    f.wholePattern = options.wholePattern;
     f.maxRefinementSteps = 0;
     f.resiRela = -1.0;
     f.pcentPivot = options.pcentPivot;

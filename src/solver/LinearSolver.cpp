@@ -121,6 +121,11 @@ ResidualInfo ResidualNorms::info() const {
     return info;
 }
 
+std::vector<double> diagonalScalingOf(const CsrMatrix& A, const SolverOptions& options) {
+    if (!options.diagonalScaling) return std::vector<double>(size_t(A.rows), 1.0);
+    return options.distributed ? distributedDiagonalScaling(A, summedDiagonal(A)) : symmetricDiagonalScaling(A);
+}
+
 void ScaledDirectSolver::factorize(const CsrMatrix& A, MatrixKind kind, std::span<const RowPoint> rowPoints) {
     A_ = &A;
     if (options_.diagonalScaling) {

@@ -52,6 +52,9 @@ ResidualInfo residualOf(const CsrMatrix& A, std::span<const double> x, std::span
 // scale |A| |x| from the partial entries: an upper bound).
 std::vector<double> summedDiagonal(const CsrMatrix& A);
 std::vector<double> distributedDiagonalScaling(const CsrMatrix& A, std::span<const double> diagonal);
+// S as the direct solvers scale A under `options` (all ones without PRETRAITEMENTS; from the summed
+// diagonal when distributed): the Krylov methods iterate on the S A S their factors are of.
+std::vector<double> diagonalScalingOf(const CsrMatrix& A, const SolverOptions& options);
 ResidualInfo distributedResidualOf(const CsrMatrix& A, std::span<const double> x, std::span<const double> b,
                                    std::vector<double>& r);
 

@@ -44,10 +44,13 @@ void initialisePetsc() {
     done = true;
 }
 
-// y = S A S x without storing S A S.
+// y = S A S x without storing S A S. Distributed (MATR_DISTRIBUEE on several processes): A is
+// this process's part, the products are summed over the processes (rank 0's sum broadcast, so that
+// every process holds the same y and their Krylov iterations stay identical).
 struct ScaledOperator {
     const CsrMatrix* A = nullptr;
     const std::vector<double>* scale = nullptr;
+    bool distributed = false;
     std::vector<double> work;
 
     void apply(const double* x, double* y) {
@@ -55,7 +58,9 @@ struct ScaledOperator {
         const size_t n = s.size();
         work.resize(n);
         for (size_t i = 0; i < n; ++i) work[i] = s[i] * x[i];
-        A->multiply(work, std::span<double>(y, n));
+        const std::span<double> out(y, n);
+        A->multiply(work, out);
+        if (distributed) mpi::sum(out);
         for (size_t i = 0; i < n; ++i) y[i] *= s[i];
     }
 };
@@ -73,12 +78,25 @@ PetscErrorCode multiplyScaled(Mat m, Vec x, Vec y) {
     return 0;
 }
 
-// S A S assembled, for PETSc's own preconditioners (they read the matrix entries).
-CsrMatrix scaledCopy(const CsrMatrix& A, const std::vector<double>& s) {
+// S A S assembled, for PETSc's own preconditioners (they read the matrix entries). Distributed: each
+// process's part (the pattern of its own cells) is added into the whole pattern and the values are
+// summed over the processes: the whole matrix on every process.
+CsrMatrix scaledCopy(const CsrMatrix& A, const std::vector<double>& s, const SolverOptions& options) {
     CsrMatrix B = A;
-    for (int i = 0; i < A.rows; ++i)
-        for (long long k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k)
-            B.values[size_t(k)] = s[size_t(i)] * A.values[size_t(k)] * s[size_t(A.cols[size_t(k)])];
+    if (options.distributed) {
+        B = options.wholePattern();
+        B.values.assign(B.cols.size(), 0.0);
+        for (int i = 0; i < A.rows; ++i)
+            for (long long k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
+                const long long at = B.find(i, A.cols[size_t(k)]);
+                if (at < 0) throw NumericalError("PETSc: a process's matrix entry lies outside the whole pattern");
+                B.values[size_t(at)] += A.values[size_t(k)];
+            }
+        mpi::sum(B.values);
+    }
+    for (int i = 0; i < B.rows; ++i)
+        for (long long k = B.rowStart[i]; k < B.rowStart[i + 1]; ++k)
+            B.values[size_t(k)] *= s[size_t(i)] * s[size_t(B.cols[size_t(k)])];
     return B;
 }
 
@@ -128,8 +146,8 @@ public:
         A_ = &A;
         kind_ = kind;
         rowPoints_.assign(rowPoints.begin(), rowPoints.end());
-        scale_ = options_.diagonalScaling ? symmetricDiagonalScaling(A) : std::vector<double>(size_t(A.rows), 1.0);
-        operator_.A = A_, operator_.scale = &scale_;
+        scale_ = diagonalScalingOf(A, options_);
+        operator_.A = A_, operator_.scale = &scale_, operator_.distributed = options_.distributed;
         destroyOperator();
         if (usesFactors(options_)) {
             scaled_ = CsrMatrix{}, rowStart_.clear();
@@ -138,7 +156,7 @@ public:
             check(MatShellSetOperation(matrix_, MATOP_MULT, reinterpret_cast<void (*)(void)>(multiplyScaled)),
                   "MatShellSetOperation");
         } else {
-            scaled_ = scaledCopy(A, scale_);
+            scaled_ = scaledCopy(A, scale_, options_);
             rowStart_.assign(scaled_.rowStart.begin(), scaled_.rowStart.end());
             check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, A.rows, A.rows, rowStart_.data(), scaled_.cols.data(),
                                             scaled_.values.data(), &matrix_),
@@ -169,7 +187,8 @@ public:
             setUp();
         }
         std::vector<double> r;
-        const ResidualInfo res = residualOf(*A_, rhs, b, r, options_.threads);
+        const ResidualInfo res =
+            options_.distributed ? distributedResidualOf(*A_, rhs, b, r) : residualOf(*A_, rhs, b, r, options_.threads);
         msg().infof(
             "    {}: residual of the assembled system ||Ku-f||/||f|| = {:.3e}, componentwise backward error {:.2e}",
             name(), res.normwise, res.componentwise);
