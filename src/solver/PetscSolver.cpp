@@ -363,9 +363,10 @@ private:
 
 }  // namespace
 
-std::unique_ptr<LinearSolver> makePetscSolver(const SolverOptions& options) {
-    refuseUnsound(options, false);
-    return std::make_unique<PetscKrylovSolver>(options);
-}
-
 }  // namespace ma
+
+// The module's entry point (solver/LinearSolver.cpp loads it): a new solver the caller owns.
+extern "C" ma::LinearSolver* miniaster_make_petsc_solver(const ma::SolverOptions& options) {
+    ma::refuseUnsound(options, false);
+    return new ma::PetscKrylovSolver(options);
+}
