@@ -7,7 +7,8 @@
 #
 # Builds the N x N x N mesh with miniaster's tools/ssnv511_mesh (`--type hexa8 --n N --layers N
 # --zbounds 0 DEPTH --offset O O`, cached), writes an .export (refined_c.comm on unit 1, the mesh
-# on unit 20) and runs `$MAIN/miniaster run refined_c.export --out-dir DIR` and
+# on unit 20) and runs `$MAIN/build/miniaster run refined_c.export --out-dir DIR` (the binary the
+# launcher $MAIN/miniaster runs, brought up to date once before the timed runs) and
 # `/usr/bin/python3 ssnv511c_getfem.py --n N --offset O --depth DEPTH`, each whole process under
 # /usr/bin/time -v. Prints per tool the median wall time and peak RSS, the relative L2 error each
 # reports (miniaster: 'ERREUR RELATIVE' of the TOTAL row of POST_ERREUR in its .resu; GetFEM: its
@@ -17,7 +18,8 @@
 # GetFEM side runs; SIDES=miniaster runs miniaster alone (the big sizes GetFEM cannot reach).
 #
 # Environment (all optional):
-#   MAIN             miniaster checkout (the executable is $MAIN/miniaster, built in $MAIN/build)
+#   MAIN             miniaster checkout, configured (./miniaster build): its build/ has miniaster and
+#                    tools/ssnv511_mesh (both brought up to date, untimed, by cmake --build)
 #   SIDES            both (default) | miniaster | getfem
 #   MINI_SOLVEUR     keywords that replace METHODE='MUMPS' in SOLVEUR=_F(...) of refined_c.comm, e.g.
 #                    "METHODE='PETSC', PRE_COND='LDLT_SP'" or "METHODE='PETSC', PRE_COND='GAMG'"
@@ -81,8 +83,8 @@ if [ "$sides" = getfem ]; then
     mini_reason="SIDES=getfem"
 elif [ -z "${MAIN:-}" ]; then
     mini_reason="MAIN is not set"
-elif [ ! -x "$MAIN/miniaster" ]; then
-    mini_reason="$MAIN/miniaster does not exist (or is not executable)"
+elif [ ! -f "$MAIN/build/build.ninja" ] && [ ! -f "$MAIN/build/Makefile" ]; then
+    mini_reason="$MAIN/build is not configured (run $MAIN/miniaster build)"
 else
     run_mini=yes
 fi
@@ -113,17 +115,23 @@ case "$gf_blas" in
     *) echo "$prog: GF_BLAS must be openblas or system" >&2; exit 2 ;;
 esac
 
-# ---- mesh (cached)
 base=${SIDEBYSIDE3D_DIR:-$(dirname "$(mktemp -u)")/ssnv511c_sidebyside}
 mkdir -p "$base/meshes" || exit 1
+
+# ---- miniaster and the mesher up to date (untimed: a commit relinks the binary, see git_version)
+if [ "$run_mini" = yes ]; then
+    targets=(miniaster)
+    [ -z "${MESHER:-}" ] && targets+=(ssnv511_mesh)
+    cmake --build "$MAIN/build" --target "${targets[@]}" > "$base/build.log" 2>&1 \
+        || { echo "$prog: cmake --build $MAIN/build --target ${targets[*]} failed (see $base/build.log)" >&2; exit 1; }
+    [ "$(id -u)" -eq 0 ] && export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+fi
+
+# ---- mesh (cached)
 mesh=$base/meshes/hexa_${n}_d${depth}_o${offset}.med
 if [ "$run_mini" = yes ]; then
     mesher=${MESHER:-$MAIN/build/tools/ssnv511_mesh}
-    if [ ! -x "$mesher" ]; then
-        [ -n "${MESHER:-}" ] && { echo "$prog: MESHER=$mesher is not executable" >&2; exit 1; }
-        echo "$prog: building $mesher (cmake --build $MAIN/build --target ssnv511_mesh)" >&2
-        cmake --build "$MAIN/build" --target ssnv511_mesh >&2 || { echo "$prog: could not build ssnv511_mesh (run '$MAIN/miniaster build' first)" >&2; exit 1; }
-    fi
+    [ -x "$mesher" ] || { echo "$prog: mesher $mesher is not executable" >&2; exit 1; }
     if [ ! -s "$mesh" ] || [ "$mesher" -nt "$mesh" ]; then
         tmp=$mesh.tmp.$$
         "$mesher" --type hexa8 --n "$n" --layers "$n" --zbounds 0 "$depth" --offset "$offset" "$offset" -o "$tmp" >&2 \
@@ -177,7 +185,7 @@ for i in $(seq "$reps"); do
         echo "$prog: [$i/$reps] miniaster run $name.export (N=$n)" >&2
         mkdir -p "$run/mini_$i"
         (cd "$run" && "$timer" -v -o "$run/mini_$i.time" \
-            "$MAIN/miniaster" run "$run/$name.export" --out-dir "$run/mini_$i" \
+            "$MAIN/build/miniaster" run "$run/$name.export" --out-dir "$run/mini_$i" \
             > "$run/mini_$i.stdout" 2>&1)
         st=$?
         [ $st -ne 0 ] && echo "$prog: miniaster exited with $st (see $run/mini_$i.stdout)" >&2
