@@ -14,6 +14,7 @@
 #include "fe/ElementLoop.hpp"
 #include "fe/ExternalForces.hpp"
 #include "fe/InternalForces.hpp"
+#include "fe/NearNullSpace.hpp"
 #include "fe/ResultFields.hpp"
 #include "fe/SparsityPattern.hpp"
 
@@ -37,7 +38,13 @@ MechanicalProblem::MechanicalProblem(std::shared_ptr<const Model> model, std::sh
     if (const std::string cause = degenerateMaterialCause(space_->material()); !cause.empty())
         solverOptions_.singularHint = cause + "; or else " + solverOptions_.singularHint;
     distributeCells();
-    solverOptions_.nearNullSpace = [this] { return rigidBodyModes(*space_, *constraints_, matrix_.rows); };
+    solverOptions_.nearNullSpace = [this] {
+        NearNullSpace space = blockNearNullSpace(*space_, *constraints_, matrix_.rows);
+        if (!space.modes.empty())
+            msg().infof("    near null space: {} block(s) of the model in {} colour(s), {} rigid modes each",
+                        space.blocks, space.colours, space.perBlock);
+        return std::move(space.modes);
+    };
     solver_ = makeLinearSolver(solverOptions_);
     int nodesWithUnknowns = 0;
     for (int node = 0; node < numbering.nodeCount(); ++node) nodesWithUnknowns += numbering.hasNode(node);

@@ -107,9 +107,15 @@ def plot(path, records):
 def study_solvers(ctx):
     n2, n3 = grid(ctx.args.full)
     records = []
+    wanted = ctx.args.settings.split(",") if ctx.args.settings else None
+    scenes_wanted = ctx.args.scenes.split(",") if ctx.args.scenes else None
     for scene, ns in (("ssnv511a", n2), ("ssnv511e", n2), ("hexa8 block", n3)):
+        if scenes_wanted and scene not in scenes_wanted:
+            continue
         for n in ns:
             for label, keywords in SETTINGS[scene].items():
+                if wanted and label not in wanted:
+                    continue
                 # hypre's BoomerAMG took 206 s at ssnv511a N = 251 (GAMG: 16 s): the small grid runs it
                 # on its smallest N only.
                 if "BOOMER" in label and not ctx.args.full and n != ns[0]:

@@ -1020,6 +1020,10 @@ def main():
     ap.add_argument("--group", default="all", choices=sorted(SMOOTH_GROUPS),
                     help="smooth: all rows, only the convergence grid and solvers (convergence) or only the "
                          "sub-cell quadrature rows (quadrature); a partial run keeps the other rows of smooth.csv")
+    ap.add_argument("--settings", default=None,
+                    help="solvers: comma-separated subset of the settings (e.g. 'CG+GAMG,CG+ML')")
+    ap.add_argument("--scenes", default=None,
+                    help="solvers: comma-separated subset of the scenes (ssnv511a, ssnv511e, 'hexa8 block')")
     ap.add_argument("--timeout", type=float, default=1800.0, help="seconds per run")
     args = ap.parse_args()
     if args.out is None:
