@@ -70,8 +70,9 @@ struct SolverOptions {
     // Distributed: the pattern of the whole matrix (each process holds only its cells' part), for
     // the fill-reducing ordering on rank 0; built when asked and freed after the analysis.
     std::function<CsrMatrix()> wholePattern;
-    // The near null space of the matrix (rigid body modes, mode after mode, `rows` values each; empty
-    // when unknown), asked by the multigrid preconditioners GAMG and ML (docs/solver.md).
+    // The near null space of the matrix (the rigid modes of the model's blocks, vector after vector,
+    // `rows` values each; empty when unknown), asked by the multigrid preconditioners GAMG and ML
+    // (docs/solver.md).
     std::function<std::vector<double>()> nearNullSpace;
     // Appended to the "singular system" message: what the caller knows about likely causes.
     std::string singularHint = "a missing boundary condition (rigid body motion) or an unattached enriched dof";

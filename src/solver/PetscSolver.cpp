@@ -229,7 +229,7 @@ private:
                                    : std::string());
     }
 
-    // The rigid body modes of the model (SolverOptions::nearNullSpace) as the near null space of
+    // The rigid modes of the model's blocks (SolverOptions::nearNullSpace) as the near null space of
     // S A S (y = S^-1 x: each mode divided by S), orthonormalised, for GAMG's and ML's coarse spaces:
     // without them aggregation sees only constants, and the iterations grow with N (docs/solver.md).
     void attachNearNullSpace() {

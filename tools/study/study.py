@@ -15,7 +15,8 @@
 Options: --out DIR (tables and plots, default a fresh folder miniaster-study-<name>-<time> here;
 --out docs/study updates the committed figures; astest reads docs/study by default), --work DIR (runs, default a temporary
 folder), --build DIR (miniaster build, default build/), --elements quad4,tria3,..., --contact
-all|open|only, --group all|convergence|quadrature (smooth), --timeout S.
+all|open|only, --group all|convergence|quadrature (smooth), --settings/--scenes (solvers: a subset),
+--timeout S.
 Results: DIR/<study>.csv, DIR/<study>.md and DIR/<study>_*.png; the Markdown file names the
 command that made it. See docs/study.md.
 """
