@@ -1,8 +1,8 @@
 #include "xfem/TipEnrichment.hpp"
 
 #include <algorithm>
-#include <functional>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numbers>
 #include <span>
@@ -121,8 +121,8 @@ void composePart(int dim, const double F[3][3], const double dF[3][3][2], const 
                 }
                 v += e[k][size_t(c)] * shifted;
                 for (int j = 0; j < 3; ++j)
-                    d[j] += e[k][size_t(c)] * (dF[m][k][0] * e[0][size_t(j)] + dF[m][k][1] * e[1][size_t(j)] -
-                                               gradShift[j]);
+                    d[j] += e[k][size_t(c)] *
+                            (dF[m][k][0] * e[0][size_t(j)] + dF[m][k][1] * e[1][size_t(j)] - gradShift[j]);
             }
             out[c * 3 + m] = v;
             for (int j = 0; j < 3; ++j) out[9 + (c * 3 + m) * 3 + j] = d[j];
@@ -150,11 +150,13 @@ void tipElementFields(const Mesh& mesh, int cell, int dim, const std::vector<Fro
         shapeValues(type, ei.refPoints[p], N);
         shapeDerivatives(type, ei.refPoints[p], dN);
         double J[3][3] = {}, inv[3][3] = {};
-        jacobian(dim, dim, int(n), X, [&](int a, int j) { return dN[size_t(3 * a + j)]; }, J);
+        jacobian(
+            dim, dim, int(n), X, [&](int a, int j) { return dN[size_t(3 * a + j)]; }, J);
         invertJacobian(dim, J, inv);
         std::fill(grad.begin(), grad.end(), 0.0);
         for (size_t a = 0; a < n; ++a)
-            physicalGradient(dim, inv, [&](int j) { return dN[3 * a + size_t(j)]; }, &grad[3 * a]);
+            physicalGradient(
+                dim, inv, [&](int j) { return dN[3 * a + size_t(j)]; }, &grad[3 * a]);
         Vec3 x{}, origin{}, e1{}, e2{};
         for (size_t a = 0; a < n; ++a) {
             const FrontBasis& b = basis[size_t(nodes[a])];
@@ -216,7 +218,8 @@ void collapsedTriangleRule(const std::array<double, 3>& P0, const std::array<dou
     std::vector<double> g, gw;
     gaussLegendre01(n, g, gw);
     Vec3 u{}, v{};
-    for (int j = 0; j < 3; ++j) u[size_t(j)] = P1[size_t(j)] - P0[size_t(j)], v[size_t(j)] = P2[size_t(j)] - P0[size_t(j)];
+    for (int j = 0; j < 3; ++j)
+        u[size_t(j)] = P1[size_t(j)] - P0[size_t(j)], v[size_t(j)] = P2[size_t(j)] - P0[size_t(j)];
     const double det = std::abs(u[0] * v[1] - u[1] * v[0]);
     for (int i = 0; i < n; ++i)
         for (int k = 0; k < n; ++k) {
@@ -249,7 +252,8 @@ void refinedRule(const std::array<std::array<double, 3>, 3>& V,
     if (levels == 0 || near >= diameter) return collapsedTriangleRule(V[0], V[1], V[2], n, false, points, weights);
     std::array<std::array<double, 3>, 3> M;
     for (int e = 0; e < 3; ++e)
-        for (int j = 0; j < 3; ++j) M[size_t(e)][size_t(j)] = 0.5 * (V[size_t(e)][size_t(j)] + V[size_t((e + 1) % 3)][size_t(j)]);
+        for (int j = 0; j < 3; ++j)
+            M[size_t(e)][size_t(j)] = 0.5 * (V[size_t(e)][size_t(j)] + V[size_t((e + 1) % 3)][size_t(j)]);
     for (const auto& piece : {std::array{V[0], M[0], M[2]}, std::array{M[0], V[1], M[1]}, std::array{M[2], M[1], V[2]},
                               std::array{M[0], M[1], M[2]}})
         refinedRule(piece, toPhysical, tips, n, levels - 1, points, weights);

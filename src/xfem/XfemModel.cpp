@@ -113,7 +113,15 @@ void XfemModel::buildTip() {
     tipNodes_.assign(size_t(mesh.nodeCount()), 0);
     for (int n = 0; n < mesh.nodeCount(); ++n)
         tipNodes_[size_t(n)] = nodeIndex_[size_t(n)] >= 0 && crack.nodeStatus[size_t(n)] >= 2;
-    bases_ = frontBases(mesh, crack, tipNodes_);
+    // BASLOC at every node of the elements with a tip node (code_aster has it everywhere): the
+    // basis at a point and the subtracted interpolation use all the element's nodes.
+    std::vector<char> basisNodes(size_t(mesh.nodeCount()), 0);
+    for (const CellCut& c : cuts_) {
+        const auto cn = mesh.cellNodes(c.cell);
+        if (std::any_of(cn.begin(), cn.end(), [&](int n) { return tipNodes_[size_t(n)] != 0; }))
+            for (int n : cn) basisNodes[size_t(n)] = 1;
+    }
+    bases_ = frontBases(mesh, crack, basisNodes);
     tipPoint_.assign(cuts_.size(), std::nullopt);
     if (dim_ != 2) return;
     for (const auto& f : crack.fronts) frontPoints_.push_back(f.points[0]);
