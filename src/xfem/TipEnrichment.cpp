@@ -169,7 +169,10 @@ void tipElementFields(const Mesh& mesh, int cell, int dim, const std::vector<Fro
         }
         const Vec3 e[3] = {unit(e1), unit(e2), unit(cross(unit(e1), unit(e2)))};
         LocalPoint at = localPolar(x, origin, e[0], e[1]);
-        if (at.r < 1e-12) continue;  // code_aster's xcoocy: no enrichment at the front itself
+        // At the front itself (r < 1e-12, xcoocy's tolerance) F is its limit 0 and only the shift
+        // remains; code_aster sets the whole enrichment to 0 there, which no Gauss point meets but a
+        // POST_CHAM_XFEM node at the tip does (u would jump to the standard part alone).
+        const bool atFront = at.r < 1e-12;
         at.theta = side[p] * std::abs(at.theta);
         const double sign = at.theta < 0 ? -1.0 : 1.0;
         for (size_t b = 0; b < n; ++b) {  // nodal fields, in each node's own basis
@@ -184,7 +187,7 @@ void tipElementFields(const Mesh& mesh, int cell, int dim, const std::vector<Fro
                     FnB[b][size_t(m * 3 + k)] = nb.r > 0 ? fn.B[m][k] : 0.0;
                 }
         }
-        const AsymptoticFields f = asymptoticFields(at.r, at.theta, dim);
+        const AsymptoticFields f = atFront ? AsymptoticFields{} : asymptoticFields(at.r, at.theta, dim);
         composePart(dim, f.A, f.dA, FnA, N, grad, e, &ei.tipA[p * ElementIntegration::kTipStride]);
         composePart(dim, f.B, f.dB, FnB, N, grad, e, &ei.tipB[p * ElementIntegration::kTipStride]);
     }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
@@ -497,17 +498,34 @@ void XfemModel::integration(int cell, ElementIntegration& out) const {
 }
 
 bool XfemModel::tipMatrix(int cell, int subcell, const std::array<double, 3>& ref, double lambdaEff, double mu,
-                          double Phi[9]) const {
+                          TipPoint& out) const {
     const CellCut* c = cut(cell);
-    if (!c || c->skin || tipNodes_.empty()) return false;
+    if (!c || tipNodes_.empty()) return false;
+    const auto at = std::find(c->cracks.begin(), c->cracks.end(), tipCrack_);
+    const signed char h =
+        at == c->cracks.end() ? 1 : c->subcells[size_t(subcell)].heaviside[size_t(at - c->cracks.begin())];
+    out.cell = cell, out.ref = ref;
+    if (c->skin) {  // evaluated in the volume element the skin cell bounds, at the same physical point
+        const int volume = adjacentVolume(cell);
+        if (volume < 0 || dim_ != 2) return false;
+        const auto sn = mesh_->cellNodes(cell);
+        std::array<double, 8> N{};
+        shapeValues(mesh_->cellTypes[size_t(cell)], ref, std::span<double>(N.data(), sn.size()));
+        Vec3 x{};
+        for (size_t a = 0; a < sn.size(); ++a)
+            for (int j = 0; j < 3; ++j) x[size_t(j)] += N[a] * mesh_->coords[size_t(sn[a])][size_t(j)];
+        const auto r = referencePointIn(*mesh_, volume, x);
+        if (!r) return false;
+        out.cell = volume, out.ref = *r;
+    }
     ElementIntegration one;
-    one.cell = cell;
-    one.refPoints = {ref};
-    one.pointSubcell = {subcell};
-    addTipFields(*c, one);
-    if (!one.hasTip() || std::count(one.tip.begin(), one.tip.end(), 1) == 0) return false;
+    one.cell = out.cell;
+    one.refPoints = {out.ref};
+    tipElementFields(*mesh_, out.cell, dim_, bases_, cracks_[size_t(tipCrack_)]->nodeStatus, tipNodes_,
+                     {static_cast<signed char>(h < 0 ? -1 : 1)}, one);
+    if (std::count(one.tip.begin(), one.tip.end(), 1) == 0) return false;
     applyTipLaw(one, lambdaEff, mu);
-    std::copy(one.tipPhi.begin(), one.tipPhi.begin() + 9, Phi);
+    std::copy(one.tipPhi.begin(), one.tipPhi.begin() + 9, out.Phi);
     return true;
 }
 

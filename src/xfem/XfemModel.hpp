@@ -114,10 +114,16 @@ public:
     int tipCrack() const { return tipCrack_; }
     int tipNodeCount() const { return static_cast<int>(std::count(tipNodes_.begin(), tipNodes_.end(), 1)); }
     // The crack-tip matrix Phi[c * 3 + m] at reference point `ref` of sub-cell `subcell` of an X-FEM
-    // cell, for Hooke coefficients (lambdaEff, mu); false (Phi untouched) when no node of the cell
-    // carries the tip unknowns (POST_CHAM_XFEM's displacement at new nodes).
+    // cell, for Hooke coefficients (lambdaEff, mu); a skin cell's point is evaluated in the volume
+    // element it bounds (2D). `cell`, `ref`: where Phi was evaluated (its tip nodes multiply it).
+    // False when no node there carries the tip unknowns (POST_CHAM_XFEM's displacement at new nodes).
+    struct TipPoint {
+        int cell = -1;
+        std::array<double, 3> ref{};
+        double Phi[9] = {};
+    };
     bool tipMatrix(int cell, int subcell, const std::array<double, 3>& ref, double lambdaEff, double mu,
-                   double Phi[9]) const;
+                   TipPoint& out) const;
     // Gauss-Legendre points per direction of the collapsed rules of crack-tip elements (2D).
     static constexpr int kTipGaussPoints = 12;
     // Levels of splitting of the sub-triangles near the front point (TipEnrichment's tipTriangleRule).
