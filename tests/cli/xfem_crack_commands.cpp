@@ -20,6 +20,24 @@ const std::string kHead =
     "MA = LIRE_MAILLAGE(FORMAT='MED')\n"
     "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(GROUP_MA='SURF', PHENOMENE='MECANIQUE', MODELISATION='D_PLAN'))\n";
 
+// 3D crack-tip enrichment is not done: a crack with a front in a 3D model is refused by
+// MODI_MODELE_XFEM, naming what is missing (sslv318a's mesh and crack).
+TEST(XfemCrackCommands, ThreeDimensionalTipEnrichmentIsRefused) {
+    const auto r = runComm(
+        "DEBUT()\n"
+        "MA = LIRE_MAILLAGE(FORMAT='MED')\n"
+        "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='3D'))\n"
+        "F = DEFI_FISS_XFEM(MAILLAGE=MA, DEFI_FISS=_F(FORM_FISS='RECTANGLE', DEMI_GRAND_AXE=0.3, "
+        "DEMI_PETIT_AXE=0.15, RAYON_CONGE=0.05, CENTRE=(0.5, 0.5, 1.), VECT_X=(1., 0., 0.), VECT_Y=(0., 0., -1.)), "
+        "TYPE_ENRI_FOND='TOPOLOGIQUE')\n"
+        "MX = MODI_MODELE_XFEM(MODELE_IN=MO, FISSURE=F)\n"
+        "FIN()\n",
+        std::string("--mesh '") + MINIASTER_SHARED_DIR + "/astest/sslv318a.mmed'");
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("crack-tip enrichment is implemented for 2D models"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("quadrature along the front"), std::string::npos) << r.output;
+}
+
 }  // namespace
 
 // A half-line crack, tip (0.3, 0.45), towards +x: LSN = y - 0.45 and LST = x - 0.3 at every node.
