@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <span>
 
 #include "core/Error.hpp"
 #include "fe/ElasticityKernels.hpp"
@@ -275,6 +276,31 @@ std::shared_ptr<NodalField> visualisationDisplacement(const XfemModel* xm, const
         const int col = k < maxSlot ? column[k * 3 + j] : -1;
         return col >= 0 && depl->has(node, col) ? depl->at(node, col) : 0.0;
     };
+    std::array<int, 3> tipColumn{-1, -1, -1};  // K1, K2[, K3]
+    for (int m = 0; m < dim; ++m) tipColumn[size_t(m)] = depl->componentIndex(fmt::format("K{}", m + 1));
+    // u += N_a Phi K_a over the tip nodes of the parent cell (docs/cracks.md).
+    auto addTip = [&](const VisualisationNode& vn, std::array<double, 3>& u) {
+        if (xm->tipCrack() < 0 || tipColumn[0] < 0) return;
+        if (!input.material)
+            throw UserError("the result has no material: the crack-tip terms of its displacement need it");
+        const Material& mat = input.material->at(vn.parentCell);
+        const IsotropicLaw law = IsotropicLaw::from(mat, model.modelisation, mat.name);
+        XfemModel::TipPoint at;
+        const CellCut& cut = *xm->cut(vn.parentCell);
+        if (!xm->tipMatrix(vn.parentCell, vn.subcell, cut.points[size_t(vn.point)].ref, law.lambdaEff, law.mu, at))
+            return;
+        const auto cn = mesh.cellNodes(at.cell);
+        std::array<double, 8> Na{};
+        shapeValues(mesh.cellTypes[size_t(at.cell)], at.ref, std::span<double>(Na.data(), cn.size()));
+        for (size_t a = 0; a < cn.size(); ++a) {
+            if (!xm->tipNode(cn[a])) continue;
+            for (int m = 0; m < dim; ++m) {
+                const int col = tipColumn[size_t(m)];
+                const double K = col >= 0 && depl->has(cn[a], col) ? depl->at(cn[a], col) : 0.0;
+                for (int j = 0; j < dim; ++j) u[size_t(j)] += Na[a] * at.Phi[j * 3 + m] * K;
+            }
+        }
+    };
     for (int v = 0; v < vmesh->nodeCount(); ++v) {
         const auto& vn = visu.nodes[v];
         std::array<double, 3> u{0, 0, 0};
@@ -293,6 +319,7 @@ std::shared_ptr<NodalField> visualisationDisplacement(const XfemModel* xm, const
                     for (int j = 0; j < dim; ++j) u[j] += N[a] * psi * value(cn[a], k, j);
                 }
             }
+            addTip(vn, u);
         }
         for (int j = 0; j < dim; ++j) field->set(v, j, u[j]);
         if (withContact && vn.onCrack && vn.original < 0) {
