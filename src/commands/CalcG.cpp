@@ -4,11 +4,11 @@
 // The engine is src/fracture (docs/cracks.md).
 #include <fmt/format.h>
 
+#include "commands/FractureKeywords.hpp"
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "fe/Discretisation.hpp"
 #include "fe/Result.hpp"
-#include "commands/FractureKeywords.hpp"
 #include "fracture/DomainSampling.hpp"
 #include "fracture/ThetaField.hpp"
 #include "mesh/PointLocation.hpp"

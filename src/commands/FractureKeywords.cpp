@@ -22,16 +22,17 @@ std::vector<const ResultStep*> fractureSteps(const Result& result, const Keyword
 
 void checkCrackResult(const Result& result, const xfem::Crack& crack, const std::string& keyword,
                       const std::string& command, bool thetaMethod) {
-    const auto* xfemModel = result.model ? dynamic_cast<const xfem::XfemModel*>(result.model->enrichment.get()) : nullptr;
+    const auto* xfemModel =
+        result.model ? dynamic_cast<const xfem::XfemModel*>(result.model->enrichment.get()) : nullptr;
     bool inModel = false;
     if (xfemModel)
         for (const auto& c : xfemModel->cracks()) inModel = inModel || c.get() == &crack;
     if (!inModel)
-        throw UserError(fmt::format("{}: crack {} is not a crack of the model of result {} (MODI_MODELE_XFEM)",
-                                    keyword, crack.name, result.name));
+        throw UserError(fmt::format("{}: crack {} is not a crack of the model of result {} (MODI_MODELE_XFEM)", keyword,
+                                    crack.name, result.name));
     if (!crack.isCrack || crack.fronts.empty())
-        throw UserError(fmt::format("{}: {} has no front in the mesh: there is no stress intensity to compute",
-                                    keyword, crack.name));
+        throw UserError(fmt::format("{}: {} has no front in the mesh: there is no stress intensity to compute", keyword,
+                                    crack.name));
     if (!result.material) throw UserError(fmt::format("result {} has no material field", result.name));
     if (result.model->dim == 3)
         throw NotImplemented(fmt::format(
@@ -40,10 +41,10 @@ void checkCrackResult(const Result& result, const xfem::Crack& crack, const std:
     if (!thetaMethod) return;
     for (const auto& load : result.loads)
         if (!load.load->lipPressures.empty() || !load.load->volumeForces.empty())
-            throw NotImplemented(fmt::format(
-                "{} with the load {} of result {}: pressure on the crack lips and volume forces enter the "
-                "theta method's right-hand side, which miniaster does not compute yet",
-                command, load.load->name, result.name));
+            throw NotImplemented(
+                fmt::format("{} with the load {} of result {}: pressure on the crack lips and volume forces enter the "
+                            "theta method's right-hand side, which miniaster does not compute yet",
+                            command, load.load->name, result.name));
 }
 
 }  // namespace ma

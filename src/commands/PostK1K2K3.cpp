@@ -30,13 +30,13 @@ Vec3 crackNormal(const Mesh& mesh, const xfem::Crack& crack, const Vec3& tip) {
         n[size_t(c)] = interpolateAt(mesh, at, component);
     }
     const double length = norm(n);
-    if (!(length > 0)) throw UserError(fmt::format("the gradient of LSN of crack {} vanishes at its front", crack.name));
+    if (!(length > 0))
+        throw UserError(fmt::format("the gradient of LSN of crack {} vanishes at its front", crack.name));
     return {n[0] / length, n[1] / length, 0.0};
 }
 
 // ABSC_CURV_MAXI, or code_aster's 5 times the largest tip cell size of the crack's fronts.
-double segmentLength(const KeywordSet& kw, const Mesh& mesh, const xfem::Crack& crack,
-                     const std::vector<Vec3>& grlt) {
+double segmentLength(const KeywordSet& kw, const Mesh& mesh, const xfem::Crack& crack, const std::vector<Vec3>& grlt) {
     if (kw.has("ABSC_CURV_MAXI")) return kw.real("ABSC_CURV_MAXI");
     double largest = 0.0;
     for (size_t f = 0; f < crack.fronts.size(); ++f)
@@ -59,11 +59,13 @@ std::shared_ptr<Table> emptyTable() {
 }
 
 fracture::JumpSifs sifsOf(const fracture::LipSamples& samples, const Vec3& normal, const Vec3& tangent,
-                          const fracture::JumpCoefficients& coef, const ResultStep& step, const std::string& resultName) {
+                          const fracture::JumpCoefficients& coef, const ResultStep& step,
+                          const std::string& resultName) {
     if (samples.abscissa.size() < 3)
-        throw UserError(fmt::format("NUME_ORDRE {} of {}: only {} points of the lips lie in the mesh, 3 are needed "
-                                    "(code_aster's RUPTURE0_46): shorten ABSC_CURV_MAXI",
-                                    step.order, resultName, samples.abscissa.size()));
+        throw UserError(
+            fmt::format("NUME_ORDRE {} of {}: only {} points of the lips lie in the mesh, 3 are needed "
+                        "(code_aster's RUPTURE0_46): shorten ABSC_CURV_MAXI",
+                        step.order, resultName, samples.abscissa.size()));
     std::array<std::vector<double>, 3> local;
     for (const Vec3& j : samples.jump) {
         local[0].push_back(dot(j, normal));
@@ -105,9 +107,10 @@ ConceptPtr postK1K2K3(const KeywordSet& kw, CommandContext&) {
         msg().infof("    front {} of {}, NUME_ORDRE {}: {} points over {:.6e}: K1 = {:.6e}, K2 = {:.6e}, G = {:.6e}",
                     numeFond, crack->name, step->order, samples.abscissa.size(), length, k.K[0], k.K[1], k.G);
     }
-    table->title = kw.has("TITRE") ? kw.texts("TITRE")
-                                   : std::vector<std::string>{
-                                         "CALCUL DES FACTEURS D'INTENSITE DES CONTRAINTES PAR LA METHODE POST_K1_K2_K3"};
+    table->title =
+        kw.has("TITRE")
+            ? kw.texts("TITRE")
+            : std::vector<std::string>{"CALCUL DES FACTEURS D'INTENSITE DES CONTRAINTES PAR LA METHODE POST_K1_K2_K3"};
     return table;
 }
 

@@ -25,12 +25,12 @@ struct FrontFrame {
 
 // What the integrals need at one integration point.
 struct DomainPoint {
-    double weight = 0.0;      // physical weight (2D: unit thickness)
-    Vec3 xyz{};               // physical point
-    double gradU[3][3]{};     // du_i/dx_j of the solution
-    Vec3 theta{};             // the virtual crack extension
+    double weight = 0.0;       // physical weight (2D: unit thickness)
+    Vec3 xyz{};                // physical point
+    double gradU[3][3]{};      // du_i/dx_j of the solution
+    Vec3 theta{};              // the virtual crack extension
     double gradTheta[3][3]{};  // dtheta_k/dx_j
-    double side = 0.0;        // +1: theta = +pi side of the crack (x2 > 0 near it), -1 the other, 0: from x2
+    double side = 0.0;         // +1: theta = +pi side of the crack (x2 > 0 near it), -1 the other, 0: from x2
     double E = 0.0, nu = 0.0;  // the material of the point's cell
 };
 

@@ -47,7 +47,8 @@ std::vector<DomainPoint> domainPoints(const Discretisation& space, const std::ve
                 levelSet += Na * lsn[node];
                 for (int k = 0; k < dim; ++k) {
                     q.theta[size_t(k)] += Na * theta[node][size_t(k)];
-                    for (int j = 0; j < dim; ++j) q.gradTheta[k][j] += geo.gradN[(p * n + a) * 3 + size_t(j)] * theta[node][size_t(k)];
+                    for (int j = 0; j < dim; ++j)
+                        q.gradTheta[k][j] += geo.gradN[(p * n + a) * 3 + size_t(j)] * theta[node][size_t(k)];
                 }
             }
             q.side = levelSet > 0 ? positiveLsnSide : (levelSet < 0 ? -positiveLsnSide : 0.0);

@@ -46,7 +46,8 @@ double tipCellSize(const Mesh& mesh, const xfem::Crack& crack, const Vec3& x, co
 
 TipPoint tipPoint2D(const Mesh& mesh, const xfem::Crack& crack, const std::vector<Vec3>& grlt, int numeFond) {
     if (numeFond < 1 || size_t(numeFond) > crack.fronts.size() || crack.fronts[size_t(numeFond - 1)].points.empty())
-        throw UserError(fmt::format("NUME_FOND={}: crack {} has {} front(s)", numeFond, crack.name, crack.fronts.size()));
+        throw UserError(
+            fmt::format("NUME_FOND={}: crack {} has {} front(s)", numeFond, crack.name, crack.fronts.size()));
     TipPoint tip;
     tip.point = crack.fronts[size_t(numeFond - 1)].points.front();
     const PointInCell at = locatePoint(mesh, tip.point);
@@ -78,9 +79,10 @@ std::vector<Vec3> thetaField2D(const Mesh& mesh, const Vec3& tip, const std::vec
         if (alpha >= 1 - eps) continue;
         const double g = std::hypot(grlt[n][0], grlt[n][1]);
         if (g <= 1e4 * std::numeric_limits<double>::epsilon())
-            throw UserError(fmt::format("node {}: the gradient of LST (GRLTNO) vanishes inside R_SUP, so theta has "
-                                        "no direction there (code_aster's XFEM_12)",
-                                        mesh.nodeNames[n]));
+            throw UserError(
+                fmt::format("node {}: the gradient of LST (GRLTNO) vanishes inside R_SUP, so theta has "
+                            "no direction there (code_aster's XFEM_12)",
+                            mesh.nodeNames[n]));
         const double scale = alpha <= eps ? 1.0 : 1.0 - alpha;
         theta[n] = {scale * grlt[n][0] / g, scale * grlt[n][1] / g, 0.0};
     }

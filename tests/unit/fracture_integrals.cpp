@@ -25,7 +25,7 @@ struct Scene {
     double K1 = 1.3e6, K2 = -0.45e6;
     double angle = 0.0;  // the crack's direction of propagation
     Vec3 tip{0.013, -0.021, 0.0};
-    int n = 40;          // cells per side of [-1, 1]^2 (before rotation and translation)
+    int n = 40;  // cells per side of [-1, 1]^2 (before rotation and translation)
 };
 
 // The grid's node (i, j) rotated by `angle` about the origin and moved to the tip.
@@ -106,7 +106,8 @@ std::vector<DomainPoint> exactPoints(const Scene& s, const Mesh& mesh, const std
                 for (int k = 0; k < 2; ++k) {
                     q.theta[size_t(k)] += geo.N[p * 4 + a] * theta[size_t(nodes[a])][size_t(k)];
                     for (int j = 0; j < 2; ++j)
-                        q.gradTheta[k][j] += geo.gradN[(p * 4 + a) * 3 + size_t(j)] * theta[size_t(nodes[a])][size_t(k)];
+                        q.gradTheta[k][j] +=
+                            geo.gradN[(p * 4 + a) * 3 + size_t(j)] * theta[size_t(nodes[a])][size_t(k)];
                 }
             out.push_back(q);
         }
@@ -187,6 +188,82 @@ TEST(FractureIntegrals, ThetaFieldIsCodeAstersCrown) {
     std::vector<Vec3> null = grlt;
     null[12] = Vec3{};  // the centre node: inside the crown
     EXPECT_THROW(thetaField2D(*mesh, s.tip, null, 0.6, 1.2), UserError);
+}
+
+}  // namespace
+
+namespace {
+
+// 3D: a straight front along z through a box of HEXA8, the crack y = 0, x < 0; Williams' plane-strain
+// modes I, II and the antiplane mode III, uniform along z (an exact solution for a straight front).
+// theta = q(r) psi(z) e1 with psi a hat vanishing on the z faces: the integrals are
+// G int psi dz and K int psi dz, so dividing by int psi dz gives G and K of the front.
+TEST(FractureIntegrals, ExactFieldsAlongAStraightFront3D) {
+    const double E = 2e11, nu = 0.3, K1 = 2e6, K2 = -0.7e6, K3 = 1.1e6;
+    const int n = 16, nz = 4;
+    auto m = std::make_shared<Mesh>();
+    m->dim = 3;
+    for (int k = 0; k <= nz; ++k)
+        for (int j = 0; j <= n; ++j)
+            for (int i = 0; i <= n; ++i) m->addNode({-1.0 + 2.0 * i / n, -1.0 + 2.0 * j / n, 0.5 * k / nz});
+    auto id = [&](int i, int j, int k) { return (k * (n + 1) + j) * (n + 1) + i; };
+    for (int k = 0; k < nz; ++k)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+                m->addCell(CellType::HEXA8, std::vector<int>{id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k),
+                                                             id(i, j + 1, k), id(i, j, k + 1), id(i + 1, j, k + 1),
+                                                             id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
+    FrontFrame f;
+    f.e1 = {1, 0, 0}, f.e2 = {0, 1, 0}, f.e3 = {0, 0, 1};
+    std::vector<Vec3> theta(size_t(m->nodeCount()));
+    for (int a = 0; a < m->nodeCount(); ++a) {
+        const Vec3& x = m->coords[size_t(a)];
+        const double r = std::hypot(x[0], x[1]), q = r <= 0.25 ? 1.0 : (r >= 0.75 ? 0.0 : (0.75 - r) / 0.5);
+        theta[size_t(a)] = {q * (1 - std::abs(x[2] - 0.25) / 0.25), 0.0, 0.0};
+    }
+    const auto c = ElasticConstants::of(E, nu, Modelisation::TRI_D);
+    const QuadratureRule& line = quadratureRule(CellType::SEG2, "FPG4");
+    ElementIntegration ei;
+    ei.nodeCount = 8;
+    ei.slots.assign(8, 1);
+    for (const auto& a : line.points)
+        for (const auto& b : line.points)
+            for (const auto& d : line.points) ei.refPoints.push_back({a[0], b[0], d[0]});
+    for (double a : line.weights)
+        for (double b : line.weights)
+            for (double d : line.weights) ei.refWeights.push_back(a * b * d);
+    std::vector<DomainPoint> points;
+    PointGeometry geo;
+    for (int cell = 0; cell < m->cellCount(); ++cell) {
+        ei.cell = cell;
+        computePointGeometry(*m, cell, 3, false, ei, geo);
+        const auto nodes = m->cellNodes(cell);
+        const double side = m->coords[size_t(nodes[2])][1] > 0 ? 1.0 : -1.0;  // node (i+1, j+1): above y = 0 or not
+        for (size_t p = 0; p < ei.refPoints.size(); ++p) {
+            DomainPoint q;
+            q.weight = geo.weight[p], q.xyz = geo.xyz[p], q.side = side, q.E = E, q.nu = nu;
+            const double r = std::hypot(q.xyz[0], q.xyz[1]);
+            const double t = std::copysign(std::acos(std::clamp(q.xyz[0] / r, -1.0, 1.0)), side);
+            const auto a = williamsField(Mode::I, r, t, c.mu, c.kappa),
+                       b = williamsField(Mode::II, r, t, c.mu, c.kappa),
+                       d = williamsField(Mode::III, r, t, c.mu, c.kappa);
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j) q.gradU[i][j] = K1 * a.grad[i][j] + K2 * b.grad[i][j] + K3 * d.grad[i][j];
+            for (size_t k = 0; k < 8; ++k)
+                for (int j = 0; j < 3; ++j) {
+                    q.theta[0] += j == 0 ? geo.N[p * 8 + k] * theta[size_t(nodes[k])][0] : 0.0;
+                    q.gradTheta[0][j] += geo.gradN[(p * 8 + k) * 3 + size_t(j)] * theta[size_t(nodes[k])][0];
+                }
+            points.push_back(q);
+        }
+    }
+    const auto v = domainIntegrals(points, f, Modelisation::TRI_D, 3, true);
+    const double length = 0.25;  // int psi dz
+    const double g = (K1 * K1 + K2 * K2) * (1 - nu * nu) / E + K3 * K3 * (1 + nu) / E;
+    EXPECT_NEAR(v.K1 / length, K1, 1e-6 * K1);
+    EXPECT_NEAR(v.K2 / length, K2, 1e-6 * K1);
+    EXPECT_NEAR(v.K3 / length, K3, 1e-6 * K1);
+    EXPECT_NEAR(v.G / length, g, 1e-6 * g);
 }
 
 }  // namespace

@@ -46,9 +46,9 @@ std::shared_ptr<Mesh> seamMesh(int n, std::vector<char>& upper) {
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             const bool lower = j < n / 2;
-            all.push_back(m->addCell(CellType::QUAD4, std::vector<int>{node(i, j, lower), node(i + 1, j, lower),
-                                                                       node(i + 1, j + 1, lower),
-                                                                       node(i, j + 1, lower)}));
+            all.push_back(
+                m->addCell(CellType::QUAD4, std::vector<int>{node(i, j, lower), node(i + 1, j, lower),
+                                                             node(i + 1, j + 1, lower), node(i, j + 1, lower)}));
         }
     m->cellGroups.set("ALL", all);
     return m;
@@ -69,7 +69,8 @@ FrontValues feIntegrals(int n, double rInf, double rSup) {
         if (r == 0.0) continue;
         const double t = std::copysign(std::acos(x[0] / r), upper[size_t(a)] ? 1.0 : -1.0);
         const auto f1 = williamsField(Mode::I, r, t, c.mu, c.kappa), f2 = williamsField(Mode::II, r, t, c.mu, c.kappa);
-        for (int k = 0; k < 2; ++k) u[size_t(space.numbering().dof(a, 0, k))] = kK1 * f1.u[size_t(k)] + kK2 * f2.u[size_t(k)];
+        for (int k = 0; k < 2; ++k)
+            u[size_t(space.numbering().dof(a, 0, k))] = kK1 * f1.u[size_t(k)] + kK2 * f2.u[size_t(k)];
     }
     FrontFrame frame;
     frame.e1 = {1, 0, 0}, frame.e2 = {0, 1, 0}, frame.e3 = {0, 0, 1};
@@ -117,8 +118,8 @@ TEST(FractureSampling, JumpExtrapolationSpreadIsCodeAstersError) {
     // A jump that is not sqrt(s): the methods disagree and ERR_K1 says by how much.
     const auto coef = JumpCoefficients::of(kE, kNu, Modelisation::D_PLAN);
     const std::vector<double> s{0.0, 0.1, 0.2, 0.3};
-    std::array<std::vector<double>, 3> jump{std::vector<double>{0.0, 1e-6, 1.5e-6, 1.8e-6},
-                                            std::vector<double>(4, 0.0), std::vector<double>(4, 0.0)};
+    std::array<std::vector<double>, 3> jump{std::vector<double>{0.0, 1e-6, 1.5e-6, 1.8e-6}, std::vector<double>(4, 0.0),
+                                            std::vector<double>(4, 0.0)};
     const auto k = extrapolateJumps(s, jump, coef);
     // method 1 on (0.1, 0.2) and (0.2, 0.3): K^2 extrapolated linearly in s from y/s
     auto y = [&](size_t i) { return std::pow(coef.coefd * jump[0][i], 2) / s[i]; };
