@@ -9,6 +9,7 @@
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
 #include "fe/Material.hpp"
+#include "fracture/FractureMessages.hpp"
 #include "fracture/JumpExtrapolation.hpp"
 #include "fracture/LipJumps.hpp"
 #include "fracture/ThetaField.hpp"
@@ -38,9 +39,12 @@ Vec3 crackNormal(const Mesh& mesh, const xfem::Crack& crack, const Vec3& tip) {
 // ABSC_CURV_MAXI, or code_aster's 5 times the largest tip cell size of the crack's fronts.
 double segmentLength(const KeywordSet& kw, const Mesh& mesh, const xfem::Crack& crack, const std::vector<Vec3>& grlt) {
     if (kw.has("ABSC_CURV_MAXI")) return kw.real("ABSC_CURV_MAXI");
-    double largest = 0.0;
-    for (size_t f = 0; f < crack.fronts.size(); ++f)
-        largest = std::max(largest, fracture::tipPoint2D(mesh, crack, grlt, int(f + 1)).cellSize);
+    double largest = 0.0, smallest = 1e300;
+    for (size_t f = 0; f < crack.fronts.size(); ++f) {
+        const double size = fracture::tipPoint2D(mesh, crack, grlt, int(f + 1)).cellSize;
+        largest = std::max(largest, size), smallest = std::min(smallest, size);
+    }
+    if (largest > 2 * smallest) msg().alarm(RUPTURE0_17, int(crack.fronts.size()), smallest, largest);
     msg().infof("    ABSC_CURV_MAXI not given: 5 times the largest tip cell size, {:.6e}", 5 * largest);
     return 5 * largest;
 }
