@@ -66,6 +66,9 @@ TipPoint tipPoint2D(const Mesh& mesh, const xfem::Crack& crack, const std::vecto
     tip.frame.e2 = {-tip.frame.e1[1], tip.frame.e1[0], 0.0};
     tip.frame.e3 = {0.0, 0.0, 1.0};
     tip.cellSize = tipCellSize(mesh, crack, tip.point, tip.frame.e1);
+    if (!(tip.cellSize > 0))
+        throw InternalError(
+            fmt::format("front {} of crack {}: no tip cell contains the front point", numeFond, crack.name));
     return tip;
 }
 

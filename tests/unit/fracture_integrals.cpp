@@ -13,6 +13,7 @@
 #include "fracture/DomainIntegrals.hpp"
 #include "fracture/ThetaField.hpp"
 #include "fracture/WilliamsFields.hpp"
+#include "xfem/Crack.hpp"
 
 namespace {
 
@@ -264,6 +265,36 @@ TEST(FractureIntegrals, ExactFieldsAlongAStraightFront3D) {
     EXPECT_NEAR(v.K2 / length, K2, 1e-6 * K1);
     EXPECT_NEAR(v.K3 / length, K3, 1e-6 * K1);
     EXPECT_NEAR(v.G / length, g, 1e-6 * g);
+}
+
+}  // namespace
+
+namespace {
+
+// The tip of a crack built by DEFI_FISS_XFEM's engine: its point, direction and TAILLE_R (xtailm:
+// the largest |edge . e1| of the tip cell; here the grid's edges 0.2 along x and y).
+TEST(FractureIntegrals, TipPointFrameAndCellSize) {
+    Scene s;
+    s.n = 10;
+    s.tip = {0.0, 0.0, 0.0};
+    const auto mesh = grid(s);
+    const double beta = 0.3;
+    const Vec3 p{0.05, 0.07, 0.0}, d{std::cos(beta), std::sin(beta), 0.0};
+    std::vector<double> lsn, lst;
+    for (const auto& x : mesh->coords) {
+        lsn.push_back(-d[1] * (x[0] - p[0]) + d[0] * (x[1] - p[1]));
+        lst.push_back(d[0] * (x[0] - p[0]) + d[1] * (x[1] - p[1]));
+    }
+    const auto crack = xfem::buildCrackWithFront(mesh, lsn, lst);
+    const auto grlt = xfem::nodalLevelSetGradient(*mesh, crack->lst);
+    const auto tip = tipPoint2D(*mesh, *crack, grlt, 1);
+    for (int k = 0; k < 2; ++k) {
+        EXPECT_NEAR(tip.point[size_t(k)], p[size_t(k)], 1e-14);
+        EXPECT_NEAR(tip.frame.e1[size_t(k)], d[size_t(k)], 1e-14);
+    }
+    EXPECT_NEAR(tip.frame.e2[0], -d[1], 1e-14);
+    EXPECT_NEAR(tip.cellSize, 0.2 * std::cos(beta), 1e-14);
+    EXPECT_THROW(tipPoint2D(*mesh, *crack, grlt, 2), UserError);
 }
 
 }  // namespace
