@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "fe/Discretisation.hpp"
+#include "fe/MechanicalProblem.hpp"
 #include "fe_test_support.hpp"
 #include "fracture/DomainSampling.hpp"
 #include "fracture/JumpExtrapolation.hpp"
@@ -51,6 +52,13 @@ std::shared_ptr<Mesh> seamMesh(int n, std::vector<char>& upper) {
                                                              node(i + 1, j + 1, lower), node(i, j + 1, lower)}));
         }
     m->cellGroups.set("ALL", all);
+    std::vector<int> up, low;  // the outer boundary's nodes by side of the crack
+    for (int a = 0; a < m->nodeCount(); ++a) {
+        const Vec3& x = m->coords[size_t(a)];
+        if (std::max(std::abs(x[0]), std::abs(x[1])) > 1 - 1e-12) (upper[size_t(a)] ? up : low).push_back(a);
+    }
+    m->nodeGroups.set("BUP", up);
+    m->nodeGroups.set("BLO", low);
     return m;
 }
 
@@ -92,6 +100,60 @@ TEST(FractureSampling, NodalWilliamsFieldConvergesThroughTheElements) {
         previous = std::max(e1, e2);
     }
     EXPECT_LT(previous, 5e-3);
+}
+
+// The same seam mesh solved by MECA_STATIQUE's engine with Williams' displacement prescribed on the
+// outer boundary (each lip's side its own branch of theta): K from the FE solution converges.
+std::shared_ptr<Function> williams(int component, double side) {
+    return std::make_shared<fetest::LambdaFunction>([component, side](double x, double y, double) {
+        const auto c = ElasticConstants::of(kE, kNu, Modelisation::D_PLAN);
+        const double r = std::hypot(x, y), t = side * std::acos(std::clamp(x / r, -1.0, 1.0));
+        const auto f1 = williamsField(Mode::I, r, t, c.mu, c.kappa), f2 = williamsField(Mode::II, r, t, c.mu, c.kappa);
+        return kK1 * f1.u[size_t(component)] + kK2 * f2.u[size_t(component)];
+    });
+}
+
+FrontValues solvedIntegrals(int n) {
+    using namespace fetest;
+    std::vector<char> upper;
+    auto mesh = seamMesh(n, upper);
+    auto model = affeModele(mesh, "D_PLAN", {"ALL"});
+    auto mat = material(model, kE, kNu);
+    KeywordSet kw;
+    set(kw, "MODELE", model);
+    for (auto [group, side] : {std::pair{"BUP", 1.0}, {"BLO", -1.0}}) {
+        auto& d = kw.addOccurrence("DDL_IMPO");
+        setTexts(d, "GROUP_NO", {group});
+        set(d, "DX", ConceptPtr(williams(0, side)));
+        set(d, "DY", ConceptPtr(williams(1, side)));
+    }
+    auto load = std::dynamic_pointer_cast<MechanicalLoad>(run("AFFE_CHAR_MECA_F", kw, "CHAR"));
+    MechanicalProblem problem(model, mat, {{load, nullptr}}, SolverOptions{});
+    ConvergenceOptions conv;
+    conv.maxIterations = 0;
+    conv.resiGlobRela = -1.0;
+    problem.solveIncrement(0.0, conv);
+    Discretisation space(model, mat, {});
+    std::vector<double> lsn;
+    for (const auto& x : mesh->coords) lsn.push_back(x[1]);
+    FrontFrame frame;
+    frame.e1 = {1, 0, 0}, frame.e2 = {0, 1, 0}, frame.e3 = {0, 0, 1};
+    const auto theta =
+        thetaField2D(*mesh, frame.origin, std::vector<Vec3>(size_t(mesh->nodeCount()), frame.e1), 0.25, 0.75);
+    return domainIntegrals(domainPoints(space, problem.state(), theta, lsn, 1.0), frame, Modelisation::D_PLAN, 2, true);
+}
+
+TEST(FractureSampling, SolvedWilliamsProblemConverges) {
+    msg().setEcho(false);
+    double previous = 1.0;
+    for (int n : {16, 32, 64}) {
+        const auto v = solvedIntegrals(n);
+        const double e = std::max(std::abs(v.K1 / kK1 - 1), std::abs(v.K2 / kK1 - kK2 / kK1));
+        std::printf("solved n %d: K1 %.6e K2 %.6e, error %.3e\n", n, v.K1, v.K2, e);
+        EXPECT_LT(e, previous / 1.8);
+        previous = e;
+    }
+    EXPECT_LT(previous, 1e-2);
 }
 
 TEST(FractureSampling, ExactLipJumpsGiveKExactly) {
