@@ -1,14 +1,14 @@
 #!/usr/bin/python3
 """Structured box meshes in code_aster's .mail text format (LIRE_MAILLAGE FORMAT='ASTER').
 
-  box_mail.py quad4 NX NY OUT.mail [--size LX LY] [--title TEXT]
+  box_mail.py quad4|tria3 NX NY OUT.mail [--size LX LY] [--title TEXT]
   box_mail.py hexa8|tetra4 NX NY NZ OUT.mail [--size LX LY LZ] [--title TEXT]
 
 Domain [0,LX] x [0,LY] (x [0,LZ]), default 2 x 4 (x 1): the scenes of the four-interface cases
 (astest/xfem_four_*). Nodes N1... row by row (then layer by layer), cells M1... written type by
 type in MED type order (skin before volumes, as IMPR_RESU writes them), so that a MED conversion
 keeps the numbering. Groups:
-  2D: SURF (QUAD4); SEG2 sides LB (y = 0), LD (x = LX), LH (y = LY), LG (x = 0), counter-clockwise.
+  2D: SURF (QUAD4, or two TRIA3 per square split along its (0,0)-(1,1) diagonal); SEG2 sides LB (y = 0), LD (x = LX), LH (y = LY), LG (x = 0), counter-clockwise.
   3D: VOLU; outward skin SB (y = 0), SD (x = LX), SH (y = LY), SG (x = 0), FACE (z = 0),
       DOS (z = LZ): QUAD4 on hexa8, two TRIA3 per square on tetra4 (the diagonals of the
       tetrahedra: each cube is split in the 6 tetrahedra around its (0,0,0)-(1,1,1) diagonal).
@@ -74,7 +74,7 @@ class MailWriter:
         return "\n".join(out + ["FIN"]) + "\n"
 
 
-def quad4_box(nx, ny, lx, ly, title):
+def plane_box(kind, nx, ny, lx, ly, title):
     m = MailWriter(title, 2)
     name = lambda i, j: "N%d" % (j * (nx + 1) + i + 1)
     for j in range(ny + 1):
@@ -82,7 +82,12 @@ def quad4_box(nx, ny, lx, ly, title):
             m.nodes.append((name(i, j), (lx * i / nx, ly * j / ny, 0.)))
     for j in range(ny):
         for i in range(nx):
-            m.add_cell("QUAD4", [name(i, j), name(i + 1, j), name(i + 1, j + 1), name(i, j + 1)], "SURF")
+            a, b, c, d = name(i, j), name(i + 1, j), name(i + 1, j + 1), name(i, j + 1)
+            if kind == "QUAD4":
+                m.add_cell("QUAD4", [a, b, c, d], "SURF")
+            else:
+                m.add_cell("TRIA3", [a, b, c], "SURF")
+                m.add_cell("TRIA3", [a, c, d], "SURF")
     for i in range(nx):
         m.add_cell("SEG2", [name(i, 0), name(i + 1, 0)], "LB")
     for j in range(ny):
@@ -134,20 +139,20 @@ def volume_box(kind, nx, ny, nz, lx, ly, lz, title):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("kind", choices=["quad4", "hexa8", "tetra4"])
+    parser.add_argument("kind", choices=["quad4", "tria3", "hexa8", "tetra4"])
     parser.add_argument("divisions", type=int, nargs="+", help="NX NY (NZ)")
     parser.add_argument("output")
     parser.add_argument("--size", type=float, nargs="+", help="LX LY (LZ)")
     parser.add_argument("--title", default="")
     args = parser.parse_args()
-    dim = 2 if args.kind == "quad4" else 3
+    dim = 2 if args.kind in ("quad4", "tria3") else 3
     if len(args.divisions) != dim:
         parser.error("%s needs %d divisions" % (args.kind, dim))
     size = args.size or [2., 4., 1.][:dim]
     title = args.title or "%s box %s, [0,%s]" % (args.kind.upper(), " x ".join(map(str, args.divisions)),
                                                    "] x [0,".join("%g" % s for s in size))
     if dim == 2:
-        text = quad4_box(*args.divisions, *size, title)
+        text = plane_box(args.kind.upper(), *args.divisions, *size, title)
     else:
         text = volume_box(args.kind.upper(), *args.divisions, *size, title)
     with open(args.output, "w") as out:

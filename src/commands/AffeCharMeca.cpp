@@ -19,8 +19,8 @@ namespace mechanics {
 
 namespace {
 
-const char* const kDofKeywords[] = {"DX",  "DY",  "DZ",  "H1X", "H1Y", "H1Z", "H2X", "H2Y",
-                                    "H2Z", "H3X", "H3Y", "H3Z", "H4X", "H4Y", "H4Z"};
+const char* const kDofKeywords[] = {"DX",  "DY",  "DZ",  "H1X", "H1Y", "H1Z", "H2X", "H2Y", "H2Z",
+                                    "H3X", "H3Y", "H3Z", "H4X", "H4Y", "H4Z", "K1",  "K2",  "K3"};
 
 // Reads a load value: a real, or (AFFE_CHAR_MECA_F) a function.
 void readValue(const KeywordSet& occ, const std::string& key, bool functions, double& value,
@@ -48,7 +48,8 @@ ConceptPtr buildMechanicalLoad(const KeywordSet& kw, bool functions) {
             if (!occ.has(key)) continue;
             ++components;
             int slot = 0, comp = 0;
-            parseDisplacementComponent(key, slot, comp);
+            if (key[0] == 'K') slot = -1, comp = key[1] - '1';  // crack-tip unknowns: tip nodes only
+            else parseDisplacementComponent(key, slot, comp);
             if (comp >= model->dim)
                 throw UserError(fmt::format("{}: the model {} is {} and has no component {}", occ.pathOf(key),
                                             model->name, modelisationName(model->modelisation), key));

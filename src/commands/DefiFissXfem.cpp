@@ -209,6 +209,16 @@ ConceptPtr defiFissXfem(const KeywordSet& kw, CommandContext& ctx) {
                                  ": an enrichment zone for a crack with a front (TYPE_DISCONTINUITE='FISSURE') is "
                                  "not implemented; it restricts interfaces (TYPE_DISCONTINUITE='INTERFACE')");
         crack = xfem::buildCrackWithFront(mesh, std::move(ls.lsn), std::move(ls.lst));
+        if (kw.text("TYPE_ENRI_FOND") == "GEOMETRIQUE") {
+            const bool given = kw.has("RAYON_ENRI");
+            const double radius = xfem::enrichCrackTipZone(*crack, given ? kw.real("RAYON_ENRI") : 0.0,
+                                                           given ? 0 : static_cast<int>(kw.integer("NB_COUCHES")));
+            if (radius > 0.0)
+                msg().infof("    TYPE_ENRI_FOND='GEOMETRIQUE': crack-tip enrichment radius {:.6e} ({})", radius,
+                            given ? "RAYON_ENRI"
+                                  : fmt::format("NB_COUCHES={} times the smallest tip cell's size",
+                                                kw.integer("NB_COUCHES")));
+        }
     } else {
         crack = interfaceOf(kw, mesh, std::move(ls.lsn));
     }

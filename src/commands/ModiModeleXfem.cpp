@@ -49,6 +49,36 @@ const RunOptionRegistration subcellQuadratureOption(RunOption{
 
 // Which rule each kind of sub-cell uses, and whether it is the catalogue's or the run option's, so
 // that a .mess always tells how the X-FEM elements were integrated.
+// The crack-tip enrichment in the .mess: nodes, unknowns, elements and their quadrature.
+void logTipEnrichment(const xfem::XfemModel& xm) {
+    if (xm.tipCrack() < 0) return;
+    const xfem::Crack& crack = *xm.cracks()[size_t(xm.tipCrack())];
+    int tipElements = 0, heaviside = 0, both = 0;
+    for (int c : xm.xfemCells()) {
+        bool tip = false;
+        for (int n : xm.mesh().cellNodes(c)) tip = tip || xm.tipNode(n);
+        tipElements += tip && !xm.cut(c)->skin;
+    }
+    for (int n = 0; n < xm.mesh().nodeCount(); ++n) {
+        heaviside += xm.activeSlots(n) > 0;
+        both += xm.activeSlots(n) > 0 && xm.tipNode(n);
+    }
+    msg().infof(
+        "    crack-tip enrichment of {}: {} nodes carry K1..K{} ({} unknowns; {} of them also Heaviside, status 3), "
+        "{} Heaviside-enriched nodes in all, {} crack-tip elements",
+        crack.name, xm.tipNodeCount(), xm.dim(), xm.tipNodeCount() * xm.dim(), both, heaviside, tipElements);
+    if (xm.subcellDegree() == 0)
+        msg().infof(
+            "    crack-tip elements: each sub-triangle integrated by a collapsed {}x{} Gauss-Legendre rule, fanned "
+            "from "
+            "the front point (radial coordinate s^2) in the cell containing it (code_aster: FPG12 per sub-triangle)",
+            xfem::XfemModel::kTipGaussPoints, xfem::XfemModel::kTipGaussPoints);
+    msg().infof(
+        "    conditioning: the linear solvers factorise the Jacobi-scaled matrix D^-1/2 K D^-1/2 (every unknown, "
+        "K1..K{} included, scaled by its diagonal), in place of code_aster's preconditioning of the enriched unknowns",
+        xm.dim());
+}
+
 void logSubcellQuadrature(const xfem::XfemModel& xm) {
     struct Usage {
         xfem::SubcellKind kind;
@@ -155,13 +185,11 @@ ConceptPtr modiModeleXfem(const KeywordSet& kw, CommandContext& ctx) {
     std::vector<std::shared_ptr<const xfem::Crack>> cracks;
     for (const auto& c : kw.objects<xfem::Crack>("FISSURE")) {
         const int tipNodes = c->nodeCountWithStatus(2) + c->nodeCountWithStatus(3);
-        if (!c->tipCells.empty() || tipNodes > 0)
+        if (tipNodes > 0 && in->dim == 3)
             throw NotImplemented(fmt::format(
                 "{}: the front of crack {} lies inside the mesh ({} cells contain it, {} nodes have crack-tip "
-                "status): crack-tip enrichment (the asymptotic branch functions of TYPE_ENRI_FOND) is not "
-                "implemented yet (issue 26, step 2). An X-FEM model takes interfaces and cracks that cut the "
-                "structure through (no front in the mesh); the crack's level sets and front are available "
-                "(CREA_CHAMP OPERATION='EXTR', the .mess of DEFI_FISS_XFEM)",
+                "status): crack-tip enrichment is implemented for 2D models (QUAD4, TRIA3); in 3D the sub-cell "
+                "quadrature along the front and its verification are not done yet (issue 26, step 2)",
                 kw.pathOf("FISSURE"), c->name, c->tipCells.size(), tipNodes));
         cracks.push_back(c);
     }
@@ -183,6 +211,10 @@ ConceptPtr modiModeleXfem(const KeywordSet& kw, CommandContext& ctx) {
     const auto rule = ctx.runOptions.find("subcell-quadrature");
     const int degree = rule == ctx.runOptions.end() ? 0 : *subcellDegreeOf(rule->second);
     auto xm = std::make_shared<xfem::XfemModel>(*out, cracks, mode, criterion, degree);
+    if (xm->tipCrack() >= 0 && mode != xfem::XfemContact::None)
+        throw NotImplemented(kw.pathOf("CONTACT") + "='" + contact +
+                             "': contact on the lips of a crack with a front in the mesh (crack-tip enrichment) is "
+                             "not implemented; CONTACT='SANS'");
     out->enrichment = xm;
 
     std::map<std::pair<int, int>, int> types;  // (cracks seen, slots) -> elements
@@ -210,6 +242,7 @@ ConceptPtr modiModeleXfem(const KeywordSet& kw, CommandContext& ctx) {
         "enrichment(s) dropped",
         xm->smallestRetainedFraction(), std::pow(criterion, xm->dim()), xm->droppedSlots());
     logSubcellQuadrature(*xm);
+    logTipEnrichment(*xm);
     return out;
 }
 

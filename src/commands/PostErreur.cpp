@@ -39,7 +39,9 @@ ConceptPtr postErreur(const KeywordSet& kw, CommandContext&) {
         // DX, DY[, DZ] in this order: a component without formula is zero (§5.2).
         std::vector<std::string> comps{"DX", "DY", "DZ"};
         if (model->dim == 2 && !kw.has("DZ")) comps.pop_back();
-        table = displacementErrorTable(*model, *field, groups, formulas(kw, comps));
+        std::shared_ptr<const MaterialField> material;
+        if (kw.has("CHAM_MATER")) material = kw.object<MaterialField>("CHAM_MATER");
+        table = displacementErrorTable(*model, *field, groups, formulas(kw, comps), material.get());
     } else if (option == "ENER_RELA") {
         auto field = std::dynamic_pointer_cast<GaussField>(kw.rawObject("CHAM_GD"));
         if (!field)

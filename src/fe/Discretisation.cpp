@@ -19,10 +19,11 @@ Discretisation::Discretisation(std::shared_ptr<const Model> model, std::shared_p
     LawCache laws(*material_);
     for (size_t e = 0; e < model_->elements.size(); ++e) {
         const auto& element = model_->elements[e];
-        (void)laws.of(element);
+        const IsotropicLaw& law = laws.of(element);
         if (enriched && model_->enrichment->isEnriched(element.cell)) {
             enrichedIndex_[e] = static_cast<int>(enrichedIntegrations_.size());
             model_->enrichment->integration(element.cell, enrichedIntegrations_.emplace_back());
+            applyTipLaw(enrichedIntegrations_.back(), law.lambdaEff, law.mu);
             markAttached(enrichedIntegrations_.back(), dofs);
         } else {
             for (int node : mesh.cellNodes(element.cell))
@@ -35,13 +36,16 @@ Discretisation::Discretisation(std::shared_ptr<const Model> model, std::shared_p
 void Discretisation::markAttached(const ElementIntegration& x, std::vector<int>& dofs) {
     localDofs(*model_->mesh, numbering_, x, dofs);
     int i = 0;
-    for (int a = 0; a < x.nodeCount; ++a)
+    for (int a = 0; a < x.nodeCount; ++a) {
         for (int k = 0; k < x.slots[a]; ++k) {
             bool used = k == 0;
             for (size_t p = 0; p < x.refPoints.size() && !used; ++p) used = x.multiplier(int(p), a, k) != 0.0;
             for (int c = 0; c < numbering_.dim(); ++c, ++i)
                 if (used) attached_[dofs[i]] = 1;
         }
+        if (x.tipAt(a))  // the crack-tip unknowns: their field is not zero in a tip-enriched element
+            for (int c = 0; c < numbering_.dim(); ++c, ++i) attached_[dofs[i]] = 1;
+    }
 }
 
 const ElementIntegration& Discretisation::integrationOf(size_t e, ElementIntegration& scratch) const {

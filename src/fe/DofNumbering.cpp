@@ -44,6 +44,7 @@ DofNumbering::DofNumbering(const Model& model, const ExtraUnknowns& extra) : dim
     if (model.enrichment)
         for (int node = 0; node < n; ++node)
             if (slots_[node]) slots_[node] = std::max(1, model.enrichment->nodeSlots(node));
+    addTipUnknowns(model);
     first_.assign(n + 1, 0);
     for (int node = 0; node < n; ++node) {
         int count = slots_[node] * dim_;
@@ -54,6 +55,31 @@ DofNumbering::DofNumbering(const Model& model, const ExtraUnknowns& extra) : dim
     for (int s = 0; s < maxSlots_; ++s)
         for (int c = 0; c < dim_; ++c) componentNames_.push_back(displacementComponentName(s, c));
     for (const auto& e : extra_.names) componentNames_.push_back(e);
+    if (tipNodes_ == 0) return;
+    tipFirst_.assign(size_t(n), -1);
+    const int k1 = static_cast<int>(std::find(extra_.names.begin(), extra_.names.end(), "K1") - extra_.names.begin());
+    for (const auto& [node, list] : extra_.perNode)
+        for (size_t i = 0; i < list.size(); ++i)
+            if (list[i] == k1) tipFirst_[size_t(node)] = first_[node] + slots_[node] * dim_ + static_cast<int>(i);
+}
+
+void DofNumbering::addTipUnknowns(const Model& model) {
+    if (!model.enrichment) return;
+    std::vector<int> index;
+    for (int node = 0; node < int(slots_.size()); ++node) {
+        if (!slots_[size_t(node)] || !model.enrichment->tipNode(node)) continue;
+        if (index.empty())
+            for (int c = 0; c < dim_; ++c) {
+                const std::string name = fmt::format("K{}", c + 1);
+                if (std::find(extra_.names.begin(), extra_.names.end(), name) != extra_.names.end())
+                    throw InternalError("crack-tip unknown " + name + " given twice");
+                index.push_back(static_cast<int>(extra_.names.size()));
+                extra_.names.push_back(name);
+            }
+        auto& list = extra_.perNode[node];
+        list.insert(list.end(), index.begin(), index.end());
+        ++tipNodes_;
+    }
 }
 
 int DofNumbering::dofOf(int node, const std::string& component) const {
@@ -61,8 +87,9 @@ int DofNumbering::dofOf(int node, const std::string& component) const {
     if (parseDisplacementComponent(component, slot, comp)) return dof(node, slot, comp);
     auto pos = std::find(extra_.names.begin(), extra_.names.end(), component);
     if (pos == extra_.names.end()) {
-        static const char* known[] = {"LAGS_C", "LAGS_F1", "LAGS_F2", "LAG2_C", "LAG2_F1", "LAG2_F2",
-                                      "LAG3_C", "LAG3_F1", "LAG3_F2", "LAG4_C", "LAG4_F1", "LAG4_F2"};
+        static const char* known[] = {"K1",      "K2",      "K3",      "LAGS_C",  "LAGS_F1",
+                                      "LAGS_F2", "LAG2_C",  "LAG2_F1", "LAG2_F2", "LAG3_C",
+                                      "LAG3_F1", "LAG3_F2", "LAG4_C",  "LAG4_F1", "LAG4_F2"};
         for (const char* k : known)
             if (component == k) return -1;
         throw UserError("'" + component + "' is not a component of the displacement (DEPL_R)");

@@ -6,6 +6,9 @@
 //   dof(node, slot, comp) = first(node) + slot * dim + comp
 //   dof of extra unknown e of node = first(node) + slots(node) * dim + (position of e in the node's list)
 //
+// The crack-tip unknowns K1, K2[, K3] of the nodes the enrichment says (Enrichment::tipNode) are
+// extra unknowns of those nodes, after the ones given by the caller.
+//
 // Only nodes of the model's elements (volume and skin) carry unknowns.
 #include <map>
 #include <memory>
@@ -39,7 +42,12 @@ public:
     int dof(int node, int slot, int comp) const {
         return slot < slots_[node] && comp < dim_ ? first_[node] + slot * dim_ + comp : -1;
     }
-    // "DX", "H2Y", "LAGS_C" ...; -1 when the node does not carry it. UserError for a name that is no
+    // Crack-tip unknown K(comp+1) of a node, -1 when the node has none.
+    int tipDof(int node, int comp) const {
+        return tipFirst_.empty() || tipFirst_[size_t(node)] < 0 || comp >= dim_ ? -1 : tipFirst_[size_t(node)] + comp;
+    }
+    int tipNodeCount() const { return tipNodes_; }
+    // "DX", "H2Y", "LAGS_C", "K1" ...; -1 when the node does not carry it. UserError for a name that is no
     // component of DEPL_R at all.
     int dofOf(int node, const std::string& component) const;
     // Node and component name of a dof (for messages).
@@ -53,10 +61,14 @@ public:
     std::vector<double> fromNodalField(const NodalField& field) const;
 
 private:
+    void addTipUnknowns(const Model& model);
+
     int dim_ = 2, maxSlots_ = 1;
     std::vector<int> first_;  // nodeCount + 1 offsets
     std::vector<int> slots_;
     ExtraUnknowns extra_;
+    std::vector<int> tipFirst_;  // first crack-tip dof per node, -1 (empty: no tip node)
+    int tipNodes_ = 0;
     std::vector<std::string> componentNames_;
 };
 

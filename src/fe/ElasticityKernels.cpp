@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "core/Error.hpp"
@@ -42,7 +43,7 @@ void localDofs(const Mesh& mesh, const DofNumbering& numbering, const ElementInt
     const auto nodes = mesh.cellNodes(ei.cell);
     const int dim = numbering.dim();
     dofs.clear();
-    for (int a = 0; a < ei.nodeCount; ++a)
+    for (int a = 0; a < ei.nodeCount; ++a) {
         for (int k = 0; k < ei.slots[a]; ++k)
             for (int c = 0; c < dim; ++c) {
                 const int d = numbering.dof(nodes[a], k, c);
@@ -53,12 +54,61 @@ void localDofs(const Mesh& mesh, const DofNumbering& numbering, const ElementInt
                                     mesh.cellNames[ei.cell], k, mesh.nodeNames[nodes[a]]));
                 dofs.push_back(d);
             }
+        if (ei.tipAt(a))
+            for (int c = 0; c < dim; ++c) {
+                const int d = numbering.tipDof(nodes[a], c);
+                if (d < 0)
+                    throw InternalError(
+                        fmt::format("element on cell {} uses the crack-tip unknowns of node {}, which "
+                                    "the enrichment does not give to the node",
+                                    mesh.cellNames[ei.cell], mesh.nodeNames[nodes[a]]));
+                dofs.push_back(d);
+            }
+    }
+}
+
+void dofGradients(const ElementIntegration& ei, const PointGeometry& geo, size_t p, int dim, std::vector<double>& B) {
+    const int n = ei.nodeCount;
+    size_t i = 0;
+    auto next = [&]() -> double* {
+        if (B.size() < (i + 1) * 9) B.resize((i + 1) * 9);
+        double* b = &B[i++ * 9];
+        std::fill(b, b + 9, 0.0);
+        return b;
+    };
+    for (int a = 0; a < n; ++a) {
+        const double* ga = &geo.gradN[(p * n + a) * 3];
+        for (int k = 0; k < ei.slots[a]; ++k) {
+            const double pa = ei.multiplier(int(p), a, k);
+            for (int c = 0; c < dim; ++c) {
+                double* b = next();
+                for (int j = 0; j < dim; ++j) b[c * 3 + j] = pa * ga[j];
+            }
+        }
+        if (!ei.tipAt(a)) continue;
+        const double Na = geo.N[p * n + a];
+        const double* phi = ei.tipValue(p);
+        const double* dphi = ei.tipGradient(p);
+        for (int m = 0; m < dim; ++m) {  // mode m: u_c = N_a Phi[c][m]
+            double* b = next();
+            for (int c = 0; c < dim; ++c)
+                for (int j = 0; j < dim; ++j) b[c * 3 + j] = ga[j] * phi[c * 3 + m] + Na * dphi[(c * 3 + m) * 3 + j];
+        }
+    }
 }
 
 void displacementGradient(const ElementIntegration& ei, const PointGeometry& geo, const std::vector<int>& dofs,
                           const std::vector<double>& u, size_t p, int dim, double G[3][3]) {
     for (int c = 0; c < 3; ++c)
         for (int j = 0; j < 3; ++j) G[c][j] = 0.0;
+    if (ei.hasTip()) {
+        thread_local std::vector<double> B;
+        dofGradients(ei, geo, p, dim, B);
+        for (size_t i = 0; i < dofs.size(); ++i)
+            for (int c = 0; c < dim; ++c)
+                for (int j = 0; j < dim; ++j) G[c][j] += u[dofs[i]] * B[i * 9 + c * 3 + j];
+        return;
+    }
     const int n = ei.nodeCount;
     int i = 0;
     for (int a = 0; a < n; ++a) {
@@ -94,8 +144,37 @@ void storeStrain(const double G[3][3], const IsotropicLaw& law, int dim, double*
     }
 }
 
+namespace {
+
+// Stiffness of an element with crack-tip slots: every local dof's displacement gradient at each
+// point (dofGradients), then w * eps_i : C : eps_j.
+void tipStiffness(const ElementIntegration& ei, const PointGeometry& geo, const IsotropicLaw& law, int dim, int nd,
+                  std::vector<double>& Ke) {
+    Ke.assign(size_t(nd) * nd, 0.0);
+    thread_local std::vector<double> B;
+    for (size_t p = 0; p < ei.refPoints.size(); ++p) {
+        dofGradients(ei, geo, p, dim, B);
+        const double w = geo.weight[p];
+        for (int i = 0; i < nd; ++i) {
+            double S[3][3], G[3][3];
+            for (int c = 0; c < 3; ++c)
+                for (int j = 0; j < 3; ++j) G[c][j] = B[size_t(i) * 9 + c * 3 + j];
+            stressOf(G, law, dim, S);
+            for (int l = 0; l < nd; ++l) {
+                double sum = 0.0;
+                for (int c = 0; c < dim; ++c)
+                    for (int j = 0; j < dim; ++j) sum += S[c][j] * B[size_t(l) * 9 + c * 3 + j];
+                Ke[size_t(i) * nd + l] += w * sum;
+            }
+        }
+    }
+}
+
+}  // namespace
+
 void generalStiffness(const ElementIntegration& ei, const PointGeometry& geo, const IsotropicLaw& law, int dim, int nd,
                       std::vector<double>& Ke) {
+    if (ei.hasTip()) return tipStiffness(ei, geo, law, dim, nd, Ke);
     const int n = ei.nodeCount;
     std::vector<int> base(n + 1, 0);  // local index of (a, slot 0)
     for (int a = 0; a < n; ++a) base[a + 1] = base[a] + ei.slots[a] * dim;
@@ -137,6 +216,17 @@ void generalInternalForce(const ElementIntegration& ei, const PointGeometry& geo
         displacementGradient(ei, geo, dofs, u, p, dim, G);
         stressOf(G, law, dim, S);
         const double wp = geo.weight[p];
+        if (ei.hasTip()) {
+            thread_local std::vector<double> B;
+            dofGradients(ei, geo, p, dim, B);
+            for (size_t i = 0; i < dofs.size(); ++i) {
+                double sum = 0.0;
+                for (int c = 0; c < dim; ++c)
+                    for (int j = 0; j < dim; ++j) sum += S[c][j] * B[i * 9 + c * 3 + j];
+                fe[i] += wp * sum;
+            }
+            continue;
+        }
         int i = 0;
         for (int a = 0; a < n; ++a) {
             const double* ga = &geo.gradN[(p * n + a) * 3];

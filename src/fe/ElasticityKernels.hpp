@@ -53,6 +53,11 @@ struct ElementScratch {
 // Global dofs of the element's local unknowns (node-major, then slot, then component).
 void localDofs(const Mesh& mesh, const DofNumbering& numbering, const ElementIntegration& ei, std::vector<int>& dofs);
 
+// Displacement gradient of each local dof's shape function at point p of an element (psi and the
+// crack-tip matrix included): B[i * 9 + c * 3 + j] = d(u_c)/dx_j for a unit value of local dof i.
+// B grows to the element's dof count (a worker's scratch).
+void dofGradients(const ElementIntegration& ei, const PointGeometry& geo, size_t p, int dim, std::vector<double>& B);
+
 // Displacement gradient G[c][j] = du_c/dx_j at point p of an element (all slots, psi included).
 void displacementGradient(const ElementIntegration& ei, const PointGeometry& geo, const std::vector<int>& dofs,
                           const std::vector<double>& u, size_t p, int dim, double G[3][3]);

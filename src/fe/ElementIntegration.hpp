@@ -8,7 +8,18 @@
 // element has the cell's Gauss rule and only slot 0. An X-FEM element (src/xfem) lists the
 // Gauss points of its sub-cells and the psi values. Stiffness, stresses (SIEF_ELGA), loads and
 // POST_ERREUR sampling are all written once against this description.
+//
+// Crack-tip slot (components K1, K2[, K3], after the node's Heaviside slots, on the nodes flagged
+// in `tip`): a vector enrichment
+//
+//   u(x) += N_a(x) * Phi(x) * K_a,   Phi[c][m] = component c of the asymptotic field of mode m
+//
+// the same dim x dim matrix for every tip node of the element (code_aster's xcalfev: the Williams
+// fields in the local front basis minus their interpolation at the element's nodes). Phi depends
+// on the material through kappa and mu only, linearly: Phi = (kappa * A + B) / (2 mu); the
+// enrichment gives A and B with their gradients, applyTipLaw the material's Phi.
 #include <array>
+#include <cstddef>
 #include <vector>
 
 namespace ma {
@@ -29,10 +40,34 @@ struct ElementIntegration {
     int maxSlots = 1;
     std::vector<double> psi;
 
+    // Per local node: 1 when it carries the tip slot in this element; empty when none does.
+    std::vector<char> tip;
+    // Per point, kTipStride values: the 3x3 matrix [c][m] (9) then its gradient [c][m][j] (27).
+    static constexpr int kTipStride = 36;
+    std::vector<double> tipA, tipB;  // from the enrichment (material-free parts)
+    std::vector<double> tipPhi;      // (kappa * A + B) / (2 mu), set by applyTipLaw
+
+    bool hasTip() const { return !tip.empty(); }
+    bool tipAt(int a) const { return !tip.empty() && tip[std::size_t(a)] != 0; }
+    // Phi[c][m] and dPhi[c][m][j] at point p (applyTipLaw must have run).
+    const double* tipValue(std::size_t p) const { return &tipPhi[p * kTipStride]; }
+    const double* tipGradient(std::size_t p) const { return &tipPhi[p * kTipStride + 9]; }
+
     double multiplier(int p, int a, int k) const {
         if (psi.empty()) return k == 0 ? 1.0 : 0.0;
-        return psi[(size_t(p) * nodeCount + a) * maxSlots + k];
+        return psi[(std::size_t(p) * nodeCount + a) * maxSlots + k];
     }
 };
+
+// Fills ei.tipPhi for an isotropic material given by its Hooke coefficients in the element's
+// formulation (lambdaEff: lambda, or the plane-stress lambda*): kappa = (lambdaEff + 3 mu) /
+// (lambdaEff + mu), which is 3 - 4 nu (3D, D_PLAN) or (3 - nu) / (1 + nu) (C_PLAN).
+inline void applyTipLaw(ElementIntegration& ei, double lambdaEff, double mu) {
+    if (!ei.hasTip()) return;
+    const double kappa = (lambdaEff + 3.0 * mu) / (lambdaEff + mu);
+    const double scale = 1.0 / (2.0 * mu);
+    ei.tipPhi.resize(ei.tipA.size());
+    for (std::size_t i = 0; i < ei.tipA.size(); ++i) ei.tipPhi[i] = scale * (kappa * ei.tipA[i] + ei.tipB[i]);
+}
 
 }  // namespace ma

@@ -32,6 +32,8 @@ public:
     virtual ~Enrichment() = default;
     // 1 + number of Heaviside slots carried by `node` (1 for a node that is not enriched).
     virtual int nodeSlots(int node) const = 0;
+    // True when `node` carries the crack-tip unknowns K1, K2[, K3] (ElementIntegration::tip).
+    virtual bool tipNode(int /*node*/) const { return false; }
     // True when the element on `cell` is an X-FEM element (integrated on sub-cells).
     virtual bool isEnriched(int cell) const = 0;
     // Integration description of an enriched element (volume or skin cell).

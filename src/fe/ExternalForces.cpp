@@ -1,5 +1,7 @@
 #include "fe/ExternalForces.hpp"
 
+#include <fmt/format.h>
+
 #include <array>
 
 #include "core/Error.hpp"
@@ -88,6 +90,12 @@ private:
         const int dim = space_.dim();
         for (int cell : cells) {
             elementIntegration(space_.model(), cell, boundary, ei_);
+            if (ei_.hasTip())
+                throw NotImplemented(fmt::format(
+                    "a distributed load on cell {}, whose nodes carry crack-tip unknowns (K1, K2...): loads on "
+                    "crack-tip enriched cells are not implemented yet; load cells away from the crack front or "
+                    "impose displacements (DDL_IMPO)",
+                    space_.mesh().cellNames[size_t(cell)]));
             computePointGeometry(space_.mesh(), cell, dim, boundary, ei_, geo_);
             localDofs(space_.mesh(), space_.numbering(), ei_, dofs_);
             const int n = ei_.nodeCount;

@@ -1,29 +1,44 @@
 #include "fe/FieldSampling.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <type_traits>
 
 #include "core/Error.hpp"
 #include "fe/DofNumbering.hpp"
+#include "fe/ElasticityKernels.hpp"
 #include "fe/ElementLoop.hpp"
 #include "fe/Enrichment.hpp"
 
 namespace ma {
 
+void applyMaterialToTip(const Model& model, const MaterialField* material, const ModelElement& element,
+                        ElementIntegration& ei) {
+    if (!ei.hasTip()) return;
+    if (!material)
+        throw UserError(fmt::format("cell {} is crack-tip enriched: its displacement needs the material (CHAM_MATER)",
+                                    model.mesh->cellNames[size_t(element.cell)]));
+    const Material& m = material->at(element.cell);
+    const IsotropicLaw law = IsotropicLaw::from(m, element.modelisation, m.name);
+    applyTipLaw(ei, law.lambdaEff, law.mu);
+}
+
 std::vector<DisplacementSample> sampleDisplacement(const Model& model, const NodalField& depl,
-                                                   const std::vector<int>& cells) {
+                                                   const std::vector<int>& cells, const MaterialField* material) {
     std::vector<char> wanted;
     if (!cells.empty()) {
         wanted.assign(model.mesh->cellCount(), 0);
         for (int c : cells) wanted.at(c) = 1;
     }
     std::vector<DisplacementSample> out;
-    appendDisplacementSamples(model, depl, wanted, 0, model.elements.size(), out);
+    appendDisplacementSamples(model, depl, wanted, 0, model.elements.size(), out, material);
     return out;
 }
 
 void appendDisplacementSamples(const Model& model, const NodalField& depl, const std::vector<char>& wanted,
-                               size_t first, size_t last, std::vector<DisplacementSample>& out) {
+                               size_t first, size_t last, std::vector<DisplacementSample>& out,
+                               const MaterialField* material) {
     const Mesh& mesh = *model.mesh;
     const int dim = model.dim;
     // Field component of each (slot, direction), -1 when the field lacks it (counts as 0).
@@ -34,6 +49,8 @@ void appendDisplacementSamples(const Model& model, const NodalField& depl, const
         if (component[key] == -2) component[key] = depl.componentIndex(displacementComponentName(slot, c));
         return component[key];
     };
+    std::vector<int> tipComponent;  // K1, K2[, K3] in the field
+    for (int c = 0; c < dim; ++c) tipComponent.push_back(depl.componentIndex(fmt::format("K{}", c + 1)));
     GeneralElementScratch scratch;
     for (size_t e = first; e < last; ++e) {
         const auto& element = model.elements[e];
@@ -48,10 +65,20 @@ void appendDisplacementSamples(const Model& model, const NodalField& depl, const
                 if (comp >= 0 && depl.has(node, comp)) s.u[c] += factor * depl.at(node, comp);
             }
         };
+        // Adds N_a * Phi * K(node) to s.u.
+        auto addTip = [&](DisplacementSample& s, const double* phi, int node, double Na) {
+            for (int m = 0; m < dim; ++m) {
+                const int comp = tipComponent[size_t(m)];
+                if (comp < 0 || !depl.has(node, comp)) continue;
+                const double K = depl.at(node, comp);
+                for (int c = 0; c < dim; ++c) s.u[size_t(c)] += Na * phi[c * 3 + m] * K;
+            }
+        };
         visitVolumeElement(
             mesh, dim, element.cell, enriched, scratch,
             [&](ElementIntegration& ei) -> const ElementIntegration& {
                 elementIntegration(model, element.cell, false, ei);
+                applyMaterialToTip(model, material, element, ei);
                 return ei;
             },
             [&](const auto& ref, const auto& g) {  // classical: slot 0 only (psi = 1)
@@ -66,9 +93,11 @@ void appendDisplacementSamples(const Model& model, const NodalField& depl, const
                 const int n = ei.nodeCount;
                 for (size_t p = 0; p < ei.refPoints.size(); ++p) {
                     DisplacementSample s{element.cell, geo.xyz[p], geo.weight[p], {}};
-                    for (int a = 0; a < n; ++a)
+                    for (int a = 0; a < n; ++a) {
                         for (int k = 0; k < ei.slots[a]; ++k)
                             add(s, nodes[a], k, geo.N[p * n + a] * ei.multiplier(int(p), a, k));
+                        if (ei.tipAt(a)) addTip(s, ei.tipValue(p), nodes[a], geo.N[p * n + a]);
+                    }
                     out.push_back(s);
                 }
             });

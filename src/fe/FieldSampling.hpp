@@ -5,6 +5,8 @@
 #include <array>
 #include <vector>
 
+#include "fe/ElementIntegration.hpp"
+#include "fe/Material.hpp"
 #include "fe/Model.hpp"
 #include "fields/Fields.hpp"
 
@@ -18,13 +20,22 @@ struct DisplacementSample {
 };
 
 // Samples on the model's elements whose cell is in `cells` (all elements when `cells` is empty).
+// Crack-tip enriched elements need the material (their fields depend on kappa and mu): UserError
+// when `material` is null there.
 std::vector<DisplacementSample> sampleDisplacement(const Model& model, const NodalField& depl,
-                                                   const std::vector<int>& cells);
+                                                   const std::vector<int>& cells,
+                                                   const MaterialField* material = nullptr);
 
 // The same for the elements model.elements[first, last) whose cell is flagged in `wanted` (every
 // cell when `wanted` is empty), appended to `out`: POST_ERREUR goes through a large model in
 // batches of elements instead of holding every sample at once.
 void appendDisplacementSamples(const Model& model, const NodalField& depl, const std::vector<char>& wanted,
-                               size_t first, size_t last, std::vector<DisplacementSample>& out);
+                               size_t first, size_t last, std::vector<DisplacementSample>& out,
+                               const MaterialField* material = nullptr);
+
+// The material's law applied to a crack-tip enriched element description (ElementIntegration::
+// tipPhi); nothing for other elements. UserError naming the cell when `material` is null.
+void applyMaterialToTip(const Model& model, const MaterialField* material, const ModelElement& element,
+                        ElementIntegration& ei);
 
 }  // namespace ma

@@ -121,7 +121,7 @@ double elasticEnergyDensity(const double s[6], double E, double nu, bool planeSt
 
 std::shared_ptr<Table> displacementErrorTable(const Model& model, const NodalField& displacement,
                                               const std::vector<std::string>& groups,
-                                              const ReferenceFormulas& reference) {
+                                              const ReferenceFormulas& reference, const MaterialField* material) {
     checkFormulaCounts(reference, groups.size());
     const int dim = model.dim;
     std::vector<double> diff(groups.size()), ref(groups.size());
@@ -140,7 +140,7 @@ std::shared_ptr<Table> displacementErrorTable(const Model& model, const NodalFie
         auto sample = [&](size_t first, std::vector<DisplacementSample>& out) {
             out.clear();
             appendDisplacementSamples(model, displacement, wanted, first,
-                                      std::min(first + batches.size, model.elements.size()), out);
+                                      std::min(first + batches.size, model.elements.size()), out, material);
         };
         const bool overlap = workerCount() > 1;
         mpi::collectively([&] {

@@ -22,10 +22,12 @@ struct ReferenceFormulas {
     std::vector<std::vector<std::shared_ptr<const Function>>> formulas;
 };
 
-// OPTION='DEPL_RELA': L2 norms of u_ref and u_h - u_ref (DX, DY[, DZ]).
+// OPTION='DEPL_RELA': L2 norms of u_ref and u_h - u_ref (DX, DY[, DZ]). `material` (CHAM_MATER)
+// is needed on crack-tip enriched elements only.
 std::shared_ptr<Table> displacementErrorTable(const Model& model, const NodalField& displacement,
                                               const std::vector<std::string>& groups,
-                                              const ReferenceFormulas& reference);
+                                              const ReferenceFormulas& reference,
+                                              const MaterialField* material = nullptr);
 
 // OPTION='ENER_RELA': elastic energies of sigma_ref and sigma_h - sigma_ref with the compliance
 // of `material` (DEFORMATION='PETIT'); C_PLAN uses the plane-stress compliance.

@@ -157,6 +157,10 @@ bool XfemModel::lipIntegration(const Concept& crack, std::vector<LipIntegration>
     const auto it = std::find_if(cracks_.begin(), cracks_.end(), [&](const auto& c) { return c.get() == &crack; });
     if (it == cracks_.end()) return false;
     const int index = int(it - cracks_.begin());
+    if (index == tipCrack_)
+        throw NotImplemented("PRES_REP FISSURE on crack " + (*it)->name +
+                             ", whose front lies in the mesh: lip loads on crack-tip enriched cells are not "
+                             "implemented yet");
     const LipBuilder builder(*this);
     for (int cell : xfemCells_) {
         const CellCut& cut = cuts_[size_t(cellIndex_[size_t(cell)])];

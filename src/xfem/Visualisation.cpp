@@ -275,6 +275,29 @@ std::shared_ptr<NodalField> visualisationDisplacement(const XfemModel* xm, const
         const int col = k < maxSlot ? column[k * 3 + j] : -1;
         return col >= 0 && depl->has(node, col) ? depl->at(node, col) : 0.0;
     };
+    std::array<int, 3> tipColumn{-1, -1, -1};  // K1, K2[, K3]
+    for (int m = 0; m < dim; ++m) tipColumn[size_t(m)] = depl->componentIndex(fmt::format("K{}", m + 1));
+    // u += N_a Phi K_a over the tip nodes of the parent cell (docs/cracks.md).
+    auto addTip = [&](const VisualisationNode& vn, const std::array<double, 8>& Nv, std::array<double, 3>& u) {
+        if (xm->tipCrack() < 0 || tipColumn[0] < 0) return;
+        if (!input.material)
+            throw UserError("the result has no material: the crack-tip terms of its displacement need it");
+        const Material& mat = input.material->at(vn.parentCell);
+        const IsotropicLaw law = IsotropicLaw::from(mat, model.modelisation, mat.name);
+        double Phi[9];
+        const CellCut& cut = *xm->cut(vn.parentCell);
+        if (!xm->tipMatrix(vn.parentCell, vn.subcell, cut.points[size_t(vn.point)].ref, law.lambdaEff, law.mu, Phi))
+            return;
+        const auto cn = mesh.cellNodes(vn.parentCell);
+        for (size_t a = 0; a < cn.size(); ++a) {
+            if (!xm->tipNode(cn[a])) continue;
+            for (int m = 0; m < dim; ++m) {
+                const int col = tipColumn[size_t(m)];
+                const double K = col >= 0 && depl->has(cn[a], col) ? depl->at(cn[a], col) : 0.0;
+                for (int j = 0; j < dim; ++j) u[size_t(j)] += Nv[a] * Phi[j * 3 + m] * K;
+            }
+        }
+    };
     for (int v = 0; v < vmesh->nodeCount(); ++v) {
         const auto& vn = visu.nodes[v];
         std::array<double, 3> u{0, 0, 0};
@@ -293,6 +316,7 @@ std::shared_ptr<NodalField> visualisationDisplacement(const XfemModel* xm, const
                     for (int j = 0; j < dim; ++j) u[j] += N[a] * psi * value(cn[a], k, j);
                 }
             }
+            addTip(vn, N, u);
         }
         for (int j = 0; j < dim; ++j) field->set(v, j, u[j]);
         if (withContact && vn.onCrack && vn.original < 0) {

@@ -82,6 +82,10 @@ private:
         // junction cell sits in cells seeing three interfaces while only one enriches it.
         const NodeEnrichment* en = xm_.node(n);
         if (!en || xm_.activeSlots(n) < 1) return plain(n, at(mesh_.coords[n]));
+        // A crack-tip node (docs/cracks.md): its enrichments vanish at the node itself (shifted
+        // Heaviside, fields minus their nodal interpolation), so u(node) = DX; the other side's
+        // Heaviside unknowns and K1..K3 stay as the user gives them (H1X=, K1=).
+        if (xm_.tipNode(n)) return plain(n, at(mesh_.coords[n]));
         if (en->activeCracks.size() != 1) return severalInterfaces(n, *en);
         Enriched e{n, *xm_.cracks()[en->activeCracks[0]], en->slotValue[0], fmt::format("H1{}", "XYZ"[c_]), {}};
         // Prescribed nodes connected to n through the X-FEM cells around it.

@@ -92,6 +92,63 @@ XfemModel::XfemModel(const Model& model, std::vector<std::shared_ptr<const Crack
     }
     buildCells(model);
     buildNodes();
+    buildTip();
+}
+
+void XfemModel::buildTip() {
+    const Mesh& mesh = *mesh_;
+    for (size_t k = 0; k < cracks_.size(); ++k) {
+        const Crack& c = *cracks_[k];
+        if (c.nodeCountWithStatus(2) + c.nodeCountWithStatus(3) == 0) continue;
+        if (tipCrack_ >= 0)
+            throw NotImplemented(
+                fmt::format("cracks {} and {} both have a front in the mesh: one crack with crack-tip "
+                            "enrichment per model is supported",
+                            cracks_[size_t(tipCrack_)]->name, c.name));
+        if (!c.masters.empty()) throw NotImplemented("crack " + c.name + ": a crack with a front joined (JONCTION)");
+        tipCrack_ = static_cast<int>(k);
+    }
+    if (tipCrack_ < 0) return;
+    const Crack& crack = *cracks_[size_t(tipCrack_)];
+    tipNodes_.assign(size_t(mesh.nodeCount()), 0);
+    for (int n = 0; n < mesh.nodeCount(); ++n)
+        tipNodes_[size_t(n)] = nodeIndex_[size_t(n)] >= 0 && crack.nodeStatus[size_t(n)] >= 2;
+    // BASLOC at every node of the elements with a tip node (code_aster has it everywhere): the
+    // basis at a point and the subtracted interpolation use all the element's nodes.
+    std::vector<char> basisNodes(size_t(mesh.nodeCount()), 0);
+    for (const CellCut& c : cuts_) {
+        const auto cn = mesh.cellNodes(c.cell);
+        if (std::any_of(cn.begin(), cn.end(), [&](int n) { return tipNodes_[size_t(n)] != 0; }))
+            for (int n : cn) basisNodes[size_t(n)] = 1;
+    }
+    bases_ = frontBases(mesh, crack, basisNodes);
+    tipPoint_.assign(cuts_.size(), std::nullopt);
+    if (dim_ != 2) return;
+    for (const auto& f : crack.fronts) frontPoints_.push_back(f.points[0]);
+    for (size_t i = 0; i < cuts_.size(); ++i) {
+        if (cuts_[i].skin) continue;
+        for (const auto& f : crack.fronts)
+            if (!tipPoint_[i]) tipPoint_[i] = referencePointIn(mesh, cuts_[i].cell, f.points[0]);
+    }
+}
+
+void XfemModel::tipSubcellRule(const CellCut& cut, int s, std::vector<std::array<double, 3>>& points,
+                               std::vector<double>& weights) const {
+    const auto& sub = cut.subcells[size_t(s)];
+    std::array<std::array<double, 3>, 3> V;
+    for (int v = 0; v < 3; ++v) V[size_t(v)] = cut.points[size_t(sub.vertices[size_t(v)])].ref;
+    const auto nodes = mesh_->cellNodes(cut.cell);
+    const CellType type = mesh_->cellTypes[size_t(cut.cell)];
+    auto toPhysical = [&](const std::array<double, 3>& xi) {
+        std::array<double, 8> N{};
+        shapeValues(type, xi, std::span<double>(N.data(), nodes.size()));
+        Vec3 x{};
+        for (size_t a = 0; a < nodes.size(); ++a)
+            for (int j = 0; j < 3; ++j) x[size_t(j)] += N[a] * mesh_->coords[size_t(nodes[a])][size_t(j)];
+        return x;
+    };
+    tipTriangleRule(V, tipPoint_[size_t(cellIndex_[size_t(cut.cell)])], toPhysical, frontPoints_, kTipGaussPoints,
+                    kTipRefinement, points, weights);
 }
 
 void XfemModel::buildCells(const Model& model) {
@@ -216,8 +273,9 @@ void XfemModel::buildNodes() {
     for (int n = 0; n < nn; ++n) {
         if (nodeCellOffsets_[n] == nodeCellOffsets_[n + 1]) continue;
         NodeEnrichment e;
-        for (size_t k = 0; k < cracks_.size(); ++k)
-            if (cracks_[k]->nodeStatus[n]) e.activeCracks.push_back(static_cast<int>(k));
+        for (size_t k = 0; k < cracks_.size(); ++k)  // Heaviside status: 1, or 3 (Heaviside and crack tip)
+            if (cracks_[k]->nodeStatus[n] == 1 || cracks_[k]->nodeStatus[n] == 3)
+                e.activeCracks.push_back(static_cast<int>(k));
         if (!e.activeCracks.empty()) {
             for (int k : e.activeCracks) e.own.push_back(nodalDigit(k, n));
             std::vector<std::vector<signed char>> keys;
@@ -394,7 +452,12 @@ void XfemModel::integration(int cell, ElementIntegration& out) const {
         maxSlots = std::max(maxSlots, out.slots[a]);
     }
     out.maxSlots = maxSlots;
-    out.psi.assign(size_t(np) * nn * maxSlots, 0.0);
+    out.psi.reserve(size_t(np) * nn * maxSlots);
+    bool hasTip = false;
+    for (int a = 0; a < nn && !cut.skin; ++a) hasTip = hasTip || tipNode(nodes[a]);
+    // Crack-tip elements of a 2D model with the catalogue's rules: collapsed Gauss rules (the
+    // sub-cell rule of an override is kept, code_aster's FPG12 at degree 6).
+    const bool tipRule = hasTip && dim_ == 2 && subcellDegree_ == 0;
     const double refMeasure = referenceSimplexMeasure(cut.dim);
     std::vector<double> subPsi(size_t(nn) * maxSlots);
     int p = 0;
@@ -405,6 +468,15 @@ void XfemModel::integration(int cell, ElementIntegration& out) const {
             subPsi[size_t(a) * maxSlots] = 1.0;
             for (int k = 1; k < out.slots[a]; ++k) subPsi[size_t(a) * maxSlots + k] = psi(nodes[a], k, cut, s);
         }
+        if (tipRule) {
+            const size_t before = out.refPoints.size();
+            tipSubcellRule(cut, s, out.refPoints, out.refWeights);
+            for (size_t q = before; q < out.refPoints.size(); ++q, ++p) {
+                out.pointSubcell.push_back(s);
+                out.psi.insert(out.psi.end(), subPsi.begin(), subPsi.end());
+            }
+            continue;
+        }
         for (int q = 0; q < rule.size(); ++q, ++p) {
             const auto lambda = barycentric(cut.dim, rule.points[q]);
             std::array<double, 3> xi{0, 0, 0};
@@ -413,9 +485,41 @@ void XfemModel::integration(int cell, ElementIntegration& out) const {
             out.refPoints.push_back(xi);
             out.refWeights.push_back(rule.weights[q] * ratio);
             out.pointSubcell.push_back(s);
-            std::copy(subPsi.begin(), subPsi.end(), out.psi.begin() + size_t(p) * nn * maxSlots);
+            out.psi.insert(out.psi.end(), subPsi.begin(), subPsi.end());
         }
     }
+    if (hasTip) addTipFields(cut, out);
+    if (cut.skin && !tipNodes_.empty()) {  // flags only: loads on such cells are refused (fe/ExternalForces)
+        std::vector<char> flags(size_t(nn), 0);
+        for (int a = 0; a < nn; ++a) flags[size_t(a)] = tipNode(nodes[a]);
+        if (std::count(flags.begin(), flags.end(), 1) > 0) out.tip = std::move(flags);
+    }
+}
+
+bool XfemModel::tipMatrix(int cell, int subcell, const std::array<double, 3>& ref, double lambdaEff, double mu,
+                          double Phi[9]) const {
+    const CellCut* c = cut(cell);
+    if (!c || c->skin || tipNodes_.empty()) return false;
+    ElementIntegration one;
+    one.cell = cell;
+    one.refPoints = {ref};
+    one.pointSubcell = {subcell};
+    addTipFields(*c, one);
+    if (!one.hasTip() || std::count(one.tip.begin(), one.tip.end(), 1) == 0) return false;
+    applyTipLaw(one, lambdaEff, mu);
+    std::copy(one.tipPhi.begin(), one.tipPhi.begin() + 9, Phi);
+    return true;
+}
+
+void XfemModel::addTipFields(const CellCut& cut, ElementIntegration& out) const {
+    const auto at = std::find(cut.cracks.begin(), cut.cracks.end(), tipCrack_);
+    std::vector<signed char> side(out.refPoints.size(), 1);
+    if (at != cut.cracks.end())
+        for (size_t p = 0; p < side.size(); ++p) {
+            const signed char h = cut.subcells[size_t(out.pointSubcell[p])].heaviside[size_t(at - cut.cracks.begin())];
+            side[p] = h < 0 ? -1 : 1;
+        }
+    tipElementFields(*mesh_, cut.cell, cut.dim, bases_, cracks_[size_t(tipCrack_)]->nodeStatus, tipNodes_, side, out);
 }
 
 }  // namespace ma::xfem

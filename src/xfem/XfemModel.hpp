@@ -12,8 +12,10 @@
 // Heaviside: +2 on the + side for a node on the - side, -2 on the - side for a node on the +
 // side). The displacement u = sum_a N_a (U_a0 + sum_k psi_ak U_ak) then holds one independent
 // copy per domain: four rigid blocks around a double junction are represented exactly.
+#include <algorithm>
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,6 +25,7 @@
 #include "xfem/CellCut.hpp"
 #include "xfem/Crack.hpp"
 #include "xfem/SubcellQuadrature.hpp"
+#include "xfem/TipEnrichment.hpp"
 
 namespace ma::xfem {
 
@@ -51,6 +54,7 @@ public:
 
     // Enrichment interface (src/fe).
     int nodeSlots(int node) const override;
+    bool tipNode(int node) const override { return !tipNodes_.empty() && tipNodes_[size_t(node)]; }
     bool isEnriched(int cell) const override;
     void integration(int cell, ElementIntegration& out) const override;
     std::vector<std::vector<int>> subcellParentNodes(int cell) const override;
@@ -106,8 +110,26 @@ public:
     int droppedSlots() const { return droppedSlots_; }
     // X-FEM cells (volume and skin) containing a node, in increasing cell number.
     std::vector<int> cellsOfNode(int node) const;
+    // The crack with a front in the mesh (crack-tip enrichment), or -1; its tip-enriched nodes.
+    int tipCrack() const { return tipCrack_; }
+    int tipNodeCount() const { return static_cast<int>(std::count(tipNodes_.begin(), tipNodes_.end(), 1)); }
+    // The crack-tip matrix Phi[c * 3 + m] at reference point `ref` of sub-cell `subcell` of an X-FEM
+    // cell, for Hooke coefficients (lambdaEff, mu); false (Phi untouched) when no node of the cell
+    // carries the tip unknowns (POST_CHAM_XFEM's displacement at new nodes).
+    bool tipMatrix(int cell, int subcell, const std::array<double, 3>& ref, double lambdaEff, double mu,
+                   double Phi[9]) const;
+    // Gauss-Legendre points per direction of the collapsed rules of crack-tip elements (2D).
+    static constexpr int kTipGaussPoints = 12;
+    // Levels of splitting of the sub-triangles near the front point (TipEnrichment's tipTriangleRule).
+    static constexpr int kTipRefinement = 4;
 
 private:
+    void buildTip();
+    void addTipFields(const CellCut& cut, ElementIntegration& out) const;
+    // Points and weights of a crack-tip element's sub-cell s (2D, catalogue rules): collapsed
+    // Gauss rules, fanned from the front point when the sub-cell contains it.
+    void tipSubcellRule(const CellCut& cut, int s, std::vector<std::array<double, 3>>& points,
+                        std::vector<double>& weights) const;
     void buildCells(const Model& model);
     void buildNodes();
     void supportDomains(int node, const std::vector<int>& active, std::vector<std::vector<signed char>>& keys,
@@ -130,6 +152,11 @@ private:
     std::vector<int> skinVolume_;                   // per cuts_ entry: adjacent volume cell (skin only)
     double smallestFraction_ = 1.0;
     int droppedSlots_ = 0;
+    int tipCrack_ = -1;
+    std::vector<char> tipNodes_;                                  // per mesh node
+    std::vector<FrontBasis> bases_;                               // per mesh node (tip nodes)
+    std::vector<std::optional<std::array<double, 3>>> tipPoint_;  // per cuts_ entry: front point (reference)
+    std::vector<Vec3> frontPoints_;                               // 2D front points (physical)
 };
 
 }  // namespace ma::xfem

@@ -9,7 +9,7 @@ namespace {
 Keyword value(const std::string& name, bool functions) { return functions ? CO(name, kAnyFunction) : R(name); }
 
 const std::vector<std::string> kDofs{"DX",  "DY",  "DZ",  "H1X", "H1Y", "H1Z", "H2X", "H2Y",
-                                     "H2Z", "H3X", "H3Y", "H3Z", "H4X", "H4Y", "H4Z"};
+                                     "H2Z", "H3X", "H3Y", "H3Z", "H4X", "H4Y", "H4Z", "K1",  "K2",  "K3"};
 
 std::vector<Keyword> cellSelection() {
     return {TXM("TOUT").into({"OUI"}), TXM("GROUP_MA").many(), TXM("MAILLE").many()};
@@ -94,8 +94,9 @@ std::vector<Keyword> loadKeywords(bool functions) {
                                       TXM("GROUP_NO").many(), TXM("NOEUD").many()},
                                      unsupported({"DRX", "DRY", "DRZ", "GRX", "PRES", "PHI", "TEMP", "LIAISON"},
                                                  "only translations DX, DY, DZ and Heaviside dofs H1X..H4Z"),
-                                     unsupported({"E1X", "E1Y", "E1Z", "K1", "K2", "K3"},
-                                                 "crack-tip enrichment is not modelled"),
+                                     unsupported({"E1X", "E1Y", "E1Z"},
+                                                 "the scalar crack-tip enrichment of code_aster 11 is not modelled "
+                                                 "(its vector form K1, K2, K3 is)"),
                                      unsupported({"LAGS_C", "LAGS_F1", "LAGS_F2"}, "contact unknowns cannot be imposed")});
     for (const auto& d : kDofs) ddl.push_back(value(d, functions));
     return join({

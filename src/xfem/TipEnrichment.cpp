@@ -1,0 +1,316 @@
+#include "xfem/TipEnrichment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numbers>
+#include <span>
+
+#include "core/Error.hpp"
+#include "mesh/ElementGeometry.hpp"
+#include "mesh/ShapeFunctions.hpp"
+
+namespace ma::xfem {
+
+namespace {
+
+Vec3 unit(const Vec3& v) {
+    const double n = norm(v);
+    return n > 0 ? Vec3{v[0] / n, v[1] / n, v[2] / n} : Vec3{0, 0, 0};
+}
+
+// Nearest point of the segment [a, b] to x.
+Vec3 nearestOnSegment(const Vec3& a, const Vec3& b, const Vec3& x) {
+    const Vec3 ab = difference(b, a);
+    const double l2 = dot(ab, ab);
+    const double t = l2 > 0 ? std::clamp(dot(difference(x, a), ab) / l2, 0.0, 1.0) : 0.0;
+    return {a[0] + t * ab[0], a[1] + t * ab[1], a[2] + t * ab[2]};
+}
+
+Vec3 nearestOnFronts(const Crack& crack, const Vec3& x) {
+    Vec3 best{};
+    double bestDistance = std::numeric_limits<double>::infinity();
+    auto consider = [&](const Vec3& p) {
+        if (const double d = distance(p, x); d < bestDistance) bestDistance = d, best = p;
+    };
+    for (const auto& f : crack.fronts) {
+        if (f.points.size() == 1) consider(f.points[0]);
+        for (size_t i = 0; i + 1 < f.points.size(); ++i) consider(nearestOnSegment(f.points[i], f.points[i + 1], x));
+    }
+    return best;
+}
+
+// sqrt(r / 2 pi) h(theta) and its derivatives along x1, x2 for h and h' given.
+void polar(double r, double theta, double h, double dh, double& value, double d[2]) {
+    const double s = std::sqrt(r / (2.0 * std::numbers::pi));
+    value = s * h;
+    const double dr = value / (2.0 * r), dt = s * dh;
+    d[0] = dr * std::cos(theta) - dt * std::sin(theta) / r;
+    d[1] = dr * std::sin(theta) + dt * std::cos(theta) / r;
+}
+
+}  // namespace
+
+std::vector<FrontBasis> frontBases(const Mesh& mesh, const Crack& crack, const std::vector<char>& nodes) {
+    std::vector<FrontBasis> out(size_t(mesh.nodeCount()));
+    const auto gn = nodalLevelSetGradient(mesh, crack.lsn);
+    const auto gt = nodalLevelSetGradient(mesh, crack.lst);
+    for (int n = 0; n < mesh.nodeCount(); ++n) {
+        if (!nodes[size_t(n)]) continue;
+        FrontBasis& b = out[size_t(n)];
+        b.origin = nearestOnFronts(crack, mesh.coords[size_t(n)]);
+        b.e2 = unit(gn[size_t(n)]);
+        const Vec3& t = gt[size_t(n)];
+        const double c = dot(t, b.e2);
+        b.e1 = unit({t[0] - c * b.e2[0], t[1] - c * b.e2[1], t[2] - c * b.e2[2]});
+        if (norm(b.e1) == 0.0 || norm(b.e2) == 0.0)
+            throw UserError("crack " + crack.name + ": the level sets have no gradient at node " +
+                            mesh.nodeNames[size_t(n)] + ", so the local front basis (BASLOC) is undefined there");
+    }
+    return out;
+}
+
+AsymptoticFields asymptoticFields(double r, double theta, int dim) {
+    AsymptoticFields f;
+    const double c2 = std::cos(theta / 2), s2 = std::sin(theta / 2), c = std::cos(theta), s = std::sin(theta);
+    // h and h' of the kappa part (a) and the rest (b), per mode m and local component k.
+    struct Term {
+        int m, k;
+        double a, da, b, db;
+    };
+    const Term terms[] = {
+        {0, 0, c2, -0.5 * s2, -c * c2, s * c2 + 0.5 * c * s2},
+        {0, 1, s2, 0.5 * c2, -c * s2, s * s2 - 0.5 * c * c2},
+        {1, 0, s2, 0.5 * c2, (2 + c) * s2, -s * s2 + 0.5 * (2 + c) * c2},
+        {1, 1, -c2, 0.5 * s2, (2 - c) * c2, s * c2 - 0.5 * (2 - c) * s2},
+        {2, 2, 0.0, 0.0, 4 * s2, 2 * c2},
+    };
+    for (const Term& t : terms) {
+        if (t.m == 2 && dim < 3) continue;
+        polar(r, theta, t.a, t.da, f.A[t.m][t.k], f.dA[t.m][t.k]);
+        polar(r, theta, t.b, t.db, f.B[t.m][t.k], f.dB[t.m][t.k]);
+    }
+    return f;
+}
+
+namespace {
+
+struct LocalPoint {
+    double r = 0, theta = 0;
+};
+
+LocalPoint localPolar(const Vec3& x, const Vec3& origin, const Vec3& e1, const Vec3& e2) {
+    const Vec3 og = difference(x, origin);
+    const double x1 = dot(og, e1), x2 = dot(og, e2);
+    return {std::sqrt(x1 * x1 + x2 * x2), std::atan2(x2, x1)};
+}
+
+// Phi and dPhi of one part (A or B) at a point: P [F - sum_b N_b F_b] and its gradient.
+void composePart(int dim, const double F[3][3], const double dF[3][3][2], const std::vector<std::array<double, 9>>& Fn,
+                 std::span<const double> N, std::span<const double> gradN, const Vec3 e[3], double* out) {
+    for (int c = 0; c < 3; ++c)
+        for (int m = 0; m < 3; ++m) {
+            double v = 0.0, d[3] = {0, 0, 0};
+            for (int k = 0; k < dim; ++k) {
+                double shifted = F[m][k];
+                double gradShift[3] = {0, 0, 0};
+                for (size_t b = 0; b < Fn.size(); ++b) {
+                    shifted -= N[b] * Fn[b][size_t(m * 3 + k)];
+                    for (int j = 0; j < 3; ++j) gradShift[j] += Fn[b][size_t(m * 3 + k)] * gradN[b * 3 + size_t(j)];
+                }
+                v += e[k][size_t(c)] * shifted;
+                for (int j = 0; j < 3; ++j)
+                    d[j] += e[k][size_t(c)] *
+                            (dF[m][k][0] * e[0][size_t(j)] + dF[m][k][1] * e[1][size_t(j)] - gradShift[j]);
+            }
+            out[c * 3 + m] = v;
+            for (int j = 0; j < 3; ++j) out[9 + (c * 3 + m) * 3 + j] = d[j];
+        }
+}
+
+}  // namespace
+
+void tipElementFields(const Mesh& mesh, int cell, int dim, const std::vector<FrontBasis>& basis,
+                      const std::vector<unsigned char>& status, const std::vector<char>& tipNodes,
+                      const std::vector<signed char>& side, ElementIntegration& ei) {
+    const CellType type = mesh.cellTypes[size_t(cell)];
+    const auto nodes = mesh.cellNodes(cell);
+    const size_t n = nodes.size();
+    const size_t np = ei.refPoints.size();
+    ei.tip.assign(n, 0);
+    for (size_t a = 0; a < n; ++a) ei.tip[a] = tipNodes[size_t(nodes[a])];
+    ei.tipA.assign(np * ElementIntegration::kTipStride, 0.0);
+    ei.tipB.assign(np * ElementIntegration::kTipStride, 0.0);
+    std::vector<double> N(n), grad(n * 3);
+    std::array<double, 24> dN{};
+    std::vector<std::array<double, 9>> FnA(n), FnB(n);
+    auto X = [&](int a) -> const Vec3& { return mesh.coords[size_t(nodes[size_t(a)])]; };
+    for (size_t p = 0; p < np; ++p) {
+        shapeValues(type, ei.refPoints[p], N);
+        shapeDerivatives(type, ei.refPoints[p], dN);
+        double J[3][3] = {}, inv[3][3] = {};
+        jacobian(
+            dim, dim, int(n), X, [&](int a, int j) { return dN[size_t(3 * a + j)]; }, J);
+        invertJacobian(dim, J, inv);
+        std::fill(grad.begin(), grad.end(), 0.0);
+        for (size_t a = 0; a < n; ++a)
+            physicalGradient(
+                dim, inv, [&](int j) { return dN[3 * a + size_t(j)]; }, &grad[3 * a]);
+        Vec3 x{}, origin{}, e1{}, e2{};
+        for (size_t a = 0; a < n; ++a) {
+            const FrontBasis& b = basis[size_t(nodes[a])];
+            for (int j = 0; j < 3; ++j) {
+                x[size_t(j)] += N[a] * X(int(a))[size_t(j)];
+                origin[size_t(j)] += N[a] * b.origin[size_t(j)];
+                e1[size_t(j)] += N[a] * b.e1[size_t(j)];
+                e2[size_t(j)] += N[a] * b.e2[size_t(j)];
+            }
+        }
+        const Vec3 e[3] = {unit(e1), unit(e2), unit(cross(unit(e1), unit(e2)))};
+        LocalPoint at = localPolar(x, origin, e[0], e[1]);
+        if (at.r < 1e-12) continue;  // code_aster's xcoocy: no enrichment at the front itself
+        at.theta = side[p] * std::abs(at.theta);
+        const double sign = at.theta < 0 ? -1.0 : 1.0;
+        for (size_t b = 0; b < n; ++b) {  // nodal fields, in each node's own basis
+            const FrontBasis& fb = basis[size_t(nodes[b])];
+            LocalPoint nb = localPolar(X(int(b)), fb.origin, fb.e1, fb.e2);
+            const int st = status[size_t(nodes[b])];
+            if (st == 1 || st == 3) nb.theta = sign * std::abs(nb.theta);  // the point's side of the crack
+            const AsymptoticFields fn = asymptoticFields(nb.r, nb.theta, dim);
+            for (int m = 0; m < 3; ++m)
+                for (int k = 0; k < 3; ++k) {
+                    FnA[b][size_t(m * 3 + k)] = nb.r > 0 ? fn.A[m][k] : 0.0;
+                    FnB[b][size_t(m * 3 + k)] = nb.r > 0 ? fn.B[m][k] : 0.0;
+                }
+        }
+        const AsymptoticFields f = asymptoticFields(at.r, at.theta, dim);
+        composePart(dim, f.A, f.dA, FnA, N, grad, e, &ei.tipA[p * ElementIntegration::kTipStride]);
+        composePart(dim, f.B, f.dB, FnB, N, grad, e, &ei.tipB[p * ElementIntegration::kTipStride]);
+    }
+}
+
+void gaussLegendre01(int n, std::vector<double>& x, std::vector<double>& w) {
+    x.assign(size_t(n), 0.0);
+    w.assign(size_t(n), 0.0);
+    for (int i = 0; i < n; ++i) {
+        double z = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5)), dp = 1.0;
+        for (int it = 0; it < 100; ++it) {
+            double p0 = 1.0, p1 = z;
+            for (int k = 2; k <= n; ++k) {
+                const double p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
+                p0 = p1, p1 = p2;
+            }
+            if (n == 1) p1 = z, p0 = 1.0;
+            dp = n * (z * p1 - p0) / (z * z - 1.0);
+            const double dz = p1 / dp;
+            z -= dz;
+            if (std::abs(dz) < 1e-16) break;
+        }
+        x[size_t(i)] = 0.5 * (1.0 - z);
+        w[size_t(i)] = 1.0 / ((1.0 - z * z) * dp * dp);
+    }
+}
+
+void collapsedTriangleRule(const std::array<double, 3>& P0, const std::array<double, 3>& P1,
+                           const std::array<double, 3>& P2, int n, bool singular,
+                           std::vector<std::array<double, 3>>& points, std::vector<double>& weights) {
+    std::vector<double> g, gw;
+    gaussLegendre01(n, g, gw);
+    Vec3 u{}, v{};
+    for (int j = 0; j < 3; ++j)
+        u[size_t(j)] = P1[size_t(j)] - P0[size_t(j)], v[size_t(j)] = P2[size_t(j)] - P0[size_t(j)];
+    const double det = std::abs(u[0] * v[1] - u[1] * v[0]);
+    for (int i = 0; i < n; ++i)
+        for (int k = 0; k < n; ++k) {
+            const double s = g[size_t(i)], t = g[size_t(k)];
+            const double rho = singular ? s * s : s;
+            const double jac = singular ? 2.0 * s * rho : rho;  // d(rho) = 2 s ds; area element rho
+            std::array<double, 3> x{};
+            for (int j = 0; j < 3; ++j)
+                x[size_t(j)] = P0[size_t(j)] + rho * ((1 - t) * u[size_t(j)] + t * v[size_t(j)]);
+            points.push_back(x);
+            weights.push_back(gw[size_t(i)] * gw[size_t(k)] * jac * det);
+        }
+}
+
+namespace {
+
+double area2d(const std::array<double, 3>& a, const std::array<double, 3>& b, const std::array<double, 3>& c) {
+    return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+}
+
+// Splits V towards the nearest front point while it is closer than the piece's size.
+void refinedRule(const std::array<std::array<double, 3>, 3>& V,
+                 const std::function<Vec3(const std::array<double, 3>&)>& toPhysical, const std::vector<Vec3>& tips,
+                 int n, int levels, std::vector<std::array<double, 3>>& points, std::vector<double>& weights) {
+    const Vec3 P[3] = {toPhysical(V[0]), toPhysical(V[1]), toPhysical(V[2])};
+    const double diameter = std::max({distance(P[0], P[1]), distance(P[1], P[2]), distance(P[2], P[0])});
+    double near = std::numeric_limits<double>::infinity();
+    for (const Vec3& t : tips)
+        for (int e = 0; e < 3; ++e) near = std::min(near, distance(t, nearestOnSegment(P[e], P[(e + 1) % 3], t)));
+    if (levels == 0 || near >= diameter) return collapsedTriangleRule(V[0], V[1], V[2], n, false, points, weights);
+    std::array<std::array<double, 3>, 3> M;
+    for (int e = 0; e < 3; ++e)
+        for (int j = 0; j < 3; ++j)
+            M[size_t(e)][size_t(j)] = 0.5 * (V[size_t(e)][size_t(j)] + V[size_t((e + 1) % 3)][size_t(j)]);
+    for (const auto& piece : {std::array{V[0], M[0], M[2]}, std::array{M[0], V[1], M[1]}, std::array{M[2], M[1], V[2]},
+                              std::array{M[0], M[1], M[2]}})
+        refinedRule(piece, toPhysical, tips, n, levels - 1, points, weights);
+}
+
+}  // namespace
+
+void tipTriangleRule(const std::array<std::array<double, 3>, 3>& V, const std::optional<std::array<double, 3>>& tipRef,
+                     const std::function<Vec3(const std::array<double, 3>&)>& toPhysical, const std::vector<Vec3>& tips,
+                     int n, int levels, std::vector<std::array<double, 3>>& points, std::vector<double>& weights) {
+    const double signedWhole = area2d(V[0], V[1], V[2]), whole = std::abs(signedWhole);
+    // The cut computes its points to round-off of the parent only (a point of the front on a cut
+    // edge may be 1e-10 of the cell off), so "contains" has a slack: a front point just outside is
+    // still the fan's apex, the fan piece on the far side then has a negative weight.
+    bool inside = tipRef.has_value();
+    for (int v = 0; v < 3 && inside; ++v)
+        inside = area2d(*tipRef, V[size_t(v)], V[size_t((v + 1) % 3)]) * signedWhole >= -1e-8 * whole * whole;
+    if (!inside) return refinedRule(V, toPhysical, tips, n, levels, points, weights);
+    for (int v = 0; v < 3; ++v) {  // fan from the front point: it is a vertex of every piece
+        const auto& a = V[size_t(v)];
+        const auto& b = V[size_t((v + 1) % 3)];
+        const double piece = area2d(*tipRef, a, b);
+        if (std::abs(piece) <= 1e-14 * whole) continue;
+        const size_t first = weights.size();
+        collapsedTriangleRule(*tipRef, a, b, 4 * n, true, points, weights);
+        if (piece * signedWhole < 0)
+            for (size_t q = first; q < weights.size(); ++q) weights[q] = -weights[q];
+    }
+}
+
+std::optional<std::array<double, 3>> referencePointIn(const Mesh& mesh, int cell, const Vec3& x) {
+    const CellType type = mesh.cellTypes[size_t(cell)];
+    const auto nodes = mesh.cellNodes(cell);
+    const bool quad = type == CellType::QUAD4;
+    std::array<double, 3> xi = quad ? std::array<double, 3>{0, 0, 0} : std::array<double, 3>{1.0 / 3, 1.0 / 3, 0};
+    std::vector<double> N(nodes.size());
+    std::array<double, 24> dN{};
+    for (int it = 0; it < 50; ++it) {
+        shapeValues(type, xi, N);
+        shapeDerivatives(type, xi, dN);
+        double r[2] = {-x[0], -x[1]}, J[2][2] = {{0, 0}, {0, 0}};
+        for (size_t a = 0; a < nodes.size(); ++a)
+            for (int i = 0; i < 2; ++i) {
+                r[i] += N[a] * mesh.coords[size_t(nodes[a])][size_t(i)];
+                for (int j = 0; j < 2; ++j) J[i][j] += mesh.coords[size_t(nodes[a])][size_t(i)] * dN[3 * a + size_t(j)];
+            }
+        const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+        if (det == 0.0) return std::nullopt;
+        const double d0 = (J[1][1] * r[0] - J[0][1] * r[1]) / det, d1 = (-J[1][0] * r[0] + J[0][0] * r[1]) / det;
+        xi[0] -= d0, xi[1] -= d1;
+        if (std::abs(d0) + std::abs(d1) < 1e-15) break;
+    }
+    const double tol = 1e-10;
+    const bool inside = quad ? std::abs(xi[0]) <= 1 + tol && std::abs(xi[1]) <= 1 + tol
+                             : xi[0] >= -tol && xi[1] >= -tol && xi[0] + xi[1] <= 1 + tol;
+    if (!inside) return std::nullopt;
+    return xi;
+}
+
+}  // namespace ma::xfem
