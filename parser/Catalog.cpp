@@ -38,14 +38,25 @@ void Catalog::add(cata::Command c) {
 const std::vector<std::string>& unsupportedCommands() {
     // code_aster commands that a user of this class of studies may try; miniaster has none of them.
     static const std::vector<std::string> names{
-        "POURSUITE",      "INCLUDE",       "CALC_CHAM_ELEM",       "TEST_FONCTION",    "DYNA_NON_LINE",
-        "DYNA_LINE",      "MECA_NON_LINE", "THER_LINEAIRE",        "THER_NON_LINE",    "CALC_G",
-        "CALC_G_XFEM",    "PROPA_FISS",    "DEFI_FISS_XFEM_PROPA", "CREA_MAILLAGE",    "CREA_RESU",
-        "CREA_TABLE",     "PROJ_CHAMP",    "AFFE_CARA_ELEM",       "AFFE_CHAR_CINE",   "DEFI_COMPOR",
-        "DEFI_NAPPE",     "CALC_FONCTION", "IMPR_FONCTION",        "LIRE_RESU",        "EXTR_RESU",
-        "MACR_ADAP_MAIL", "RAFF_XFEM",     "POST_K1_K2_K3",        "CALC_MATR_ELEM",   "NUME_DDL",
-        "ASSE_MATRICE",   "RESOUDRE",      "FACTORISER",           "MODE_ITER_SIMULT", "CALC_MODES",
-        "DEFI_LIST_INST", "LIRE_TABLE",    "MACRO_ELAS_MULT",      "POST_ELEM",        "STAT_NON_LINE_XFEM",
+        "POURSUITE",      "INCLUDE",
+        "CALC_CHAM_ELEM", "TEST_FONCTION",
+        "DYNA_NON_LINE",  "DYNA_LINE",
+        "MECA_NON_LINE",  "THER_LINEAIRE",
+        "THER_NON_LINE",  "CALC_G_XFEM",
+        "PROPA_FISS",     "DEFI_FISS_XFEM_PROPA",
+        "CREA_MAILLAGE",  "CREA_RESU",
+        "CREA_TABLE",     "PROJ_CHAMP",
+        "AFFE_CARA_ELEM", "AFFE_CHAR_CINE",
+        "DEFI_COMPOR",    "DEFI_NAPPE",
+        "CALC_FONCTION",  "IMPR_FONCTION",
+        "LIRE_RESU",      "EXTR_RESU",
+        "MACR_ADAP_MAIL", "RAFF_XFEM",
+        "CALC_MATR_ELEM", "NUME_DDL",
+        "ASSE_MATRICE",   "RESOUDRE",
+        "FACTORISER",     "MODE_ITER_SIMULT",
+        "CALC_MODES",     "DEFI_LIST_INST",
+        "LIRE_TABLE",     "MACRO_ELAS_MULT",
+        "POST_ELEM",      "STAT_NON_LINE_XFEM",
     };
     return names;
 }

@@ -14,6 +14,7 @@ void AFFE_CHAR_MECA_F(Catalog&);
 void AFFE_MATERIAU(Catalog&);
 void AFFE_MODELE(Catalog&);
 void CALC_CHAMP(Catalog&);
+void CALC_G(Catalog&);
 void CALC_TABLE(Catalog&);
 void COPIER(Catalog&);
 void CREA_CHAMP(Catalog&);
@@ -37,6 +38,7 @@ void MODI_MAILLAGE(Catalog&);
 void MODI_MODELE_XFEM(Catalog&);
 void POST_CHAM_XFEM(Catalog&);
 void POST_ERREUR(Catalog&);
+void POST_K1_K2_K3(Catalog&);
 void POST_MAIL_XFEM(Catalog&);
 void POST_RELEVE_T(Catalog&);
 void PRE_GIBI(Catalog&);
@@ -57,6 +59,7 @@ inline const std::vector<CommandFile>& commandFiles() {
         {"AFFE_MATERIAU", AFFE_MATERIAU},
         {"AFFE_MODELE", AFFE_MODELE},
         {"CALC_CHAMP", CALC_CHAMP},
+        {"CALC_G", CALC_G},
         {"CALC_TABLE", CALC_TABLE},
         {"COPIER", COPIER},
         {"CREA_CHAMP", CREA_CHAMP},
@@ -80,6 +83,7 @@ inline const std::vector<CommandFile>& commandFiles() {
         {"MODI_MODELE_XFEM", MODI_MODELE_XFEM},
         {"POST_CHAM_XFEM", POST_CHAM_XFEM},
         {"POST_ERREUR", POST_ERREUR},
+        {"POST_K1_K2_K3", POST_K1_K2_K3},
         {"POST_MAIL_XFEM", POST_MAIL_XFEM},
         {"POST_RELEVE_T", POST_RELEVE_T},
         {"PRE_GIBI", PRE_GIBI},

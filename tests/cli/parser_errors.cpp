@@ -23,8 +23,8 @@ TEST(ParserErrors, UndefinedVariableInCapitals) {
 }
 
 TEST(ParserErrors, CodeAsterCommandNotSupported) {
-    auto r = runComm("DEBUT()\nA = CALC_G(RESULTAT=None)\nFIN()\n");
-    expectError(r, "<F> <ERROR> CALC_G (t.comm, line 2): command CALC_G is not supported by miniaster");
+    auto r = runComm("DEBUT()\nA = PROPA_FISS(RESULTAT=None)\nFIN()\n");
+    expectError(r, "<F> <ERROR> PROPA_FISS (t.comm, line 2): command PROPA_FISS is not supported by miniaster");
 }
 
 TEST(ParserErrors, UnknownKeyword) {

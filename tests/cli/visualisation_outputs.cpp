@@ -240,7 +240,7 @@ TEST(StaticCheck, UnknownCommandNearTheEndStopsTheRunBeforeAnyWork) {
         "DEBUT()\nMA = LIRE_MAILLAGE(FORMAT='MED', BOGUS=1)\n"
         "def MY_MACRO(**kw):\n    return DEFI_GROUP(**kw)\ncmd = DEFI_GROUP\n"
         "MA = DEFI_GROUP(reuse=MA, MAILLAGE=MA, CREA_GROUP_NO=(_F(GROUP_MA='LH'), _F(GROUP_MA='LD', NOPE=2)))\n"
-        "for i in range(2):\n    CALC_G(RESULTAT=MA)\nFIN()\n";
+        "for i in range(2):\n    PROPA_FISS(RESULTAT=MA)\nFIN()\n";
     r = runCase(dir, "t", comm, "ssnv511a.mmed");
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(readText(dir + "/t.mess")
@@ -252,8 +252,9 @@ TEST(StaticCheck, UnknownCommandNearTheEndStopsTheRunBeforeAnyWork) {
                         "in CREA_GROUP_NO[2]: "),
               std::string::npos)
         << readText(dir + "/t.mess");
-    EXPECT_NE(readText(dir + "/t.mess").find("    line 8: CALC_G: command CALC_G is not supported by miniaster\n"),
-              std::string::npos);
+    EXPECT_NE(
+        readText(dir + "/t.mess").find("    line 8: PROPA_FISS: command PROPA_FISS is not supported by miniaster\n"),
+        std::string::npos);
 
     comm =
         "DEBUT()\nargs = dict(FORMAT='MED')\nMA = LIRE_MAILLAGE(**args)\n"

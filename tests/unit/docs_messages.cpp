@@ -16,6 +16,7 @@
 
 #include "contact/ContactMessages.hpp"
 #include "fe/FeMessages.hpp"
+#include "fracture/FractureMessages.hpp"
 #include "med_io/MedMessages.hpp"
 #include "mesh/MeshMessages.hpp"
 #include "parser/ParserMessages.hpp"
@@ -37,6 +38,7 @@ const std::map<std::string, std::span<const ma::MessageText>>& tables() {
         {"src/fe/FeMessages.hpp", ma::feMessages},
         {"src/xfem/XfemMessages.hpp", ma::xfemMessages},
         {"src/contact/ContactMessages.hpp", ma::contactMessages},
+        {"src/fracture/FractureMessages.hpp", ma::fractureMessages},
         {"src/post/PostMessages.hpp", ma::postMessages},
     };
     return t;

@@ -10,6 +10,7 @@
     ./miniaster study all         [--full]   the three above
     ./miniaster study check-field            checks of the manufactured field (derivatives, tractions)
     ./miniaster study astest                 regenerates astest/smooth_*.{comm,export,mmed}
+    ./miniaster study cracks                 K1, K2, G of X-FEM cracks against closed forms versus mesh size
     ./miniaster study ssnv513e               ssnv513e (the family file, unmodified) refined N = 5 ... 81 (docs/family.md)
 
 Options: --out DIR (tables and plots, default a fresh folder miniaster-study-<name>-<time> here;
@@ -1006,7 +1007,7 @@ def main():
     ap = Arguments(prog="miniaster study", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("name", choices=["smooth", "stability", "penalty", "perf", "all", "check-field", "astest",
-                                     "ssnv513e", "lame", "solvers"])
+                                     "ssnv513e", "lame", "solvers", "cracks"])
     ap.add_argument("--full", action="store_true", help="the big grid (2D up to N=1001, perf at N=1001)")
     ap.add_argument("--out", default=None,
                     help="tables and plots (default: a fresh folder miniaster-study-<name>-<UTC time> in the "
@@ -1035,6 +1036,9 @@ def main():
     if args.name == "ssnv513e":  # refinement study of the family file (docs/family.md)
         import ssnv513e_refinement
         return ssnv513e_refinement.main(["--build", args.build, "--out", args.out])
+    if args.name == "cracks":  # K and G of X-FEM cracks against closed forms (docs/cracks.md)
+        import cracks
+        return cracks.main(["--build", args.build, "--out", args.out])
     if args.name == "lame":  # the Lame ring with a circular interface in contact (docs/contact.md)
         import lame_ring
         return lame_ring.main(["--build", args.build, "--out", args.out])

@@ -1,0 +1,50 @@
+#include "commands/FractureKeywords.hpp"
+
+#include <fmt/format.h>
+
+#include "core/Error.hpp"
+#include "xfem/XfemModel.hpp"
+
+namespace ma {
+
+std::vector<const ResultStep*> fractureSteps(const Result& result, const KeywordSet& kw) {
+    std::vector<const ResultStep*> steps;
+    if (kw.has("NUME_ORDRE")) {
+        for (auto order : kw.integers("NUME_ORDRE")) steps.push_back(&result.step(int(order)));
+    } else if (kw.has("INST")) {
+        const bool relative = kw.text("CRITERE") == "RELATIF";
+        for (double inst : kw.reals("INST")) steps.push_back(&result.stepAtInst(inst, kw.real("PRECISION"), relative));
+    } else {
+        for (const auto& s : result.steps) steps.push_back(&s);
+    }
+    return steps;
+}
+
+void checkCrackResult(const Result& result, const xfem::Crack& crack, const std::string& keyword,
+                      const std::string& command, bool thetaMethod) {
+    const auto* xfemModel =
+        result.model ? dynamic_cast<const xfem::XfemModel*>(result.model->enrichment.get()) : nullptr;
+    bool inModel = false;
+    if (xfemModel)
+        for (const auto& c : xfemModel->cracks()) inModel = inModel || c.get() == &crack;
+    if (!inModel)
+        throw UserError(fmt::format("{}: crack {} is not a crack of the model of result {} (MODI_MODELE_XFEM)", keyword,
+                                    crack.name, result.name));
+    if (!crack.isCrack || crack.fronts.empty())
+        throw UserError(fmt::format("{}: {} has no front in the mesh: there is no stress intensity to compute", keyword,
+                                    crack.name));
+    if (!result.material) throw UserError(fmt::format("result {} has no material field", result.name));
+    if (result.model->dim == 3)
+        throw NotImplemented(fmt::format(
+            "{} on a 3D crack front is not implemented yet (issue 26): miniaster computes K and G at 2D crack tips",
+            command));
+    if (!thetaMethod) return;
+    for (const auto& load : result.loads)
+        if (!load.load->lipPressures.empty() || !load.load->volumeForces.empty())
+            throw NotImplemented(
+                fmt::format("{} with the load {} of result {}: pressure on the crack lips and volume forces enter the "
+                            "theta method's right-hand side, which miniaster does not compute yet",
+                            command, load.load->name, result.name));
+}
+
+}  // namespace ma

@@ -1,0 +1,20 @@
+#pragma once
+// What CALC_G and POST_K1_K2_K3 share: the orders chosen (TOUT_ORDRE, NUME_ORDRE, INST with
+// CRITERE/PRECISION) and the checks of the crack against the result.
+#include <string>
+#include <vector>
+
+#include "fe/Result.hpp"
+#include "parser/KeywordTree.hpp"
+#include "xfem/Crack.hpp"
+
+namespace ma {
+
+std::vector<const ResultStep*> fractureSteps(const Result& result, const KeywordSet& kw);
+
+// The crack must be one of the result's model's and have a front, the result be 2D; for the theta
+// method (`thetaMethod`) also without loads on the lips or volume forces (terms not computed).
+void checkCrackResult(const Result& result, const xfem::Crack& crack, const std::string& keyword,
+                      const std::string& command, bool thetaMethod);
+
+}  // namespace ma

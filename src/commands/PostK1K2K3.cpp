@@ -1,0 +1,124 @@
+// POST_K1_K2_K3 FISSURE=..., NUME_FOND, NB_NOEUD_COUPE, ABSC_CURV_MAXI: stress intensity factors at a
+// 2D X-FEM crack tip by extrapolating the lips' displacement jump (code_aster's post_k1_k2_k3_ops),
+// its table for one tip: INST NUME_ORDRE K1 ERR_K1 K2 ERR_K2 G, a row per order. Engine: src/fracture.
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "commands/FractureKeywords.hpp"
+#include "core/Error.hpp"
+#include "core/Messages.hpp"
+#include "fe/Material.hpp"
+#include "fracture/FractureMessages.hpp"
+#include "fracture/JumpExtrapolation.hpp"
+#include "fracture/LipJumps.hpp"
+#include "fracture/ThetaField.hpp"
+#include "mesh/PointLocation.hpp"
+#include "parser/CommandRegistry.hpp"
+#include "post/Table.hpp"
+
+namespace ma {
+namespace {
+
+// The normal to the crack at the tip: the interpolated GRLNNO, towards increasing LSN.
+Vec3 crackNormal(const Mesh& mesh, const xfem::Crack& crack, const Vec3& tip) {
+    const auto grad = xfem::nodalLevelSetGradient(mesh, crack.lsn);
+    const PointInCell at = locatePoint(mesh, tip);
+    std::vector<double> component(grad.size());
+    Vec3 n{};
+    for (int c = 0; c < 2; ++c) {
+        for (size_t i = 0; i < grad.size(); ++i) component[i] = grad[i][size_t(c)];
+        n[size_t(c)] = interpolateAt(mesh, at, component);
+    }
+    const double length = norm(n);
+    if (!(length > 0))
+        throw UserError(fmt::format("the gradient of LSN of crack {} vanishes at its front", crack.name));
+    return {n[0] / length, n[1] / length, 0.0};
+}
+
+// ABSC_CURV_MAXI, or code_aster's 5 times the largest tip cell size of the crack's fronts.
+double segmentLength(const KeywordSet& kw, const Mesh& mesh, const xfem::Crack& crack, const std::vector<Vec3>& grlt) {
+    if (kw.has("ABSC_CURV_MAXI")) return kw.real("ABSC_CURV_MAXI");
+    double largest = 0.0, smallest = 1e300;
+    for (size_t f = 0; f < crack.fronts.size(); ++f) {
+        const double size = fracture::tipPoint2D(mesh, crack, grlt, int(f + 1)).cellSize;
+        largest = std::max(largest, size), smallest = std::min(smallest, size);
+    }
+    if (largest > 2 * smallest) msg().alarm(RUPTURE0_17, int(crack.fronts.size()), smallest, largest);
+    msg().infof("    ABSC_CURV_MAXI not given: 5 times the largest tip cell size, {:.6e}", 5 * largest);
+    return 5 * largest;
+}
+
+const Material& materialAt(const KeywordSet& kw, const Result& result, const Mesh& mesh, const Vec3& tip) {
+    if (kw.has("MATER")) return *kw.object<Material>("MATER");
+    return result.material->at(locatePoint(mesh, tip).cell);
+}
+
+std::shared_ptr<Table> emptyTable() {
+    auto t = std::make_shared<Table>();
+    t->addColumn("INST", ColumnType::real());
+    t->addColumn("NUME_ORDRE", ColumnType::integer());
+    for (const char* c : {"K1", "ERR_K1", "K2", "ERR_K2", "G"}) t->addColumn(c, ColumnType::real());
+    return t;
+}
+
+fracture::JumpSifs sifsOf(const fracture::LipSamples& samples, const Vec3& normal, const Vec3& tangent,
+                          const fracture::JumpCoefficients& coef, const ResultStep& step,
+                          const std::string& resultName) {
+    if (samples.abscissa.size() < 3)
+        throw UserError(
+            fmt::format("NUME_ORDRE {} of {}: only {} points of the lips lie in the mesh, 3 are needed "
+                        "(code_aster's RUPTURE0_46): shorten ABSC_CURV_MAXI",
+                        step.order, resultName, samples.abscissa.size()));
+    std::array<std::vector<double>, 3> local;
+    for (const Vec3& j : samples.jump) {
+        local[0].push_back(dot(j, normal));
+        local[1].push_back(dot(j, tangent));
+        local[2].push_back(0.0);
+    }
+    return fracture::extrapolateJumps(samples.abscissa, local, coef);
+}
+
+ConceptPtr postK1K2K3(const KeywordSet& kw, CommandContext&) {
+    auto result = kw.object<Result>("RESULTAT");
+    auto crack = kw.object<xfem::Crack>("FISSURE");
+    checkCrackResult(*result, *crack, kw.pathOf("FISSURE"), "POST_K1_K2_K3", false);
+    const Mesh& mesh = *result->model->mesh;
+    const int numeFond = int(kw.integer("NUME_FOND"));
+    const auto grlt = xfem::nodalLevelSetGradient(mesh, crack->lst);
+    const fracture::TipPoint tip = fracture::tipPoint2D(mesh, *crack, grlt, numeFond);
+    const double length = segmentLength(kw, mesh, *crack, grlt);
+    // code_aster's basis: v1 the normal (increasing LSN), v2 = v1 turned by -90 degrees.
+    const Vec3 normal = crackNormal(mesh, *crack, tip.point);
+    const Vec3 tangent{normal[1], -normal[0], 0.0};
+    const Material& material = materialAt(kw, *result, mesh, tip.point);
+    const auto coef = fracture::JumpCoefficients::of(material.E, material.nu, result->model->modelisation);
+    const int points = int(kw.integer("NB_NOEUD_COUPE"));
+    auto table = emptyTable();
+    for (const ResultStep* step : fractureSteps(*result, kw)) {
+        const auto depl = step->nodal("DEPL");
+        if (!depl) throw UserError(fmt::format("result {} has no DEPL at NUME_ORDRE {}", result->name, step->order));
+        const auto samples = fracture::heavisideJumps(mesh, *depl, tip.point, tip.frame.e1, length, points);
+        const auto k = sifsOf(samples, normal, tangent, coef, *step, result->name);
+        const size_t row = table->addRow();
+        table->set(row, "INST", step->inst);
+        table->set(row, "NUME_ORDRE", static_cast<long long>(step->order));
+        table->set(row, "K1", k.K[0]);
+        table->set(row, "ERR_K1", k.err[0]);
+        table->set(row, "K2", k.K[1]);
+        table->set(row, "ERR_K2", k.err[1]);
+        table->set(row, "G", k.G);
+        msg().infof("    front {} of {}, NUME_ORDRE {}: {} points over {:.6e}: K1 = {:.6e}, K2 = {:.6e}, G = {:.6e}",
+                    numeFond, crack->name, step->order, samples.abscissa.size(), length, k.K[0], k.K[1], k.G);
+    }
+    table->title =
+        kw.has("TITRE")
+            ? kw.texts("TITRE")
+            : std::vector<std::string>{"CALCUL DES FACTEURS D'INTENSITE DES CONTRAINTES PAR LA METHODE POST_K1_K2_K3"};
+    return table;
+}
+
+MA_REGISTER_COMMAND("POST_K1_K2_K3", postK1K2K3);
+
+}  // namespace
+}  // namespace ma
