@@ -152,6 +152,17 @@ TEST(SolverOrdering, AutoWithPointsBisectsByCoordinatesAtTheNestedDissectionCoun
     EXPECT_LE(coordinates, metis);
 }
 
+// Flat cells (y spacing 1/20 of x): the planes go across the axis the part spans the most cells
+// along, not the longest extent, which would cut the 81 x 81 grid into ever thinner strips of 81
+// rows; the count stays the square grid's.
+TEST(SolverOrdering, CoordinateBisectionOfFlatCellsCountsCellsNotLengths) {
+    msg().setEcho(false);
+    std::vector<RowPoint> points;
+    const CsrMatrix A = gridMatrix(81, -1, 2, &points);
+    for (RowPoint& p : points) p[1] *= 0.05f;
+    EXPECT_LT(factoriseAndSolve(A, "AUTO", 20, points), 1.1 * 158.0 * 81 * 81 * 81);
+}
+
 // The top separator (the last ranks) avoids a column of heavy nodes at the median, taking the
 // light column beside it: a separator three times heavier would cost 27 times the root's flops.
 TEST(SolverOrdering, CoordinateBisectionCutsBesideHeavyNodes) {
