@@ -99,6 +99,9 @@ ConceptPtr postK1K2K3(const KeywordSet& kw, CommandContext&) {
         const auto depl = step->nodal("DEPL");
         if (!depl) throw UserError(fmt::format("result {} has no DEPL at NUME_ORDRE {}", result->name, step->order));
         const auto samples = fracture::heavisideJumps(mesh, *depl, tip.point, tip.frame.e1, length, points);
+        for (size_t i = 0; i < samples.abscissa.size(); ++i)
+            msg().infof("    lips' jump at abscissa {:.6e}: opening {:.6e}, sliding {:.6e}", samples.abscissa[i],
+                        dot(samples.jump[i], normal), dot(samples.jump[i], tangent));
         const auto k = sifsOf(samples, normal, tangent, coef, *step, result->name);
         const size_t row = table->addRow();
         table->set(row, "INST", step->inst);
