@@ -1,5 +1,5 @@
 #pragma once
-// The solution at the integration points of the cells where theta is not zero: what the domain
+// The solution at the integration points of the cells where theta varies (elsewhere grad theta = 0):
 // integrals of CALC_G read. The displacement gradient comes from fe's element description (every
 // slot and multiplier of an X-FEM element: Heaviside sides, crack-tip functions), in one place.
 #include <vector>
