@@ -5,19 +5,12 @@
 
 namespace ma::fracture {
 
-namespace {
-
-// Every term of the domain integrals has a factor grad theta (no lip pressure or volume force
-// term: refused by CALC_G), so a cell where theta is the same at every node adds exactly nothing:
-// the cells inside R_INF hold most of the crack-tip quadrature's points, skipped.
 bool thetaVaries(const Mesh& mesh, int cell, const std::vector<Vec3>& theta) {
     const auto nodes = mesh.cellNodes(cell);
     for (int n : nodes)
         if (theta[size_t(n)] != theta[size_t(nodes[0])]) return true;
     return false;
 }
-
-}  // namespace
 
 std::vector<DomainPoint> domainPoints(const Discretisation& space, const std::vector<double>& u,
                                       const std::vector<Vec3>& theta, const std::vector<double>& lsn,
