@@ -65,7 +65,9 @@ ConceptPtr calcG(const KeywordSet& kw, CommandContext&) {
     const auto thetaField = fracture::thetaField2D(mesh, tip.point, grlt, rInf, rSup);
     const double side = positiveLsnSide(mesh, *crack, tip);
     const bool withK = kw.text("OPTION") == "CALC_K_G";
-    Discretisation space(result->model, result->material, {});
+    // Only the cells where theta varies are read (fracture::domainPoints).
+    Discretisation space(result->model, result->material, {},
+                         [&](int cell) { return fracture::thetaVaries(mesh, cell, thetaField); });
     auto table = emptyTable(withK);
     for (const ResultStep* step : fractureSteps(*result, kw)) {
         const auto depl = step->nodal("DEPL");

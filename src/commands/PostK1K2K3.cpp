@@ -8,6 +8,7 @@
 #include "commands/FractureKeywords.hpp"
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
+#include "fe/ElasticityKernels.hpp"
 #include "fe/Material.hpp"
 #include "fracture/FractureMessages.hpp"
 #include "fracture/JumpExtrapolation.hpp"
@@ -16,6 +17,7 @@
 #include "mesh/PointLocation.hpp"
 #include "parser/CommandRegistry.hpp"
 #include "post/Table.hpp"
+#include "xfem/XfemModel.hpp"
 
 namespace ma {
 namespace {
@@ -47,6 +49,35 @@ double segmentLength(const KeywordSet& kw, const Mesh& mesh, const xfem::Crack& 
     if (largest > 2 * smallest) msg().alarm(RUPTURE0_17, int(crack.fronts.size()), smallest, largest);
     msg().infof("    ABSC_CURV_MAXI not given: 5 times the largest tip cell size, {:.6e}", 5 * largest);
     return 5 * largest;
+}
+
+// The jump of the crack-tip terms at a lip point, as code_aster's pjxfem adds it to H1:
+// sum_a N_a (Phi(+) - Phi(-)) K_a over the tip nodes of the point's cell, Phi on either side.
+fracture::TipJump tipJumpOf(const Result& result, const xfem::Crack& crack, const NodalField& depl) {
+    const auto* xm = dynamic_cast<const xfem::XfemModel*>(result.model->enrichment.get());
+    const int kColumn[3] = {depl.componentIndex("K1"), depl.componentIndex("K2"), depl.componentIndex("K3")};
+    if (!xm || xm->tipCrack() < 0 || xm->cracks()[size_t(xm->tipCrack())].get() != &crack || kColumn[0] < 0) return {};
+    const Mesh& mesh = *result.model->mesh;
+    const Modelisation modelisation = result.model->modelisation;
+    const MaterialField* material = result.material.get();
+    return [xm, &mesh, &depl, kColumn, modelisation, material](const PointInCell& at, std::span<const double> N) {
+        Vec3 jump{};
+        if (!material) throw UserError("the result has no material: the crack-tip terms of its jump need it");
+        const Material& mat = material->at(at.cell);
+        const IsotropicLaw law = IsotropicLaw::from(mat, modelisation, mat.name);
+        xfem::XfemModel::TipPoint upper, lower;
+        if (!xm->tipMatrixOnSide(at.cell, at.xi, 1, law.lambdaEff, law.mu, upper) ||
+            !xm->tipMatrixOnSide(at.cell, at.xi, -1, law.lambdaEff, law.mu, lower))
+            return jump;
+        const auto nodes = mesh.cellNodes(at.cell);
+        for (size_t a = 0; a < nodes.size(); ++a)
+            for (int m = 0; m < 3; ++m) {
+                if (kColumn[m] < 0 || !depl.has(nodes[a], kColumn[m])) continue;
+                const double K = depl.at(nodes[a], kColumn[m]);
+                for (int c = 0; c < 3; ++c) jump[size_t(c)] += N[a] * (upper.Phi[c * 3 + m] - lower.Phi[c * 3 + m]) * K;
+            }
+        return jump;
+    };
 }
 
 const Material& materialAt(const KeywordSet& kw, const Result& result, const Mesh& mesh, const Vec3& tip) {
@@ -98,7 +129,11 @@ ConceptPtr postK1K2K3(const KeywordSet& kw, CommandContext&) {
     for (const ResultStep* step : fractureSteps(*result, kw)) {
         const auto depl = step->nodal("DEPL");
         if (!depl) throw UserError(fmt::format("result {} has no DEPL at NUME_ORDRE {}", result->name, step->order));
-        const auto samples = fracture::heavisideJumps(mesh, *depl, tip.point, tip.frame.e1, length, points);
+        const auto samples = fracture::heavisideJumps(mesh, *depl, tip.point, tip.frame.e1, length, points,
+                                                      tipJumpOf(*result, *crack, *depl));
+        for (size_t i = 0; i < samples.abscissa.size(); ++i)
+            msg().infof("    lips' jump at abscissa {:.6e}: opening {:.6e}, sliding {:.6e}", samples.abscissa[i],
+                        dot(samples.jump[i], normal), dot(samples.jump[i], tangent));
         const auto k = sifsOf(samples, normal, tangent, coef, *step, result->name);
         const size_t row = table->addRow();
         table->set(row, "INST", step->inst);

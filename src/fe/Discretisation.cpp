@@ -1,5 +1,8 @@
 #include "fe/Discretisation.hpp"
 
+#include <string>
+
+#include "core/Error.hpp"
 #include "core/Mpi.hpp"
 #include "fe/ElasticityKernels.hpp"
 #include "fe/Enrichment.hpp"
@@ -9,7 +12,7 @@
 namespace ma {
 
 Discretisation::Discretisation(std::shared_ptr<const Model> model, std::shared_ptr<const MaterialField> material,
-                               const ExtraUnknowns& extra)
+                               const ExtraUnknowns& extra, const std::function<bool(int cell)>& describe)
     : model_(std::move(model)), material_(std::move(material)), numbering_(*model_, extra) {
     const Mesh& mesh = *model_->mesh;
     attached_.assign(numbering_.size(), 0);
@@ -20,10 +23,17 @@ Discretisation::Discretisation(std::shared_ptr<const Model> model, std::shared_p
     for (size_t e = 0; e < model_->elements.size(); ++e) {
         const auto& element = model_->elements[e];
         const IsotropicLaw& law = laws.of(element);
-        if (enriched && model_->enrichment->isEnriched(element.cell)) {
+        if (enriched && model_->enrichment->isEnriched(element.cell) && describe && !describe(element.cell)) {
+            enrichedIndex_[e] = kNotDescribed;
+        } else if (enriched && model_->enrichment->isEnriched(element.cell)) {
             enrichedIndex_[e] = static_cast<int>(enrichedIntegrations_.size());
             model_->enrichment->integration(element.cell, enrichedIntegrations_.emplace_back());
-            applyTipLaw(enrichedIntegrations_.back(), law.lambdaEff, law.mu);
+            ElementIntegration& ei = enrichedIntegrations_.back();
+            applyTipLaw(ei, law.lambdaEff, law.mu);
+            // The material is fixed here: only Phi is read from now on. A and B are two thirds of the
+            // crack-tip elements' storage (ssnp138a: their ~10^5 points held 60 MB more at the solve).
+            std::vector<double>().swap(ei.tipA);
+            std::vector<double>().swap(ei.tipB);
             markAttached(enrichedIntegrations_.back(), dofs);
         } else {
             for (int node : mesh.cellNodes(element.cell))
@@ -48,13 +58,23 @@ void Discretisation::markAttached(const ElementIntegration& x, std::vector<int>&
     }
 }
 
+namespace {
+
+[[noreturn]] void notDescribed(size_t e) {
+    throw InternalError("X-FEM element " + std::to_string(e) + " was not described by this Discretisation");
+}
+
+}  // namespace
+
 const ElementIntegration& Discretisation::integrationOf(size_t e, ElementIntegration& scratch) const {
+    if (!enrichedIndex_.empty() && enrichedIndex_[e] == kNotDescribed) notDescribed(e);
     if (isEnriched(e)) return enrichedIntegrations_[enrichedIndex_[e]];
     classicalIntegration(*model_->mesh, model_->elements[e].cell, false, scratch);
     return scratch;
 }
 
 size_t Discretisation::pointCount(size_t e) const {
+    if (!enrichedIndex_.empty() && enrichedIndex_[e] == kNotDescribed) notDescribed(e);
     if (isEnriched(e)) return enrichedIntegrations_[enrichedIndex_[e]].refPoints.size();
     return stiffnessRule(model_->mesh->cellTypes[model_->elements[e].cell]).points.size();
 }

@@ -3,6 +3,7 @@
 // unknowns (DofNumbering), the X-FEM description of every enriched element (computed once) and
 // which dofs some element really uses. Built once per problem; every assembly, force and field
 // loop reads it.
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -17,8 +18,11 @@ namespace ma {
 class Discretisation {
 public:
     // Checks every element's material (IsotropicLaw::from) and marks the dofs elements use.
+    // With `describe`, only the enriched cells it accepts get their X-FEM description (CALC_G reads
+    // the cells around a tip of a model whose crack-tip elements hold ~10^5 points); integrationOf
+    // and pointCount on another enriched element are an InternalError.
     Discretisation(std::shared_ptr<const Model> model, std::shared_ptr<const MaterialField> material,
-                   const ExtraUnknowns& extra);
+                   const ExtraUnknowns& extra, const std::function<bool(int cell)>& describe = {});
 
     const Model& model() const { return *model_; }
     const Mesh& mesh() const { return *model_->mesh; }
@@ -27,7 +31,7 @@ public:
     int dim() const { return numbering_.dim(); }
     size_t elementCount() const { return model_->elements.size(); }
 
-    bool isEnriched(size_t e) const { return !enrichedIndex_.empty() && enrichedIndex_[e] >= 0; }
+    bool isEnriched(size_t e) const { return !enrichedIndex_.empty() && enrichedIndex_[e] != -1; }
     // The X-FEM description of element e when it is enriched, else its classical one (in scratch).
     const ElementIntegration& integrationOf(size_t e, ElementIntegration& scratch) const;
     // Integration points of element e.
@@ -62,10 +66,12 @@ private:
     std::shared_ptr<const MaterialField> material_;
     DofNumbering numbering_;
     std::vector<ElementIntegration> enrichedIntegrations_;  // X-FEM elements only
-    std::vector<int> enrichedIndex_;  // element -> index in enrichedIntegrations_, -1 (empty: no X-FEM)
-    std::vector<char> attached_;      // per dof: used by some element
-    std::vector<int> owner_;          // element -> process (empty: not distributed)
-    std::vector<int> cellElement_;    // mesh cell -> element (when distributed)
+    // element -> index in enrichedIntegrations_, -1 (empty: no X-FEM), kNotDescribed
+    std::vector<int> enrichedIndex_;
+    static constexpr int kNotDescribed = -2;
+    std::vector<char> attached_;    // per dof: used by some element
+    std::vector<int> owner_;        // element -> process (empty: not distributed)
+    std::vector<int> cellElement_;  // mesh cell -> element (when distributed)
     int rank_ = 0, processes_ = 1;
 };
 

@@ -5,15 +5,12 @@
 
 namespace ma::fracture {
 
-namespace {
-
-bool thetaTouches(const Mesh& mesh, int cell, const std::vector<Vec3>& theta) {
-    for (int n : mesh.cellNodes(cell))
-        if (norm(theta[size_t(n)]) > 0) return true;
+bool thetaVaries(const Mesh& mesh, int cell, const std::vector<Vec3>& theta) {
+    const auto nodes = mesh.cellNodes(cell);
+    for (int n : nodes)
+        if (theta[size_t(n)] != theta[size_t(nodes[0])]) return true;
     return false;
 }
-
-}  // namespace
 
 std::vector<DomainPoint> domainPoints(const Discretisation& space, const std::vector<double>& u,
                                       const std::vector<Vec3>& theta, const std::vector<double>& lsn,
@@ -24,9 +21,15 @@ std::vector<DomainPoint> domainPoints(const Discretisation& space, const std::ve
     ElementIntegration scratch;
     PointGeometry geo;
     std::vector<int> dofs;
+    // Reserved: crack-tip elements hold ~10^5 points, and a growing vector's copies would triple
+    // the peak (ssnp138a's memory_limit).
+    size_t count = 0;
+    for (size_t e = 0; e < space.elementCount(); ++e)
+        if (thetaVaries(mesh, space.model().elements[e].cell, theta)) count += space.pointCount(e);
+    out.reserve(count);
     for (size_t e = 0; e < space.elementCount(); ++e) {
         const int cell = space.model().elements[e].cell;
-        if (!thetaTouches(mesh, cell, theta)) continue;
+        if (!thetaVaries(mesh, cell, theta)) continue;
         const Material& material = space.material().at(cell);
         const ElementIntegration& ei = space.integrationOf(e, scratch);
         computePointGeometry(mesh, cell, dim, false, ei, geo);

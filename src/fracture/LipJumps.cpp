@@ -6,7 +6,7 @@
 namespace ma::fracture {
 
 LipSamples heavisideJumps(const Mesh& mesh, const NodalField& depl, const Vec3& front, const Vec3& direction,
-                          double length, int points) {
+                          double length, int points, const TipJump& tipJump) {
     const int comps[3] = {depl.componentIndex("H1X"), depl.componentIndex("H1Y"), depl.componentIndex("H1Z")};
     LipSamples out;
     std::vector<double> N;
@@ -18,7 +18,7 @@ LipSamples heavisideJumps(const Mesh& mesh, const NodalField& depl, const Vec3& 
         const auto nodes = mesh.cellNodes(at.cell);
         N.assign(nodes.size(), 0.0);
         shapeValues(mesh.cellTypes[size_t(at.cell)], at.xi, N);
-        Vec3 jump{};
+        Vec3 jump = tipJump ? tipJump(at, N) : Vec3{};
         for (size_t a = 0; a < nodes.size(); ++a)
             for (int c = 0; c < 3; ++c)
                 if (comps[c] >= 0 && depl.has(nodes[a], comps[c]))

@@ -9,6 +9,7 @@
 
 #include "core/Error.hpp"
 #include "mesh/ElementGeometry.hpp"
+#include "mesh/PointLocation.hpp"
 #include "mesh/ShapeFunctions.hpp"
 
 namespace ma::xfem {
@@ -52,18 +53,66 @@ void polar(double r, double theta, double h, double dh, double& value, double d[
 
 }  // namespace
 
-std::vector<FrontBasis> frontBases(const Mesh& mesh, const Crack& crack, const std::vector<char>& nodes) {
+namespace {
+
+FrontBasis orthonormalBasis(const Vec3& origin, const Vec3& gn, const Vec3& gt) {
+    FrontBasis b;
+    b.origin = origin;
+    b.e2 = unit(gn);
+    const double c = dot(gt, b.e2);
+    b.e1 = unit({gt[0] - c * b.e2[0], gt[1] - c * b.e2[1], gt[2] - c * b.e2[2]});
+    return b;
+}
+
+// 2D (code_aster's xptfon / intfac then xbaslo): the basis of each front point from the nodal
+// gradients interpolated at the point, given to every node by its nearest front point. A node's own
+// averaged gradient would not do: LST = |s.(x - M)| - a of a SEGMENT crack has none on the
+// perpendicular bisector, which the front's point never lies on.
+std::vector<FrontBasis> frontBases2D(const Mesh& mesh, const Crack& crack, const std::vector<char>& nodes,
+                                     const std::vector<Vec3>& gn, const std::vector<Vec3>& gt) {
+    std::vector<FrontBasis> tips;
+    std::vector<double> component(gn.size());
+    auto interpolate = [&](const std::vector<Vec3>& g, const PointInCell& at) {
+        Vec3 v{};
+        for (int c = 0; c < 2; ++c) {
+            for (size_t n = 0; n < g.size(); ++n) component[n] = g[n][size_t(c)];
+            v[size_t(c)] = interpolateAt(mesh, at, component);
+        }
+        return v;
+    };
+    for (const auto& f : crack.fronts)
+        for (const Vec3& p : f.points) {
+            const PointInCell at = locatePoint(mesh, p);
+            if (at.cell < 0) throw InternalError("crack " + crack.name + ": a front point lies in no cell");
+            tips.push_back(orthonormalBasis(p, interpolate(gn, at), interpolate(gt, at)));
+            if (norm(tips.back().e1) == 0.0 || norm(tips.back().e2) == 0.0)
+                throw UserError("crack " + crack.name +
+                                ": the level sets have no gradient at a front point, so the local front basis "
+                                "(BASLOC) is undefined there");
+        }
     std::vector<FrontBasis> out(size_t(mesh.nodeCount()));
+    for (int n = 0; n < mesh.nodeCount(); ++n) {
+        if (!nodes[size_t(n)] || tips.empty()) continue;
+        const Vec3& x = mesh.coords[size_t(n)];
+        const FrontBasis* best = &tips[0];
+        for (const FrontBasis& t : tips)
+            if (distance(t.origin, x) < distance(best->origin, x)) best = &t;
+        out[size_t(n)] = *best;
+    }
+    return out;
+}
+
+}  // namespace
+
+std::vector<FrontBasis> frontBases(const Mesh& mesh, const Crack& crack, const std::vector<char>& nodes) {
     const auto gn = nodalLevelSetGradient(mesh, crack.lsn);
     const auto gt = nodalLevelSetGradient(mesh, crack.lst);
+    if (mesh.maxCellDimension() == 2) return frontBases2D(mesh, crack, nodes, gn, gt);
+    std::vector<FrontBasis> out(size_t(mesh.nodeCount()));
     for (int n = 0; n < mesh.nodeCount(); ++n) {
         if (!nodes[size_t(n)]) continue;
         FrontBasis& b = out[size_t(n)];
-        b.origin = nearestOnFronts(crack, mesh.coords[size_t(n)]);
-        b.e2 = unit(gn[size_t(n)]);
-        const Vec3& t = gt[size_t(n)];
-        const double c = dot(t, b.e2);
-        b.e1 = unit({t[0] - c * b.e2[0], t[1] - c * b.e2[1], t[2] - c * b.e2[2]});
+        b = orthonormalBasis(nearestOnFronts(crack, mesh.coords[size_t(n)]), gn[size_t(n)], gt[size_t(n)]);
         if (norm(b.e1) == 0.0 || norm(b.e2) == 0.0)
             throw UserError("crack " + crack.name + ": the level sets have no gradient at node " +
                             mesh.nodeNames[size_t(n)] + ", so the local front basis (BASLOC) is undefined there");

@@ -28,9 +28,10 @@ struct FrontBasis {
     Vec3 e1{}, e2{};
 };
 
-// BASLOC of the nodes flagged in `nodes` (others left zero): the nearest point of the crack's
-// fronts (2D: front points; 3D: the front polylines), e2 the node's averaged LSN gradient
-// (GRLNNO), e1 its averaged LST gradient made orthogonal to e2 (GRLTNO).
+// BASLOC of the nodes flagged in `nodes` (others left zero). 2D (code_aster's xbaslo): the basis of
+// the nearest front point, e2 the LSN gradient and e1 the LST gradient made orthogonal to e2, both
+// the nodal averages (GRLNNO, GRLTNO) interpolated at the front point. 3D: the nearest point of
+// the front polylines, e2 and e1 from the node's own GRLNNO, GRLTNO.
 std::vector<FrontBasis> frontBases(const Mesh& mesh, const Crack& crack, const std::vector<char>& nodes);
 
 // The Williams fields split as F = (kappa A + B) / (2 mu): A[m][k], B[m][k] for mode m (0: I,

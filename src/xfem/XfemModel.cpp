@@ -518,11 +518,18 @@ bool XfemModel::tipMatrix(int cell, int subcell, const std::array<double, 3>& re
         if (!r) return false;
         out.cell = volume, out.ref = *r;
     }
+    return tipMatrixOnSide(out.cell, out.ref, h, lambdaEff, mu, out);
+}
+
+bool XfemModel::tipMatrixOnSide(int cell, const std::array<double, 3>& ref, int side, double lambdaEff, double mu,
+                                TipPoint& out) const {
+    if (tipNodes_.empty()) return false;
+    out.cell = cell, out.ref = ref;
     ElementIntegration one;
-    one.cell = out.cell;
-    one.refPoints = {out.ref};
-    tipElementFields(*mesh_, out.cell, dim_, bases_, cracks_[size_t(tipCrack_)]->nodeStatus, tipNodes_,
-                     {static_cast<signed char>(h < 0 ? -1 : 1)}, one);
+    one.cell = cell;
+    one.refPoints = {ref};
+    tipElementFields(*mesh_, cell, dim_, bases_, cracks_[size_t(tipCrack_)]->nodeStatus, tipNodes_,
+                     {static_cast<signed char>(side < 0 ? -1 : 1)}, one);
     if (std::count(one.tip.begin(), one.tip.end(), 1) == 0) return false;
     applyTipLaw(one, lambdaEff, mu);
     std::copy(one.tipPhi.begin(), one.tipPhi.begin() + 9, out.Phi);

@@ -124,6 +124,10 @@ public:
     };
     bool tipMatrix(int cell, int subcell, const std::array<double, 3>& ref, double lambdaEff, double mu,
                    TipPoint& out) const;
+    // The same at a point of a volume cell on the given side of the crack (+1, -1), whatever its
+    // sub-cell (POST_K1_K2_K3: the jump of the tip terms across the lips, code_aster's pjxfem).
+    bool tipMatrixOnSide(int cell, const std::array<double, 3>& ref, int side, double lambdaEff, double mu,
+                         TipPoint& out) const;
     // Gauss-Legendre points per direction of the collapsed rules of crack-tip elements (2D).
     static constexpr int kTipGaussPoints = 12;
     // Levels of splitting of the sub-triangles near the front point (TipEnrichment's tipTriangleRule).

@@ -213,4 +213,35 @@ TEST(FractureSampling, HeavisideJumpsInterpolateTwiceH1) {
     EXPECT_EQ(heavisideJumps(*mesh, depl, {0.1, 0.0, 0.0}, {1, 0, 0}, 2.0, 5).abscissa.size(), 3u);
 }
 
+// Near the front the Heaviside nodes end: code_aster's projection of an X-FEM DEPL (pjxfem)
+// interpolates H1 over the nodes that carry it, the others adding nothing (no renormalisation),
+// and adds the crack-tip terms' jump (given by the caller).
+TEST(FractureSampling, HeavisideJumpsSkipNodesWithoutH1AndAddTheTipJump) {
+    std::vector<char> upper;
+    auto mesh = seamMesh(8, upper);  // cells 0.25 wide, the crack y = 0 for x < 0
+    NodalField depl;
+    depl.resize(mesh, {"DX", "DY", "H1X", "H1Y"});
+    for (int a = 0; a < mesh->nodeCount(); ++a) {
+        const Vec3& x = mesh->coords[size_t(a)];
+        depl.set(a, 0, 1.0);
+        if (x[0] <= -0.5 + 1e-12) depl.set(a, 2, 1e-3 * (1 - x[0]));
+    }
+    // x = -0.3 in [-0.5, -0.25]: on the seam only the node at x = -0.5 carries H1, with N = 0.2
+    const auto inside = heavisideJumps(*mesh, depl, {-0.3, 0.0, 0.0}, {1, 0, 0}, 0.3, 2);
+    ASSERT_EQ(inside.abscissa.size(), 2u);
+    EXPECT_NEAR(inside.jump[0][0], 2 * 0.2 * 1.5e-3, 1e-15);
+    EXPECT_NEAR(inside.jump[1][0], 2e-3 * 1.6, 1e-15);
+    EXPECT_EQ(inside.jump[0][1], 0.0);
+    // x = -0.1: no node of the cell carries H1; the tip jump alone
+    const auto tip = [](const PointInCell&, std::span<const double> N) {
+        double sum = 0.0;
+        for (double v : N) sum += v;
+        return Vec3{0.0, 5e-4 * sum, 0.0};
+    };
+    const auto near = heavisideJumps(*mesh, depl, {-0.1, 0.0, 0.0}, {1, 0, 0}, 0.5, 2, tip);
+    EXPECT_EQ(near.jump[0][0], 0.0);
+    EXPECT_NEAR(near.jump[0][1], 5e-4, 1e-15);
+    EXPECT_NEAR(near.jump[1][0], 2e-3 * 1.6, 1e-15);
+}
+
 }  // namespace
