@@ -374,14 +374,13 @@ void fannedTetrahedronRule(const std::array<std::array<double, 3>, 4>& V, const 
         // A face in a plane holding the line adds nothing (its cones are flat).
         const double along = dot(n, t) / area2, offset = dot(n, difference(O, F[0])) / area2;
         if (std::abs(along) < 1e-12 && std::abs(offset) < 1e-12 * size) continue;
-        // Where the line crosses the face's plane: the apex of the face's Duffy pieces when inside.
+        // Where the line crosses the face's plane: the apex of the face's Duffy pieces, signed when it
+        // lies outside the face (the pieces then stay on the face's side of the crack plane, which
+        // holds the line), so that the distance to the line is u |g(angle)| on every piece.
         std::optional<Vec3> pierce;
         if (std::abs(along) > 1e-12) {
             const Vec3 q = combine(O, -offset / along, t);
-            bool inside = true;
-            for (int e = 0; e < 3 && inside; ++e)
-                inside = dot(cross(difference(F[(e + 1) % 3], F[e]), difference(q, F[e])), n) >= -1e-10 * area2;
-            if (inside) pierce = q;
+            if (distance(q, F[0]) <= 10.0 * size) pierce = q;
         }
         if (!pierce) {
             fannedFacePiece(F[0], F[1], F[2], O, t, g, gw, a, aw, points, weights);
