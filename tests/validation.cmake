@@ -26,8 +26,9 @@ set(MINIASTER_FAMILY ssnv512a ssnv512c ssnv512e ssnv512f ssnv513a ssnv513b ssnv5
 # Beyond the family: code_aster's other interface tests as their features land (docs/commands.md).
 set(MINIASTER_BEYOND ssnv173b ssnv173d ssnv173e ssnv173f ssnv173g ssnv195a ssnv201a ssnv245a ssnv203a ssnv191b
     ssnp169a CACHE INTERNAL "")
-# Cracks (issue 26, docs/cracks.md): step 1, the level sets of a FORM_FISS crack.
-set(MINIASTER_CRACKS sslv318a CACHE INTERNAL "")
+# Cracks (issue 26, docs/cracks.md): step 1, the level sets of a FORM_FISS crack; step 2 in 3D
+# (ssnv198a: TOPOLOGIQUE, K1 = K2 = K3 = 0, FACE_IMPO DNOR on Heaviside nodes).
+set(MINIASTER_CRACKS sslv318a ssnv198a CACHE INTERNAL "")
 # Originals whose NON_REGRESSION values are code_aster's own inexact results (docs/contact.md,
 # docs/family.md): exit 2 accepted when every reference check is OK (tools/run_validation.sh).
 set(MINIASTER_ORIGINALS_INEXACT_VALE_CALC ssnv511e ssnv511f ssnv511g ssnv511h ssnv512f ssnv513e ssnv513g

@@ -183,16 +183,7 @@ ConceptPtr modiModeleXfem(const KeywordSet& kw, CommandContext& ctx) {
         throw UserError(kw.pathOf("MODELE_IN") + ": " + in->name +
                         " is already an X-FEM model; give the classical model made by AFFE_MODELE");
     std::vector<std::shared_ptr<const xfem::Crack>> cracks;
-    for (const auto& c : kw.objects<xfem::Crack>("FISSURE")) {
-        const int tipNodes = c->nodeCountWithStatus(2) + c->nodeCountWithStatus(3);
-        if (tipNodes > 0 && in->dim == 3)
-            throw NotImplemented(fmt::format(
-                "{}: the front of crack {} lies inside the mesh ({} cells contain it, {} nodes have crack-tip "
-                "status): crack-tip enrichment is implemented for 2D models (QUAD4, TRIA3); in 3D the sub-cell "
-                "quadrature along the front and its verification are not done yet (issue 26, step 2)",
-                kw.pathOf("FISSURE"), c->name, c->tipCells.size(), tipNodes));
-        cracks.push_back(c);
-    }
+    for (const auto& c : kw.objects<xfem::Crack>("FISSURE")) { cracks.push_back(c); }
     refuseRepeatedInterfaces(cracks, kw.pathOf("FISSURE"));
     const std::string contact = kw.text("CONTACT");
     const xfem::XfemContact mode = contact == "SANS" ? xfem::XfemContact::None : xfem::XfemContact::Standard;

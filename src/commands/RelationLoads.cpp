@@ -152,10 +152,10 @@ void readImposedOnCells(const KeywordSet& occ, bool functions, bool face, const 
         d.path = occ.pathOf(key);
         d.value = readValue(occ, key, functions);
         for (int n : nodes) {
-            if (model.enrichment && model.enrichment->nodeSlots(n) > 1)
+            if (model.enrichment && model.enrichment->nodeSlots(n) > 1 && d.value.function)
                 throw NotImplemented(
-                    fmt::format("{}: node {} is enriched by an interface; {} on X-FEM enriched "
-                                "nodes is not modelled (use DX, DY, DZ)",
+                    fmt::format("{}: node {} is enriched by an interface or a crack; {} given by a function on "
+                                "X-FEM enriched nodes is not modelled (a real value is)",
                                 occ.pathOf(key), mesh.nodeNames[size_t(n)], key));
             Vec3 dir = dirs.at(n);
             if (tangent && !edgeTangent) dir = {-dir[1], dir[0], 0.0};  // plane: the normal turned by +90 degrees

@@ -47,6 +47,40 @@ void MechanicalLoad::appendRelations(double inst, std::vector<LinearRelation>& o
     out.insert(out.end(), relations.begin(), relations.end());
 }
 
+// DNOR / DTAN on X-FEM enriched nodes (code_aster's xddlim, motcle 'DEPL'): per side of the node,
+// sum_c n_c (D_c + H(side) H1_c) = value, i.e. the relations of DX, DY, DZ = 1 on those nodes
+// combined with the direction's components. Keyed by node, the value left to the caller.
+std::map<int, std::vector<LinearRelation>> MechanicalLoad::enrichedDirectional(const DirectionalDof& request,
+                                                                               double inst) const {
+    std::map<int, std::vector<LinearRelation>> out;
+    const Model& m = *model;
+    if (!m.enrichment) return out;
+    std::vector<int> nodes;
+    std::map<int, std::array<double, 3>> direction;
+    for (size_t i = 0; i < request.nodes.size(); ++i)
+        if (m.enrichment->nodeSlots(request.nodes[i]) > 1)
+            nodes.push_back(request.nodes[i]), direction[request.nodes[i]] = request.direction[i];
+    if (nodes.empty()) return out;
+    static const char* const kComponents[] = {"DX", "DY", "DZ"};
+    for (int c = 0; c < m.dim; ++c) {
+        ImposedDof one;
+        one.path = request.path, one.nodes = nodes, one.component = kComponents[c], one.value = 1.0;
+        std::vector<LinearRelation> rel;
+        if (!m.enrichment->imposeDof(m, one, inst, rel)) continue;
+        std::map<int, size_t> seen;  // k-th relation of a node: its k-th side
+        for (const LinearRelation& r : rel) {
+            const int node = r.terms.front().node;
+            auto& list = out[node];
+            const size_t k = seen[node]++;
+            if (list.size() <= k) list.emplace_back();
+            for (const DofTerm& t : r.terms)
+                if (direction[node][size_t(c)] != 0.0)
+                    list[k].terms.push_back({t.node, t.component, t.coef * direction[node][size_t(c)]});
+        }
+    }
+    return out;
+}
+
 void MechanicalLoad::appendDirectional(double inst, std::vector<LinearRelation>& out) const {
     const Mesh& mesh = *model->mesh;
     static const char* const kComponents[] = {"DX", "DY", "DZ"};
@@ -57,7 +91,12 @@ void MechanicalLoad::appendDirectional(double inst, std::vector<LinearRelation>&
             for (int n : request.nodes) points.push_back(mesh.coords[n]);
             values = evaluateAtPoints(*request.value.function, points, inst);
         }
+        const auto enriched = enrichedDirectional(request, inst);
         for (size_t i = 0; i < request.nodes.size(); ++i) {
+            if (const auto it = enriched.find(request.nodes[i]); it != enriched.end()) {
+                for (LinearRelation r : it->second) out.push_back({std::move(r.terms), values[i]});
+                continue;
+            }
             LinearRelation r;
             for (int c = 0; c < model->dim; ++c)
                 if (request.direction[i][c] != 0.0)

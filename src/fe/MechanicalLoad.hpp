@@ -7,6 +7,7 @@
 // offered to it (Enrichment::imposeDof: X-FEM boundary conditions on enriched nodes, xfem_spec §4,
 // make multi-term ones).
 #include <array>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -102,6 +103,8 @@ public:
 private:
     // FACE_IMPO / ARETE_IMPO DNOR, DTAN: one relation per node (one term when the direction is an axis).
     void appendDirectional(double inst, std::vector<LinearRelation>& out) const;
+    // The relations of one request's X-FEM enriched nodes (per node, one per side), values unset.
+    std::map<int, std::vector<LinearRelation>> enrichedDirectional(const DirectionalDof& request, double inst) const;
 };
 
 // Values of `f` at the given points (columns X, Y, Z and INST), in one batch.

@@ -366,3 +366,131 @@ std::optional<std::array<double, 3>> referencePointIn(const Mesh& mesh, int cell
 }
 
 }  // namespace ma::xfem
+
+namespace ma::xfem {
+
+namespace {
+
+double det3(const Vec3& a, const Vec3& b, const Vec3& c) { return dot(a, cross(b, c)); }
+
+Vec3 combine(const Vec3& a, double s, const Vec3& b) { return {a[0] + s * b[0], a[1] + s * b[1], a[2] + s * b[2]}; }
+
+// The cones from the line to the oriented triangle (Q, B, C), collapsed at Q in the face.
+void fannedFacePiece(const Vec3& Q, const Vec3& B, const Vec3& C, const Vec3& O, const Vec3& t,
+                     const std::vector<double>& g, const std::vector<double>& gw, const std::vector<double>& a,
+                     const std::vector<double>& aw, std::vector<std::array<double, 3>>& points,
+                     std::vector<double>& weights) {
+    const Vec3 qb = difference(B, Q), bc = difference(C, B);
+    auto normalPart = [&](const Vec3& v) { return combine(v, -dot(v, t), t); };
+    for (size_t k = 0; k < a.size(); ++k) {
+        const Vec3 dir = combine(qb, a[k], bc);  // y = Q + u dir, dy/dtau = u (C - B)
+        for (size_t j = 0; j < g.size(); ++j) {
+            const double u = g[j] * g[j];
+            const Vec3 y = combine(Q, u, dir);
+            const Vec3 d = normalPart(difference(y, O));
+            const Vec3 yu = dir, yt{u * bc[0], u * bc[1], u * bc[2]};
+            for (size_t i = 0; i < g.size(); ++i) {
+                const double rho = g[i] * g[i];
+                // x = y - (1 - rho) d; dx/drho = d, dx/du = yu - (1 - rho) normal(yu), same for tau.
+                const Vec3 xu = combine(yu, rho - 1.0, normalPart(yu)), xt = combine(yt, rho - 1.0, normalPart(yt));
+                const double jac = det3(d, xu, xt) * 2.0 * g[i] * 2.0 * g[j];
+                const Vec3 x = combine(y, rho - 1.0, d);
+                points.push_back({x[0], x[1], x[2]});
+                weights.push_back(gw[i] * gw[j] * aw[k] * jac);
+            }
+        }
+    }
+}
+
+}  // namespace
+
+void fannedTetrahedronRule(const std::array<std::array<double, 3>, 4>& V, const Vec3& O, const Vec3& t, int nRadial,
+                           int nAngular, std::vector<std::array<double, 3>>& points, std::vector<double>& weights) {
+    std::vector<double> g, gw, a, aw;
+    gaussLegendre01(nRadial, g, gw);
+    gaussLegendre01(nAngular, a, aw);
+    Vec3 P[4];
+    for (int v = 0; v < 4; ++v) P[v] = {V[size_t(v)][0], V[size_t(v)][1], V[size_t(v)][2]};
+    const double size = std::max({distance(P[0], P[1]), distance(P[0], P[2]), distance(P[0], P[3])});
+    for (int f = 0; f < 4; ++f) {  // face opposite vertex f, oriented outwards
+        Vec3 F[3];
+        for (int v = 0, k = 0; v < 4; ++v)
+            if (v != f) F[k++] = P[v];
+        Vec3 n = cross(difference(F[1], F[0]), difference(F[2], F[0]));
+        if (dot(n, difference(F[0], P[f])) < 0) std::swap(F[1], F[2]), n = Vec3{-n[0], -n[1], -n[2]};
+        const double area2 = norm(n);
+        if (area2 <= 0) continue;
+        // A face in a plane holding the line adds nothing (its cones are flat).
+        const double along = dot(n, t) / area2, offset = dot(n, difference(O, F[0])) / area2;
+        if (std::abs(along) < 1e-12 && std::abs(offset) < 1e-12 * size) continue;
+        // Where the line crosses the face's plane: the apex of the face's Duffy pieces, signed when it
+        // lies outside the face (the pieces then stay on the face's side of the crack plane, which
+        // holds the line), so that the distance to the line is u |g(angle)| on every piece.
+        std::optional<Vec3> pierce;
+        if (std::abs(along) > 1e-12) {
+            const Vec3 q = combine(O, -offset / along, t);
+            if (distance(q, F[0]) <= 10.0 * size) pierce = q;
+        }
+        if (!pierce) {
+            fannedFacePiece(F[0], F[1], F[2], O, t, g, gw, a, aw, points, weights);
+            continue;
+        }
+        for (int e = 0; e < 3; ++e) {
+            const double piece = norm(cross(difference(F[e], *pierce), difference(F[(e + 1) % 3], *pierce)));
+            if (piece > 1e-14 * area2)
+                fannedFacePiece(*pierce, F[e], F[(e + 1) % 3], O, t, g, gw, a, aw, points, weights);
+        }
+    }
+}
+
+void tetrahedronGaussRule(const std::array<std::array<double, 3>, 4>& V, int n,
+                          std::vector<std::array<double, 3>>& points, std::vector<double>& weights) {
+    std::vector<double> g, gw;
+    gaussLegendre01(n, g, gw);
+    Vec3 e[3];
+    for (int v = 0; v < 3; ++v)
+        for (int j = 0; j < 3; ++j) e[v][size_t(j)] = V[size_t(v + 1)][size_t(j)] - V[0][size_t(j)];
+    const double volume6 = std::abs(det3(e[0], e[1], e[2]));
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            for (int k = 0; k < n; ++k) {
+                const double a = g[size_t(i)], b = g[size_t(j)], c = g[size_t(k)];
+                const double l1 = a, l2 = b * (1 - a), l3 = c * (1 - a) * (1 - b);
+                std::array<double, 3> x{};
+                for (int m = 0; m < 3; ++m)
+                    x[size_t(m)] = V[0][size_t(m)] + l1 * e[0][size_t(m)] + l2 * e[1][size_t(m)] + l3 * e[2][size_t(m)];
+                points.push_back(x);
+                weights.push_back(gw[size_t(i)] * gw[size_t(j)] * gw[size_t(k)] * (1 - a) * (1 - a) * (1 - b) *
+                                  volume6);
+            }
+}
+
+std::array<double, 3> referenceCoordinates(const Mesh& mesh, int cell, const Vec3& x) {
+    const CellType type = mesh.cellTypes[size_t(cell)];
+    const auto nodes = mesh.cellNodes(cell);
+    const int dim = cellDimension(type);
+    std::array<double, 3> xi{0, 0, 0};
+    std::vector<double> N(nodes.size());
+    std::array<double, 24> dN{};
+    auto X = [&](int a) -> const Vec3& { return mesh.coords[size_t(nodes[size_t(a)])]; };
+    for (int it = 0; it < 50; ++it) {
+        shapeValues(type, xi, N);
+        shapeDerivatives(type, xi, dN);
+        double J[3][3] = {}, inv[3][3] = {}, r[3] = {-x[0], -x[1], -x[2]};
+        jacobian(
+            dim, dim, int(nodes.size()), X, [&](int a, int j) { return dN[size_t(3 * a + j)]; }, J);
+        if (invertJacobian(dim, J, inv) == 0.0) break;
+        for (size_t a = 0; a < nodes.size(); ++a)
+            for (int i = 0; i < 3; ++i) r[i] += N[a] * X(int(a))[size_t(i)];
+        double step = 0.0;
+        for (int i = 0; i < dim; ++i) {
+            double d = 0.0;
+            for (int j = 0; j < dim; ++j) d += inv[i][j] * r[j];
+            xi[size_t(i)] -= d, step += std::abs(d);
+        }
+        if (step < 1e-15) break;
+    }
+    return xi;
+}
+
+}  // namespace ma::xfem

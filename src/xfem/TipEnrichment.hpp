@@ -70,6 +70,24 @@ void tipTriangleRule(const std::array<std::array<double, 3>, 3>& V, const std::o
                      const std::function<Vec3(const std::array<double, 3>&)>& toPhysical, const std::vector<Vec3>& tips,
                      int n, int levels, std::vector<std::array<double, 3>>& points, std::vector<double>& weights);
 
+// A rule on the tetrahedron V (coordinates as given, e.g. a sub-cell in its parent's reference
+// coordinates) fanned from the straight line through O along t (unit), the front of a 3D
+// crack-tip element: in every plane normal to the line, the section is fanned from the line's
+// point, so each point is x = P(y) + rho (y - P(y)) with y on a face and P(y) its projection on
+// the line (signed: faces seen from the line's back count negatively). rho = s^2, and each face is
+// split at the line's crossing into Duffy-collapsed triangles (radius = u^2), which makes the
+// r^-1/2 and r^-1 terms of the tip fields smooth; nRadial points in rho and u, nAngular in the
+// face's angle. Appends points and weights (the volume included).
+void fannedTetrahedronRule(const std::array<std::array<double, 3>, 4>& V, const Vec3& O, const Vec3& t, int nRadial,
+                           int nAngular, std::vector<std::array<double, 3>>& points, std::vector<double>& weights);
+
+// Conical-product Gauss rule of n^3 points on the tetrahedron V (exact to degree 2n - 1).
+void tetrahedronGaussRule(const std::array<std::array<double, 3>, 4>& V, int n,
+                          std::vector<std::array<double, 3>>& points, std::vector<double>& weights);
+
+// Reference coordinates of x for the cell (Newton on the shape functions, x inside or not).
+std::array<double, 3> referenceCoordinates(const Mesh& mesh, int cell, const Vec3& x);
+
 // Reference coordinates of x in the 2D cell (TRIA3, QUAD4) when x lies in it (1e-10 of slack).
 std::optional<std::array<double, 3>> referencePointIn(const Mesh& mesh, int cell, const Vec3& x);
 

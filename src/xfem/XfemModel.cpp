@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 
 #include "core/Error.hpp"
@@ -124,13 +125,65 @@ void XfemModel::buildTip() {
     }
     bases_ = frontBases(mesh, crack, basisNodes);
     tipPoint_.assign(cuts_.size(), std::nullopt);
-    if (dim_ != 2) return;
+    if (dim_ == 3) return buildFrontLines(crack);
     for (const auto& f : crack.fronts) frontPoints_.push_back(f.points[0]);
     for (size_t i = 0; i < cuts_.size(); ++i) {
         if (cuts_[i].skin) continue;
         for (const auto& f : crack.fronts)
             if (!tipPoint_[i]) tipPoint_[i] = referencePointIn(mesh, cuts_[i].cell, f.points[0]);
     }
+}
+
+void XfemModel::buildFrontLines(const Crack& crack) {
+    const Mesh& mesh = *mesh_;
+    frontLine_.assign(cuts_.size(), std::nullopt);
+    for (size_t i = 0; i < cuts_.size(); ++i) {
+        if (cuts_[i].skin) continue;
+        const auto cn = mesh.cellNodes(cuts_[i].cell);
+        Vec3 centre{};
+        for (int n : cn)
+            for (int j = 0; j < 3; ++j) centre[size_t(j)] += mesh.coords[size_t(n)][size_t(j)] / double(cn.size());
+        double best = std::numeric_limits<double>::infinity();
+        std::array<Vec3, 2> segment{};
+        for (const auto& f : crack.fronts)
+            for (size_t k = 0; k + 1 < f.points.size(); ++k) {
+                const Vec3 &a = f.points[k], &b = f.points[k + 1];
+                const Vec3 ab = difference(b, a);
+                const double l2 = dot(ab, ab);
+                if (l2 == 0.0) continue;
+                const double s = std::clamp(dot(difference(centre, a), ab) / l2, 0.0, 1.0);
+                const double d = distance(centre, Vec3{a[0] + s * ab[0], a[1] + s * ab[1], a[2] + s * ab[2]});
+                if (d < best) best = d, segment = {a, b};
+            }
+        if (!std::isfinite(best)) continue;
+        const auto ra = referenceCoordinates(mesh, cuts_[i].cell, segment[0]);
+        const auto rb = referenceCoordinates(mesh, cuts_[i].cell, segment[1]);
+        const Vec3 O{ra[0], ra[1], ra[2]}, d{rb[0] - ra[0], rb[1] - ra[1], rb[2] - ra[2]};
+        const double l = norm(d);
+        if (l > 0) frontLine_[i] = std::array<Vec3, 2>{O, Vec3{d[0] / l, d[1] / l, d[2] / l}};
+    }
+}
+
+void XfemModel::tipSubcellRule3(const CellCut& cut, int s, std::vector<std::array<double, 3>>& points,
+                                std::vector<double>& weights) const {
+    const auto& sub = cut.subcells[size_t(s)];
+    std::array<std::array<double, 3>, 4> V;
+    for (int v = 0; v < 4; ++v) V[size_t(v)] = cut.points[size_t(sub.vertices[size_t(v)])].ref;
+    const auto& line = frontLine_[size_t(cellIndex_[size_t(cut.cell)])];
+    double diameter = 0.0, near = std::numeric_limits<double>::infinity();
+    for (int v = 0; v < 4; ++v) {
+        const Vec3 P{V[size_t(v)][0], V[size_t(v)][1], V[size_t(v)][2]};
+        for (int w = 0; w < v; ++w)
+            diameter = std::max(diameter, distance(P, Vec3{V[size_t(w)][0], V[size_t(w)][1], V[size_t(w)][2]}));
+        if (!line) continue;
+        const Vec3 op = difference(P, (*line)[0]);
+        const double along = dot(op, (*line)[1]);
+        near = std::min(near, norm(Vec3{op[0] - along * (*line)[1][0], op[1] - along * (*line)[1][1],
+                                        op[2] - along * (*line)[1][2]}));
+    }
+    if (line && near <= kTipFanReach * diameter)
+        return fannedTetrahedronRule(V, (*line)[0], (*line)[1], kTipRadialPoints, kTipAngularPoints, points, weights);
+    tetrahedronGaussRule(V, kTipFarPoints, points, weights);
 }
 
 void XfemModel::tipSubcellRule(const CellCut& cut, int s, std::vector<std::array<double, 3>>& points,
@@ -458,7 +511,7 @@ void XfemModel::integration(int cell, ElementIntegration& out) const {
     for (int a = 0; a < nn && !cut.skin; ++a) hasTip = hasTip || tipNode(nodes[a]);
     // Crack-tip elements of a 2D model with the catalogue's rules: collapsed Gauss rules (the
     // sub-cell rule of an override is kept, code_aster's FPG12 at degree 6).
-    const bool tipRule = hasTip && dim_ == 2 && subcellDegree_ == 0;
+    const bool tipRule = hasTip && subcellDegree_ == 0;
     const double refMeasure = referenceSimplexMeasure(cut.dim);
     std::vector<double> subPsi(size_t(nn) * maxSlots);
     int p = 0;
@@ -471,7 +524,8 @@ void XfemModel::integration(int cell, ElementIntegration& out) const {
         }
         if (tipRule) {
             const size_t before = out.refPoints.size();
-            tipSubcellRule(cut, s, out.refPoints, out.refWeights);
+            if (cut.dim == 3) tipSubcellRule3(cut, s, out.refPoints, out.refWeights);
+            else tipSubcellRule(cut, s, out.refPoints, out.refWeights);
             for (size_t q = before; q < out.refPoints.size(); ++q, ++p) {
                 out.pointSubcell.push_back(s);
                 out.psi.insert(out.psi.end(), subPsi.begin(), subPsi.end());

@@ -130,6 +130,13 @@ public:
                          TipPoint& out) const;
     // Gauss-Legendre points per direction of the collapsed rules of crack-tip elements (2D).
     static constexpr int kTipGaussPoints = 12;
+    // 3D fanned rules (TipEnrichment's fannedTetrahedronRule): points along the two radii and the
+    // angle of a face piece; sub-cells farther from the front line than kTipFanReach diameters
+    // get the conical Gauss rule of kTipFarPoints^3 points.
+    static constexpr int kTipRadialPoints = 6;
+    static constexpr int kTipAngularPoints = 10;
+    static constexpr double kTipFanReach = 0.25;
+    static constexpr int kTipFarPoints = 4;
     // Levels of splitting of the sub-triangles near the front point (TipEnrichment's tipTriangleRule).
     static constexpr int kTipRefinement = 4;
 
@@ -140,6 +147,10 @@ private:
     // Gauss rules, fanned from the front point when the sub-cell contains it.
     void tipSubcellRule(const CellCut& cut, int s, std::vector<std::array<double, 3>>& points,
                         std::vector<double>& weights) const;
+    // 3D: the fanned rule from the front line near it, else a conical Gauss rule.
+    void tipSubcellRule3(const CellCut& cut, int s, std::vector<std::array<double, 3>>& points,
+                         std::vector<double>& weights) const;
+    void buildFrontLines(const Crack& crack);
     void buildCells(const Model& model);
     void buildNodes();
     void supportDomains(int node, const std::vector<int>& active, std::vector<std::vector<signed char>>& keys,
@@ -167,6 +178,9 @@ private:
     std::vector<FrontBasis> bases_;                               // per mesh node (tip nodes)
     std::vector<std::optional<std::array<double, 3>>> tipPoint_;  // per cuts_ entry: front point (reference)
     std::vector<Vec3> frontPoints_;                               // 2D front points (physical)
+    // 3D, per cuts_ entry: the line of the front segment nearest the cell, in its reference
+    // coordinates (a point and a unit direction).
+    std::vector<std::optional<std::array<Vec3, 2>>> frontLine_;
 };
 
 }  // namespace ma::xfem

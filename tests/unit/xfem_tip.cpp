@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "xfem/TipEnrichment.hpp"
 
@@ -87,5 +88,37 @@ TEST(XfemTip, CollapsedRuleIntegratesTheTipSingularity) {
     EXPECT_NEAR(area, 0.5 * std::abs(0.8 * 0.9 - 0.2 * 0.2), 1e-15);
 }
 
+// The fanned rule of a 3D tip sub-cell (fannedTetrahedronRule): exact volume and second moment
+// whether the front line crosses the tetrahedron, lies along an edge, in a face's plane or outside
+// it; and the 1/r singularity of an edge on the line against its closed form.
+TEST(XfemTip, FannedTetrahedronRuleIntegratesTheFrontSingularity) {
+    const std::array<std::array<double, 3>, 4> T{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+    struct Line {
+        Vec3 O, t;
+    };
+    const double s3 = 1.0 / std::sqrt(3.0);
+    const Line lines[] = {{{0.2, 0.2, 0}, {0, 0, 1}},         // through the inside
+                          {{0, 0, 0}, {0, 0, 1}},             // along an edge
+                          {{0.3, 0, 0}, {0, 0, 1}},           // in the plane of a face
+                          {{2.0, -1.0, 0.5}, {s3, s3, s3}}};  // outside
+    for (const Line& l : lines) {
+        std::vector<std::array<double, 3>> pts;
+        std::vector<double> w;
+        fannedTetrahedronRule(T, l.O, l.t, 6, 10, pts, w);
+        double volume = 0, xx = 0;
+        for (size_t q = 0; q < w.size(); ++q) volume += w[q], xx += w[q] * pts[q][0] * pts[q][0];
+        EXPECT_NEAR(volume, 1.0 / 6.0, 1e-14);
+        EXPECT_NEAR(xx, 1.0 / 60.0, 1e-14);
+    }
+    // Edge (0,0,0)-(0,0,1) on the line: int 1/r = int_0^{pi/2} dphi / (2 (cos + sin)) = ln(1 + sqrt 2) / sqrt 2.
+    for (int n : {4, 8}) {
+        std::vector<std::array<double, 3>> pts;
+        std::vector<double> w;
+        fannedTetrahedronRule(T, {0, 0, 0}, {0, 0, 1}, n, 2 * n, pts, w);
+        double sum = 0;
+        for (size_t q = 0; q < w.size(); ++q) sum += w[q] / std::hypot(pts[q][0], pts[q][1]);
+        EXPECT_NEAR(sum, std::log(1.0 + std::sqrt(2.0)) / std::sqrt(2.0), n == 4 ? 1e-6 : 1e-12) << n;
+    }
+}
 }  // namespace
 }  // namespace ma::xfem
