@@ -1,0 +1,178 @@
+// The crack-tip part of the X-FEM model (docs/cracks.md, "Crack-tip enrichment"): which nodes are
+// tip-enriched, the local front bases, the quadrature of the tip cells' sub-cells and the tip
+// fields of their integration points.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <span>
+
+#include "core/Error.hpp"
+#include "mesh/ElementGeometry.hpp"
+#include "mesh/ShapeFunctions.hpp"
+#include "xfem/CellGeometry.hpp"
+#include "xfem/TipEnrichment.hpp"
+#include "xfem/XfemModel.hpp"
+
+namespace ma::xfem {
+
+void XfemModel::buildTip() {
+    const Mesh& mesh = *mesh_;
+    for (size_t k = 0; k < cracks_.size(); ++k) {
+        const Crack& c = *cracks_[k];
+        if (c.nodeCountWithStatus(2) + c.nodeCountWithStatus(3) == 0) continue;
+        if (tipCrack_ >= 0)
+            throw NotImplemented(
+                fmt::format("cracks {} and {} both have a front in the mesh: one crack with crack-tip "
+                            "enrichment per model is supported",
+                            cracks_[size_t(tipCrack_)]->name, c.name));
+        if (!c.masters.empty()) throw NotImplemented("crack " + c.name + ": a crack with a front joined (JONCTION)");
+        tipCrack_ = static_cast<int>(k);
+    }
+    if (tipCrack_ < 0) return;
+    const Crack& crack = *cracks_[size_t(tipCrack_)];
+    tipNodes_.assign(size_t(mesh.nodeCount()), 0);
+    for (int n = 0; n < mesh.nodeCount(); ++n)
+        tipNodes_[size_t(n)] = nodeIndex_[size_t(n)] >= 0 && crack.nodeStatus[size_t(n)] >= 2;
+    // BASLOC at every node of the elements with a tip node (code_aster has it everywhere): the
+    // basis at a point and the subtracted interpolation use all the element's nodes.
+    std::vector<char> basisNodes(size_t(mesh.nodeCount()), 0);
+    for (const CellCut& c : cuts_) {
+        const auto cn = mesh.cellNodes(c.cell);
+        if (std::any_of(cn.begin(), cn.end(), [&](int n) { return tipNodes_[size_t(n)] != 0; }))
+            for (int n : cn) basisNodes[size_t(n)] = 1;
+    }
+    bases_ = frontBases(mesh, crack, basisNodes);
+    tipPoint_.assign(cuts_.size(), std::nullopt);
+    if (dim_ == 3) return buildFrontLines(crack);
+    for (const auto& f : crack.fronts) frontPoints_.push_back(f.points[0]);
+    for (size_t i = 0; i < cuts_.size(); ++i) {
+        if (cuts_[i].skin) continue;
+        for (const auto& f : crack.fronts)
+            if (!tipPoint_[i]) tipPoint_[i] = referencePointIn(mesh, cuts_[i].cell, f.points[0]);
+    }
+}
+
+void XfemModel::buildFrontLines(const Crack& crack) {
+    const Mesh& mesh = *mesh_;
+    frontLine_.assign(cuts_.size(), std::nullopt);
+    for (size_t i = 0; i < cuts_.size(); ++i) {
+        if (cuts_[i].skin) continue;
+        const auto cn = mesh.cellNodes(cuts_[i].cell);
+        Vec3 centre{};
+        for (int n : cn)
+            for (int j = 0; j < 3; ++j) centre[size_t(j)] += mesh.coords[size_t(n)][size_t(j)] / double(cn.size());
+        double best = std::numeric_limits<double>::infinity();
+        std::array<Vec3, 2> segment{};
+        for (const auto& f : crack.fronts)
+            for (size_t k = 0; k + 1 < f.points.size(); ++k) {
+                const Vec3 &a = f.points[k], &b = f.points[k + 1];
+                const Vec3 ab = difference(b, a);
+                const double l2 = dot(ab, ab);
+                if (l2 == 0.0) continue;
+                const double s = std::clamp(dot(difference(centre, a), ab) / l2, 0.0, 1.0);
+                const double d = distance(centre, Vec3{a[0] + s * ab[0], a[1] + s * ab[1], a[2] + s * ab[2]});
+                if (d < best) best = d, segment = {a, b};
+            }
+        if (!std::isfinite(best)) continue;
+        const auto ra = referenceCoordinates(mesh, cuts_[i].cell, segment[0]);
+        const auto rb = referenceCoordinates(mesh, cuts_[i].cell, segment[1]);
+        const Vec3 O{ra[0], ra[1], ra[2]}, d{rb[0] - ra[0], rb[1] - ra[1], rb[2] - ra[2]};
+        const double l = norm(d);
+        if (l > 0) frontLine_[i] = std::array<Vec3, 2>{O, Vec3{d[0] / l, d[1] / l, d[2] / l}};
+    }
+}
+
+void XfemModel::tipSubcellRule3(const CellCut& cut, int s, std::vector<std::array<double, 3>>& points,
+                                std::vector<double>& weights) const {
+    const auto& sub = cut.subcells[size_t(s)];
+    std::array<std::array<double, 3>, 4> V;
+    for (int v = 0; v < 4; ++v) V[size_t(v)] = cut.points[size_t(sub.vertices[size_t(v)])].ref;
+    const auto& line = frontLine_[size_t(cellIndex_[size_t(cut.cell)])];
+    double diameter = 0.0, near = std::numeric_limits<double>::infinity();
+    for (int v = 0; v < 4; ++v) {
+        const Vec3 P{V[size_t(v)][0], V[size_t(v)][1], V[size_t(v)][2]};
+        for (int w = 0; w < v; ++w)
+            diameter = std::max(diameter, distance(P, Vec3{V[size_t(w)][0], V[size_t(w)][1], V[size_t(w)][2]}));
+        if (!line) continue;
+        const Vec3 op = difference(P, (*line)[0]);
+        const double along = dot(op, (*line)[1]);
+        near = std::min(near, norm(Vec3{op[0] - along * (*line)[1][0], op[1] - along * (*line)[1][1],
+                                        op[2] - along * (*line)[1][2]}));
+    }
+    if (line && near <= kTipFanReach * diameter)
+        return fannedTetrahedronRule(V, (*line)[0], (*line)[1], kTipRadialPoints, kTipAngularPoints, points, weights);
+    tetrahedronGaussRule(V, kTipFarPoints, points, weights);
+}
+
+void XfemModel::tipSubcellRule(const CellCut& cut, int s, std::vector<std::array<double, 3>>& points,
+                               std::vector<double>& weights) const {
+    const auto& sub = cut.subcells[size_t(s)];
+    std::array<std::array<double, 3>, 3> V;
+    for (int v = 0; v < 3; ++v) V[size_t(v)] = cut.points[size_t(sub.vertices[size_t(v)])].ref;
+    const auto nodes = mesh_->cellNodes(cut.cell);
+    const CellType type = mesh_->cellTypes[size_t(cut.cell)];
+    auto toPhysical = [&](const std::array<double, 3>& xi) {
+        std::array<double, 8> N{};
+        shapeValues(type, xi, std::span<double>(N.data(), nodes.size()));
+        Vec3 x{};
+        for (size_t a = 0; a < nodes.size(); ++a)
+            for (int j = 0; j < 3; ++j) x[size_t(j)] += N[a] * mesh_->coords[size_t(nodes[a])][size_t(j)];
+        return x;
+    };
+    tipTriangleRule(V, tipPoint_[size_t(cellIndex_[size_t(cut.cell)])], toPhysical, frontPoints_, kTipGaussPoints,
+                    kTipRefinement, points, weights);
+}
+
+bool XfemModel::tipMatrix(int cell, int subcell, const std::array<double, 3>& ref, double lambdaEff, double mu,
+                          TipPoint& out) const {
+    const CellCut* c = cut(cell);
+    if (!c || tipNodes_.empty()) return false;
+    const auto at = std::find(c->cracks.begin(), c->cracks.end(), tipCrack_);
+    const signed char h =
+        at == c->cracks.end() ? 1 : c->subcells[size_t(subcell)].heaviside[size_t(at - c->cracks.begin())];
+    out.cell = cell, out.ref = ref;
+    if (c->skin) {  // evaluated in the volume element the skin cell bounds, at the same physical point
+        const int volume = adjacentVolume(cell);
+        if (volume < 0 || dim_ != 2) return false;
+        const auto sn = mesh_->cellNodes(cell);
+        std::array<double, 8> N{};
+        shapeValues(mesh_->cellTypes[size_t(cell)], ref, std::span<double>(N.data(), sn.size()));
+        Vec3 x{};
+        for (size_t a = 0; a < sn.size(); ++a)
+            for (int j = 0; j < 3; ++j) x[size_t(j)] += N[a] * mesh_->coords[size_t(sn[a])][size_t(j)];
+        const auto r = referencePointIn(*mesh_, volume, x);
+        if (!r) return false;
+        out.cell = volume, out.ref = *r;
+    }
+    return tipMatrixOnSide(out.cell, out.ref, h, lambdaEff, mu, out);
+}
+
+bool XfemModel::tipMatrixOnSide(int cell, const std::array<double, 3>& ref, int side, double lambdaEff, double mu,
+                                TipPoint& out) const {
+    if (tipNodes_.empty()) return false;
+    out.cell = cell, out.ref = ref;
+    ElementIntegration one;
+    one.cell = cell;
+    one.refPoints = {ref};
+    tipElementFields(*mesh_, cell, dim_, bases_, cracks_[size_t(tipCrack_)]->nodeStatus, tipNodes_,
+                     {static_cast<signed char>(side < 0 ? -1 : 1)}, one);
+    if (std::count(one.tip.begin(), one.tip.end(), 1) == 0) return false;
+    applyTipLaw(one, lambdaEff, mu);
+    std::copy(one.tipPhi.begin(), one.tipPhi.begin() + 9, out.Phi);
+    return true;
+}
+
+void XfemModel::addTipFields(const CellCut& cut, ElementIntegration& out) const {
+    const auto at = std::find(cut.cracks.begin(), cut.cracks.end(), tipCrack_);
+    std::vector<signed char> side(out.refPoints.size(), 1);
+    if (at != cut.cracks.end())
+        for (size_t p = 0; p < side.size(); ++p) {
+            const signed char h = cut.subcells[size_t(out.pointSubcell[p])].heaviside[size_t(at - cut.cracks.begin())];
+            side[p] = h < 0 ? -1 : 1;
+        }
+    tipElementFields(*mesh_, cut.cell, cut.dim, bases_, cracks_[size_t(tipCrack_)]->nodeStatus, tipNodes_, side, out);
+}
+
+}  // namespace ma::xfem
