@@ -16,6 +16,8 @@
 #include "solver/LinearSolver.hpp"
 
 using namespace ma;
+using ma::test::Solved;
+using ma::test::solveKnown;
 
 namespace {
 
@@ -44,26 +46,6 @@ SolverOptions krylov(const std::string& method, const std::string& algorithm, co
     o.preconditioner = pc;
     o.resiRela = resiRela;
     return o;
-}
-
-struct Solved {
-    double error = 0.0;
-    double residual = 0.0;
-    std::string mess;
-};
-
-Solved solveKnown(const CsrMatrix& A, const SolverOptions& o, MatrixKind kind) {
-    const size_t from = msg().messText().size();
-    auto solver = makeLinearSolver(o);
-    solver->factorize(A, kind);
-    std::vector<double> x0(size_t(A.rows)), b(size_t(A.rows));
-    for (int i = 0; i < A.rows; ++i) x0[size_t(i)] = std::cos(0.1 * i) + 1.0;
-    A.multiply(x0, b);
-    Solved s;
-    s.residual = solver->solve(b);
-    for (int i = 0; i < A.rows; ++i) s.error = std::max(s.error, std::abs(b[size_t(i)] - x0[size_t(i)]));
-    s.mess = msg().messText().substr(from);
-    return s;
 }
 
 int iterationsIn(const std::string& mess) {

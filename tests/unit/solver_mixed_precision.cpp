@@ -19,6 +19,8 @@
 #include "solver/LinearSolver.hpp"
 
 using namespace ma;
+using ma::test::Solved;
+using ma::test::solveKnown;
 
 namespace {
 
@@ -48,27 +50,6 @@ CsrMatrix laplacian1d(int n) {
         if (i + 1 < n) rows[size_t(i)].push_back({i + 1, -1.0}), rows[size_t(i + 1)].push_back({i, -1.0});
     }
     return ma::test::fromRows(std::move(rows));
-}
-
-struct Solved {
-    double error = 0.0;     // max |x - x0|
-    double residual = 0.0;  // ||A x - b|| / ||b|| as the solver returns it
-    std::string mess;
-};
-
-// Solves A x = A x0 (x0_i = cos(0.1 i) + 1) with `o`.
-Solved solveKnown(const CsrMatrix& A, const SolverOptions& o, MatrixKind kind) {
-    const size_t from = msg().messText().size();
-    auto solver = makeLinearSolver(o);
-    solver->factorize(A, kind);
-    std::vector<double> x0(size_t(A.rows)), b(size_t(A.rows));
-    for (int i = 0; i < A.rows; ++i) x0[size_t(i)] = std::cos(0.1 * i) + 1.0;
-    A.multiply(x0, b);
-    Solved s;
-    s.residual = solver->solve(b);
-    for (int i = 0; i < A.rows; ++i) s.error = std::max(s.error, std::abs(b[size_t(i)] - x0[size_t(i)]));
-    s.mess = msg().messText().substr(from);
-    return s;
 }
 
 SolverOptions mixed() {
