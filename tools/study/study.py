@@ -12,6 +12,7 @@
     ./miniaster study astest                 regenerates astest/smooth_*.{comm,export,mmed}
     ./miniaster study cracks                 K1, K2, G of X-FEM cracks against closed forms versus mesh size
     ./miniaster study ssnv513e               ssnv513e (the family file, unmodified) refined N = 5 ... 81 (docs/family.md)
+    ./miniaster study ssnp138a               ssnp138a's inclined cracks (its problem) refined N = 100 ... 400 (docs/cracks.md)
 
 Options: --out DIR (tables and plots, default a fresh folder miniaster-study-<name>-<time> here;
 --out docs/study updates the committed figures; astest reads docs/study by default), --work DIR (runs, default a temporary
@@ -1007,7 +1008,7 @@ def main():
     ap = Arguments(prog="miniaster study", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("name", choices=["smooth", "stability", "penalty", "perf", "all", "check-field", "astest",
-                                     "ssnv513e", "lame", "solvers", "cracks"])
+                                     "ssnv513e", "lame", "solvers", "cracks", "ssnp138a"])
     ap.add_argument("--full", action="store_true", help="the big grid (2D up to N=1001, perf at N=1001)")
     ap.add_argument("--out", default=None,
                     help="tables and plots (default: a fresh folder miniaster-study-<name>-<UTC time> in the "
@@ -1036,6 +1037,9 @@ def main():
     if args.name == "ssnv513e":  # refinement study of the family file (docs/family.md)
         import ssnv513e_refinement
         return ssnv513e_refinement.main(["--build", args.build, "--out", args.out])
+    if args.name == "ssnp138a":  # refinement study of ssnp138a's inclined cracks (docs/cracks.md)
+        import ssnp138a_refinement
+        return ssnp138a_refinement.main(["--build", args.build, "--out", args.out])
     if args.name == "cracks":  # K and G of X-FEM cracks against closed forms (docs/cracks.md)
         import cracks
         return cracks.main(["--build", args.build, "--out", args.out])
