@@ -237,12 +237,7 @@ private:
     // FILTRAGE_MATRICE is on, else empty.
     std::vector<double> filterDiagonal(const CsrMatrix& A) const {
         if (!(options_.matrixFilter > 0.0)) return {};
-        std::vector<double> d = options_.distributed ? summedDiagonal(A) : std::vector<double>(size_t(A.rows), 0.0);
-        if (!options_.distributed)
-            for (int i = 0; i < A.rows; ++i) {
-                const long long k = A.find(i, i);
-                d[size_t(i)] = k >= 0 ? A.values[size_t(k)] : 0.0;
-            }
+        std::vector<double> d = options_.distributed ? summedDiagonal(A) : diagonalOf(A);
         for (double& v : d) v = std::abs(v);
         return d;
     }
