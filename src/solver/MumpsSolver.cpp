@@ -387,8 +387,9 @@ private:
         if (mode == "EVAL" || ooc || mode == "IN_CORE")
             msg().infof(
                 "    GESTION_MEMOIRE='{}': MUMPS estimates {:.0f} MB in core (INFOG(17)), {:.0f} MB out of core "
-                "(INFOG(27)); {:.0f} MB available",
-                mode, inCore, outOfCore, available);
+                "(INFOG(27)); {:.0f} MB available; the analysis predicts {:.3e} flops (RINFOG(1)), {:.4g} factor "
+                "entries (INFOG(20))",
+                mode, inCore, outOfCore, available, predictedFlops_, mumpsCount(id_.infog[19]));
         if (mode == "EVAL")
             throw UserError(fmt::format(
                 "SOLVEUR/GESTION_MEMOIRE='EVAL': the memory estimates of MUMPS for this system of {} unknowns are in "
