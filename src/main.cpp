@@ -18,12 +18,12 @@
 namespace {
 
 // glibc's heap gives a freed block of more than M_MMAP_THRESHOLD back to the system at once, and
-// the free top of the heap beyond M_TRIM_THRESHOLD; both start low (128 kB) and rise only when some
-// large block happens to be freed, which PETSc's libraries did at start-up while they were linked in.
-// Left low, every vector of a few MB is new zeroed pages at each allocation: refined ssnv511a N = 501
-// took 314 000 page faults instead of 277 000 (docs/solver.md, "Heap"). Fixed at glibc's own ceiling
-// for the first; what a command frees is still returned when it ends (malloc_trim, the supervisor),
-// since P memory_limit watches resident memory.
+// the free top of the heap beyond M_TRIM_THRESHOLD; both start at 128 kB and rise only when some
+// large block happens to be freed. Left there, vectors of a few MB come in new zeroed pages at each
+// allocation (1.7-1.9 us of system time a page here): refined ssnv511a N = 501 took 313 600 page
+// faults, 277 000 with these values (docs/solver.md, "Heap"). 32 MB is glibc's own ceiling for the
+// first; what a command frees is still returned when it ends (malloc_trim, the supervisor), since
+// P memory_limit watches resident memory.
 void configureHeap() {
     mallopt(M_MMAP_THRESHOLD, 32 << 20);
     mallopt(M_TRIM_THRESHOLD, 256 << 20);
