@@ -1,4 +1,6 @@
 // miniaster: runs code_aster command files (.comm / .export); converts and plots results. See README.md.
+#include <malloc.h>
+
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -13,8 +15,25 @@
 #include "parser/RunGuard.hpp"
 #include "parser/Supervisor.hpp"
 
+namespace {
+
+// glibc's heap gives a freed block of more than M_MMAP_THRESHOLD back to the system at once, and
+// the free top of the heap beyond M_TRIM_THRESHOLD; both start at 128 kB and rise only when some
+// large block happens to be freed. Left there, vectors of a few MB come in new zeroed pages at each
+// allocation (1.7-1.9 us of system time a page here): refined ssnv511a N = 501 took 313 600 page
+// faults, 277 000 with these values (docs/solver.md, "Heap"). 32 MB is glibc's own ceiling for the
+// first; what a command frees is still returned when it ends (malloc_trim, the supervisor), since
+// P memory_limit watches resident memory.
+void configureHeap() {
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 256 << 20);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     const std::string command = argc >= 2 ? argv[1] : "";
+    configureHeap();
     if (command == "--version") {
         std::printf("miniaster %s (%s)\n", MINIASTER_VERSION, MINIASTER_COMMIT);
         return 0;

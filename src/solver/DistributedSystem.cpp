@@ -9,9 +9,7 @@
 namespace ma {
 
 std::vector<double> summedDiagonal(const CsrMatrix& A) {
-    std::vector<double> d(size_t(A.rows), 0.0);
-    for (int i = 0; i < A.rows; ++i)
-        if (const long long k = A.find(i, i); k >= 0) d[size_t(i)] = A.values[k];
+    std::vector<double> d = diagonalOf(A);
     mpi::sum(d);
     return d;
 }

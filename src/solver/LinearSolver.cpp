@@ -44,20 +44,28 @@ void checkSolution(std::span<const double> x, double residual, const SolverOptio
     if (options.resiRela <= 0.0 && (!std::isfinite(residual) || residual > 1e-6)) msg().alarm(FACTOR_57, residual);
 }
 
-std::vector<double> symmetricDiagonalScaling(const CsrMatrix& A) {
-    std::vector<double> s(A.rows, 0.0);
+std::vector<double> symmetricDiagonalScaling(const CsrMatrix& A) { return scalingFromDiagonal(A, diagonalOf(A)); }
+
+std::vector<double> diagonalOf(const CsrMatrix& A) {
+    std::vector<double> d(size_t(A.rows), 0.0);
+    for (int i = 0; i < A.rows; ++i)
+        if (const long long k = A.find(i, i); k >= 0) d[size_t(i)] = A.values[size_t(k)];
+    return d;
+}
+
+std::vector<double> scalingFromDiagonal(const CsrMatrix& A, std::span<const double> diagonal) {
+    std::vector<double> s(size_t(A.rows), 0.0);
     std::vector<int> zeroDiagonal;
     for (int i = 0; i < A.rows; ++i) {
-        const long long k = A.find(i, i);
-        const double d = k >= 0 ? std::abs(A.values[k]) : 0.0;
-        if (d > 0.0 && std::isfinite(d)) s[i] = 1.0 / std::sqrt(d);
+        const double d = std::abs(diagonal[size_t(i)]);
+        if (d > 0.0 && std::isfinite(d)) s[size_t(i)] = 1.0 / std::sqrt(d);
         else zeroDiagonal.push_back(i);
     }
     for (int i : zeroDiagonal) {
         double m = 0.0;
         for (long long k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k)
-            if (s[A.cols[k]] > 0.0) m = std::max(m, std::abs(A.values[k]) * s[A.cols[k]]);
-        s[i] = m > 0.0 && std::isfinite(m) ? 1.0 / m : 1.0;
+            if (s[size_t(A.cols[k])] > 0.0) m = std::max(m, std::abs(A.values[k]) * s[size_t(A.cols[k])]);
+        s[size_t(i)] = m > 0.0 && std::isfinite(m) ? 1.0 / m : 1.0;
     }
     return s;
 }
@@ -121,32 +129,40 @@ ResidualInfo ResidualNorms::info() const {
     return info;
 }
 
+namespace {
+
+// The range of |K_ii| the scaling evens out, in the .mess.
+void logDiagonalRange(std::span<const double> diagonal) {
+    double dmin = INFINITY, dmax = 0.0;
+    int zero = 0;
+    for (double v : diagonal) {
+        const double d = std::abs(v);
+        if (d > 0.0) dmin = std::min(dmin, d), dmax = std::max(dmax, d);
+        else ++zero;
+    }
+    msg().infof("    diagonal scaling D^-1/2 K D^-1/2: |K_ii| from {:.3e} to {:.3e} (ratio {:.1e}){}", dmin, dmax,
+                dmax > 0.0 ? dmin / dmax : 0.0,
+                zero ? fmt::format(", {} zero-diagonal row(s) (multipliers) scaled by their entries", zero) : "");
+}
+
+}  // namespace
+
 std::vector<double> diagonalScalingOf(const CsrMatrix& A, const SolverOptions& options) {
     if (!options.diagonalScaling) return std::vector<double>(size_t(A.rows), 1.0);
-    return options.distributed ? distributedDiagonalScaling(A, summedDiagonal(A)) : symmetricDiagonalScaling(A);
+    const std::vector<double> diagonal = options.distributed ? summedDiagonal(A) : diagonalOf(A);
+    logDiagonalRange(diagonal);
+    return options.distributed ? distributedDiagonalScaling(A, diagonal) : scalingFromDiagonal(A, diagonal);
 }
 
 void ScaledDirectSolver::factorize(const CsrMatrix& A, MatrixKind kind, std::span<const RowPoint> rowPoints) {
+    factorizeWith(A, diagonalScalingOf(A, options_), kind, rowPoints);
+}
+
+void ScaledDirectSolver::factorizeWith(const CsrMatrix& A, std::vector<double> scale, MatrixKind kind,
+                                       std::span<const RowPoint> rowPoints) {
+    if (scale.size() != size_t(A.rows)) throw InternalError("diagonal scaling of the wrong size for the matrix");
     A_ = &A;
-    if (options_.diagonalScaling) {
-        const std::vector<double> diagonal = options_.distributed ? summedDiagonal(A) : std::vector<double>{};
-        scale_ = options_.distributed ? distributedDiagonalScaling(A, diagonal) : symmetricDiagonalScaling(A);
-        double dmin = INFINITY, dmax = 0.0;
-        int zero = 0;
-        for (int i = 0; i < A.rows; ++i) {
-            const long long k = options_.distributed ? -1 : A.find(i, i);
-            const double d = options_.distributed ? std::abs(diagonal[size_t(i)])
-                             : k >= 0             ? std::abs(A.values[k])
-                                                  : 0.0;
-            if (d > 0.0) dmin = std::min(dmin, d), dmax = std::max(dmax, d);
-            else ++zero;
-        }
-        msg().infof("    diagonal scaling D^-1/2 K D^-1/2: |K_ii| from {:.3e} to {:.3e} (ratio {:.1e}){}", dmin, dmax,
-                    dmax > 0.0 ? dmin / dmax : 0.0,
-                    zero ? fmt::format(", {} zero-diagonal row(s) (multipliers) scaled by their entries", zero) : "");
-    } else {
-        scale_.assign(A.rows, 1.0);
-    }
+    scale_ = std::move(scale);
     factorizeScaled(A, scale_, kind, rowPoints);
 }
 

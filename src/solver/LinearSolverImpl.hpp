@@ -23,6 +23,9 @@ void checkSolution(std::span<const double> x, double residual, const SolverOptio
 // a zero diagonal (Lagrange multipliers) get s_i = 1 / max_j |a_ij| s_j over the scaled columns,
 // so that their entries are of order one too (1 when the row is empty: the pivot stays null).
 std::vector<double> symmetricDiagonalScaling(const CsrMatrix& A);
+// Its two steps: a_ii of each row (0 where the pattern lacks it), and s from those values.
+std::vector<double> diagonalOf(const CsrMatrix& A);
+std::vector<double> scalingFromDiagonal(const CsrMatrix& A, std::span<const double> diagonal);
 
 // Residual r = b - A x accumulated in extended precision (long double) and the two backward
 // errors: normwise ||r|| / ||b|| and componentwise max_i |r_i| / (|A| |x| + |b|)_i; on `threads`
@@ -53,7 +56,8 @@ ResidualInfo residualOf(const CsrMatrix& A, std::span<const double> x, std::span
 std::vector<double> summedDiagonal(const CsrMatrix& A);
 std::vector<double> distributedDiagonalScaling(const CsrMatrix& A, std::span<const double> diagonal);
 // S as the direct solvers scale A under `options` (all ones without PRETRAITEMENTS; from the summed
-// diagonal when distributed): the Krylov methods iterate on the S A S their factors are of.
+// diagonal when distributed), the diagonal's range logged: the Krylov methods iterate on the S A S
+// their factors are of, and hand S to them (ScaledDirectSolver::factorizeWith).
 std::vector<double> diagonalScalingOf(const CsrMatrix& A, const SolverOptions& options);
 ResidualInfo distributedResidualOf(const CsrMatrix& A, std::span<const double> x, std::span<const double> b,
                                    std::vector<double>& r);
@@ -69,6 +73,9 @@ class ScaledDirectSolver : public LinearSolver {
 public:
     explicit ScaledDirectSolver(const SolverOptions& options) : options_(options) {}
     void factorize(const CsrMatrix& A, MatrixKind kind, std::span<const RowPoint> rowPoints = {}) final;
+    // The same with S given (diagonalScalingOf's, computed by the caller): no second pass over A.
+    void factorizeWith(const CsrMatrix& A, std::vector<double> scale, MatrixKind kind,
+                       std::span<const RowPoint> rowPoints = {});
     double solve(std::span<double> rhs) final;
     // v <- (S A S)^-1 v with the factors alone: no refinement, no residual, no log (a
     // preconditioner's application to the scaled system).

@@ -237,12 +237,7 @@ private:
     // FILTRAGE_MATRICE is on, else empty.
     std::vector<double> filterDiagonal(const CsrMatrix& A) const {
         if (!(options_.matrixFilter > 0.0)) return {};
-        std::vector<double> d = options_.distributed ? summedDiagonal(A) : std::vector<double>(size_t(A.rows), 0.0);
-        if (!options_.distributed)
-            for (int i = 0; i < A.rows; ++i) {
-                const long long k = A.find(i, i);
-                d[size_t(i)] = k >= 0 ? A.values[size_t(k)] : 0.0;
-            }
+        std::vector<double> d = options_.distributed ? summedDiagonal(A) : diagonalOf(A);
         for (double& v : d) v = std::abs(v);
         return d;
     }
@@ -392,8 +387,9 @@ private:
         if (mode == "EVAL" || ooc || mode == "IN_CORE")
             msg().infof(
                 "    GESTION_MEMOIRE='{}': MUMPS estimates {:.0f} MB in core (INFOG(17)), {:.0f} MB out of core "
-                "(INFOG(27)); {:.0f} MB available",
-                mode, inCore, outOfCore, available);
+                "(INFOG(27)); {:.0f} MB available; the analysis predicts {:.3e} flops (RINFOG(1)), {:.4g} factor "
+                "entries (INFOG(20))",
+                mode, inCore, outOfCore, available, predictedFlops_, mumpsCount(id_.infog[19]));
         if (mode == "EVAL")
             throw UserError(fmt::format(
                 "SOLVEUR/GESTION_MEMOIRE='EVAL': the memory estimates of MUMPS for this system of {} unknowns are in "

@@ -210,7 +210,7 @@ private:
         if (usesFactors(options_)) {
             SolverOptions f = factorOptions(options_);
             factors_.factors = makeMumpsFactors(f);
-            factors_.factors->factorize(*A_, kind_, rowPoints_);  // S A S, S as scale_
+            factors_.factors->factorizeWith(*A_, scale_, kind_, rowPoints_);  // S A S
             factors_.applications = 0, factors_.seconds = 0.0;
             check(PCSetType(pc, PCSHELL), "PCSetType");
             check(PCShellSetContext(pc, &factors_), "PCShellSetContext");

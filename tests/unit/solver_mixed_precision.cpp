@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <regex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -174,5 +175,17 @@ TEST(SolverMixedPrecision, GestionMemoireEvalGivesTheEstimatesThenStops) {
     } catch (const UserError& e) {
         EXPECT_NE(std::string(e.what()).find("GESTION_MEMOIRE='EVAL'"), std::string::npos) << e.what();
     }
-    EXPECT_NE(msg().messText().substr(from).find("MB in core (INFOG(17))"), std::string::npos);
+    const std::string evalText = msg().messText().substr(from);
+    EXPECT_NE(evalText.find("MB in core (INFOG(17))"), std::string::npos);
+    // The analysis' prediction is given too, the same as a run that factorises prints.
+    const std::regex predicted(R"(([0-9.]+e[+-][0-9]+) (flops )?\(RINFOG\(1\)\))");
+    std::smatch evalFlops, runFlops;
+    ASSERT_TRUE(std::regex_search(evalText, evalFlops, predicted)) << evalText;
+    o.memory = "AUTO";
+    const size_t runFrom = msg().messText().size();
+    makeLinearSolver(o)->factorize(A, MatrixKind::SymmetricPositiveDefinite);
+    const std::string runText = msg().messText().substr(runFrom);
+    ASSERT_TRUE(std::regex_search(runText, runFlops, predicted)) << runText;
+    EXPECT_GT(std::stod(evalFlops[1]), 0.0);
+    EXPECT_EQ(evalFlops[1].str(), runFlops[1].str());
 }
