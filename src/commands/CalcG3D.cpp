@@ -78,13 +78,15 @@ ConceptPtr calcG3D(const KeywordSet& kw, const Result& result, const xfem::Crack
     }
     if (smoothing == fracture::GSmoothing::Legendre && numeFond >= 1 && size_t(numeFond) <= crack.fronts.size() &&
         crack.fronts[size_t(numeFond - 1)].closed)
-        throw UserError(fmt::format("{}: front {} of crack {} is closed: LEGENDRE smoothing needs an open front, give "
-                                    "LISSAGE_THETA='LAGRANGE' (code_aster's RUPTURE0_90)",
-                                    lissage.pathOf("LISSAGE_THETA"), numeFond, crack.name));
+        throw UserError(
+            fmt::format("{}: front {} of crack {} is closed: LEGENDRE smoothing needs an open front, give "
+                        "LISSAGE_THETA='LAGRANGE' (code_aster's RUPTURE0_90)",
+                        lissage.pathOf("LISSAGE_THETA"), numeFond, crack.name));
     const auto setup = fracture::frontGSetup(mesh, crack, numeFond, radii, smoothing, degree);
     if (!radii)
-        msg().infof("    R_INF and R_SUP not given: 2 and 4 times the largest tip cell size along the front: {:.6e}, {:.6e}",
-                    setup.rInf, setup.rSup);
+        msg().infof(
+            "    R_INF and R_SUP not given: 2 and 4 times the largest tip cell size along the front: {:.6e}, {:.6e}",
+            setup.rInf, setup.rSup);
     msg().infof("    front {} of {}: {} points, length {:.6e}, {} theta fields ({}), crown R_INF {:.6e} R_SUP {:.6e}",
                 numeFond, crack.name, setup.front.points.size(), setup.front.abscissa.back(), setup.thetas.size(),
                 lissage.text("LISSAGE_THETA"), setup.rInf, setup.rSup);

@@ -25,8 +25,8 @@ FrontGSetup frontGSetup(const Mesh& mesh, const xfem::Crack& crack, int numeFond
     if (smoothing == GSmoothing::Legendre) {
         for (int k = 0; k <= degree; ++k)
             setup.thetas.push_back(frontTheta(mesh, front, nodes, gt,
-                                              legendrePolynomial(front.abscissa, front.abscissa.back(), k),
-                                              setup.rInf, setup.rSup));
+                                              legendrePolynomial(front.abscissa, front.abscissa.back(), k), setup.rInf,
+                                              setup.rSup));
     } else {
         for (size_t k = 0; k < front.points.size(); ++k)
             setup.thetas.push_back(frontTheta(mesh, front, nodes, gt, lagrangeHat(front, k), setup.rInf, setup.rSup));

@@ -122,7 +122,8 @@ std::vector<FrontValues> legendreAlongFront(const std::vector<FrontValues>& inte
             put(out[i], v);
         }
     };
-    for (Member m : kMembers) project([&](const FrontValues& f) { return f.*m; }, [&](FrontValues& f, double v) { f.*m = v; });
+    for (Member m : kMembers)
+        project([&](const FrontValues& f) { return f.*m; }, [&](FrontValues& f, double v) { f.*m = v; });
     for (size_t c = 0; c < 3; ++c)
         project([&](const FrontValues& f) { return f.irwin[c]; }, [&](FrontValues& f, double v) { f.irwin[c] = v; });
     for (auto& p : out) p.gIrwin = p.irwin[0] * p.irwin[0] + p.irwin[1] * p.irwin[1] + p.irwin[2] * p.irwin[2];
@@ -131,10 +132,8 @@ std::vector<FrontValues> legendreAlongFront(const std::vector<FrontValues>& inte
 
 std::vector<FrontValues> smoothAlongFront(std::vector<FrontValues> integrals, const std::vector<double>& abscissa,
                                           bool closed, GSmoothing smoothing, bool withK) {
-    if (smoothing == GSmoothing::Lagrange)
-        solveLagrange(integrals, abscissa, closed, withK);
-    else
-        solveLumped(integrals, abscissa, closed, withK);
+    if (smoothing == GSmoothing::Lagrange) solveLagrange(integrals, abscissa, closed, withK);
+    else solveLumped(integrals, abscissa, closed, withK);
     return integrals;
 }
 

@@ -57,7 +57,8 @@ double tipCellSize(const Mesh& mesh, const xfem::Crack& crack, const Vec3& x, co
         if (!holds(mesh, cell, x)) continue;
         const auto nodes = mesh.cellNodes(cell);
         for (const auto& edge : xfem::cellEdges(mesh.cellTypes[size_t(cell)])) {
-            const Vec3 d = difference(mesh.coords[size_t(nodes[size_t(edge[1])])], mesh.coords[size_t(nodes[size_t(edge[0])])]);
+            const Vec3 d =
+                difference(mesh.coords[size_t(nodes[size_t(edge[1])])], mesh.coords[size_t(nodes[size_t(edge[0])])]);
             size = std::max(size, std::abs(dot(d, e1)));
         }
     }
@@ -80,16 +81,18 @@ Front3D front3D(const Mesh& mesh, const xfem::Crack& crack, const std::vector<Ve
         const Vec3& p = front.points[i];
         const PointInCell at = locatePoint(mesh, p);
         if (at.cell < 0)
-            throw InternalError(fmt::format("front {} of crack {}: point {} lies in no cell", numeFond, crack.name, i + 1));
+            throw InternalError(
+                fmt::format("front {} of crack {}: point {} lies in no cell", numeFond, crack.name, i + 1));
         front.frames.push_back(frameAt(p, interpolated(mesh, at, grln), interpolated(mesh, at, grlt)));
         if (norm(front.frames.back().e1) == 0.0)
-            throw UserError(fmt::format("front {} of crack {}: the level sets have no gradient at front point {}, so "
-                                        "its local basis (BASEFOND) is undefined",
-                                        numeFond, crack.name, i + 1));
+            throw UserError(
+                fmt::format("front {} of crack {}: the level sets have no gradient at front point {}, so "
+                            "its local basis (BASEFOND) is undefined",
+                            numeFond, crack.name, i + 1));
         front.cellSize.push_back(tipCellSize(mesh, crack, p, front.frames.back().e1));
         if (!(front.cellSize.back() > 0))
-            throw InternalError(fmt::format("front {} of crack {}: no tip cell holds front point {}", numeFond,
-                                            crack.name, i + 1));
+            throw InternalError(
+                fmt::format("front {} of crack {}: no tip cell holds front point {}", numeFond, crack.name, i + 1));
     }
     return front;
 }

@@ -22,10 +22,10 @@
 namespace ma::fracture {
 
 struct Front3D {
-    std::vector<Vec3> points;         // in order (a closed front repeats its first point)
-    std::vector<double> abscissa;     // curvilinear abscissa from the first point
-    std::vector<FrontFrame> frames;   // e1 propagation, e2 normal (GRLTNO, GRLNNO at the point)
-    std::vector<double> cellSize;     // TAILLE_R: max over the tip cells holding the point of |edge . e1|
+    std::vector<Vec3> points;        // in order (a closed front repeats its first point)
+    std::vector<double> abscissa;    // curvilinear abscissa from the first point
+    std::vector<FrontFrame> frames;  // e1 propagation, e2 normal (GRLTNO, GRLNNO at the point)
+    std::vector<double> cellSize;    // TAILLE_R: max over the tip cells holding the point of |edge . e1|
     bool closed = false;
 };
 

@@ -140,8 +140,8 @@ TEST(FractureFront3D, FrontPointsFramesAndCellSizes) {
     std::vector<double> lsn, lst;
     for (const auto& x : mesh->coords) lsn.push_back(x[1] - kY0), lst.push_back(x[0] - kX0);
     const auto crack = xfem::buildCrackWithFront(mesh, lsn, lst);
-    const auto front = front3D(*mesh, *crack, xfem::nodalLevelSetGradient(*mesh, lsn),
-                               xfem::nodalLevelSetGradient(*mesh, lst), 1);
+    const auto front =
+        front3D(*mesh, *crack, xfem::nodalLevelSetGradient(*mesh, lsn), xfem::nodalLevelSetGradient(*mesh, lst), 1);
     ASSERT_EQ(front.points.size(), 5u);
     for (size_t i = 0; i < 5; ++i) {
         EXPECT_NEAR(front.points[i][0], kX0, 1e-12);
@@ -182,7 +182,8 @@ TEST(FractureFront3D, UniformKAtEveryFrontPoint) {
         const auto r = run(l, 20, 5, 0.2, 0.5, smoothing);
         ASSERT_EQ(r.values.size(), 6u);
         for (size_t i = 0; i < r.values.size(); ++i) {
-            SCOPED_TRACE(testing::Message() << "point " << i + 1 << " NO_NO " << (smoothing == GSmoothing::LagrangeNoNo));
+            SCOPED_TRACE(testing::Message()
+                         << "point " << i + 1 << " NO_NO " << (smoothing == GSmoothing::LagrangeNoNo));
             const auto& v = r.values[i];
             EXPECT_NEAR(v.K1, l.K1, 1e-6 * l.K1);
             EXPECT_NEAR(v.K2, l.K2, 1e-6 * l.K1);
@@ -191,9 +192,7 @@ TEST(FractureFront3D, UniformKAtEveryFrontPoint) {
             // LAGRANGE's Irwin components keep their end integrals (code_aster's gkmet3), which
             // take the free faces z = 0, 1 (mode III's shear there works on modes I and II's
             // displacement): its G_IRWIN is checked on mode I alone below.
-            if (smoothing == GSmoothing::LagrangeNoNo) {
-                EXPECT_NEAR(v.gIrwin, g, 1e-6 * g);
-            }
+            if (smoothing == GSmoothing::LagrangeNoNo) { EXPECT_NEAR(v.gIrwin, g, 1e-6 * g); }
         }
     }
 }
@@ -268,6 +267,40 @@ TEST(FractureFront3D, LinearKAlongTheFront) {
             EXPECT_NEAR(lagrange.values[i].K1, expected[i].K1, 3e-3 * l.K1);
             EXPECT_NEAR(lagrange.values[i].K2, expected[i].K2, tolerance * l.K1);
             EXPECT_NEAR(lagrange.values[i].K3, expected[i].K3, tolerance * l.K1);
+        }
+    }
+}
+
+// A closed front (the first point repeated at the end, code_aster's FONDFISS of a penny): the
+// hats of the first and last points are one function, the mass matrix wraps (gmatc3 / gmatl3), so
+// the integrals b_k = G int phi_k ds of a uniform G on an uneven polygon give G at every point with
+// both smoothings (no end rules on a closed front).
+TEST(FractureFront3D, ClosedFrontSmoothing) {
+    Front3D front;
+    front.closed = true;
+    const std::vector<double> s = {0.0, 0.3, 0.5, 0.9, 1.2, 1.3, 1.7};  // the last point is the first
+    front.abscissa = s;
+    front.points.resize(s.size());
+    const auto first = lagrangeHat(front, 0), last = lagrangeHat(front, s.size() - 1);
+    EXPECT_EQ(first, last);
+    EXPECT_EQ(first.front(), 1.0);
+    EXPECT_EQ(first.back(), 1.0);
+    const double G = 3.5, K1 = -2.0;
+    std::vector<FrontValues> integrals(s.size());
+    const size_t n = s.size();
+    for (size_t k = 0; k < n; ++k) {
+        // int phi_k ds: half of each neighbouring segment; the joined first/last point takes both ends.
+        double w = 0.0;
+        if (k > 0) w += (s[k] - s[k - 1]) / 2;
+        if (k + 1 < n) w += (s[k + 1] - s[k]) / 2;
+        if (k == 0 || k + 1 == n) w = (s[1] - s[0]) / 2 + (s[n - 1] - s[n - 2]) / 2;
+        integrals[k].G = G * w, integrals[k].K1 = K1 * w;
+    }
+    for (auto smoothing : {GSmoothing::Lagrange, GSmoothing::LagrangeNoNo}) {
+        const auto v = smoothAlongFront(integrals, s, true, smoothing, true);
+        for (size_t i = 0; i < n; ++i) {
+            EXPECT_NEAR(v[i].G, G, 1e-12);
+            EXPECT_NEAR(v[i].K1, K1, 1e-12);
         }
     }
 }
