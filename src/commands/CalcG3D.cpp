@@ -4,9 +4,12 @@
 // [K1 K2 G_IRWIN K3]. The engine is src/fracture/FrontG (docs/cracks.md).
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "commands/FractureKeywords.hpp"
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
+#include "fracture/FractureMessages.hpp"
 #include "fracture/FrontG.hpp"
 #include "post/Table.hpp"
 
@@ -83,10 +86,14 @@ ConceptPtr calcG3D(const KeywordSet& kw, const Result& result, const xfem::Crack
                         "LISSAGE_THETA='LAGRANGE' (code_aster's RUPTURE0_90)",
                         lissage.pathOf("LISSAGE_THETA"), numeFond, crack.name));
     const auto setup = fracture::frontGSetup(mesh, crack, numeFond, radii, smoothing, degree);
-    if (!radii)
+    if (!radii) {
+        const auto [smallest, largest] =
+            std::minmax_element(setup.front.cellSize.begin(), setup.front.cellSize.end());
+        if (*largest > 2 * *smallest) msg().alarm(RUPTURE1_16, *smallest, *largest);
         msg().infof(
             "    R_INF and R_SUP not given: 2 and 4 times the largest tip cell size along the front: {:.6e}, {:.6e}",
             setup.rInf, setup.rSup);
+    }
     msg().infof("    front {} of {}: {} points, length {:.6e}, {} theta fields ({}), crown R_INF {:.6e} R_SUP {:.6e}",
                 numeFond, crack.name, setup.front.points.size(), setup.front.abscissa.back(), setup.thetas.size(),
                 lissage.text("LISSAGE_THETA"), setup.rInf, setup.rSup);
