@@ -6,15 +6,13 @@ namespace ma::catalog_entries {
 
 void CALC_G(Catalog& c) {
     const std::string orders = "miniaster's CALC_G selects the orders by TOUT_ORDRE, NUME_ORDRE or INST";
-    const std::string points = "miniaster's 3D CALC_G takes the front points of the crack (FONDFISS) as they are";
     c.add(cmd("CALC_G", kTable)
               .keywords(join({
                   {fact("THETA")
                        .mandatory()
                        .keywords(join({{CO("FISSURE", {kCrack}).mandatory(), I("NUME_FOND").def(1), R("R_INF"),
-                                        R("R_SUP")},
+                                        R("R_SUP"), I("NB_POINT_FOND")},
                                        unsupported({"FOND_FISS"}, "miniaster's cracks are fiss_xfem (FISSURE)"),
-                                       unsupported({"NB_POINT_FOND"}, points),
                                        unsupported({"R_INF_FO", "R_SUP_FO"},
                                                    "R_INF and R_SUP are real values in miniaster")}))
                        .rules({presentPresent({"R_INF", "R_SUP"})}),

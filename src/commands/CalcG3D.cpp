@@ -85,10 +85,17 @@ ConceptPtr calcG3D(const KeywordSet& kw, const Result& result, const xfem::Crack
             fmt::format("{}: front {} of crack {} is closed: LEGENDRE smoothing needs an open front, give "
                         "LISSAGE_THETA='LAGRANGE' (code_aster's RUPTURE0_90)",
                         lissage.pathOf("LISSAGE_THETA"), numeFond, crack.name));
-    const auto setup = fracture::frontGSetup(mesh, crack, numeFond, radii, smoothing, degree);
+    size_t points = 0;
+    if (theta.has("NB_POINT_FOND")) {
+        const auto n = theta.integer("NB_POINT_FOND");
+        if (n < 2)
+            throw UserError(
+                fmt::format("{}: NB_POINT_FOND must be at least 2, here {}", theta.pathOf("NB_POINT_FOND"), n));
+        points = size_t(n);
+    }
+    const auto setup = fracture::frontGSetup(mesh, crack, numeFond, radii, smoothing, degree, points);
     if (!radii) {
-        const auto [smallest, largest] =
-            std::minmax_element(setup.front.cellSize.begin(), setup.front.cellSize.end());
+        const auto [smallest, largest] = std::minmax_element(setup.front.cellSize.begin(), setup.front.cellSize.end());
         if (*largest > 2 * *smallest) msg().alarm(RUPTURE1_16, *smallest, *largest);
         msg().infof(
             "    R_INF and R_SUP not given: 2 and 4 times the largest tip cell size along the front: {:.6e}, {:.6e}",

@@ -7,12 +7,14 @@
 namespace ma::fracture {
 
 FrontGSetup frontGSetup(const Mesh& mesh, const xfem::Crack& crack, int numeFond,
-                        std::optional<std::pair<double, double>> radii, GSmoothing smoothing, int degree) {
+                        std::optional<std::pair<double, double>> radii, GSmoothing smoothing, int degree,
+                        size_t points) {
     FrontGSetup setup;
     setup.smoothing = smoothing;
     const auto gn = xfem::nodalLevelSetGradient(mesh, crack.lsn);
     const auto gt = xfem::nodalLevelSetGradient(mesh, crack.lst);
     setup.front = front3D(mesh, crack, gn, gt, numeFond);
+    if (points > 0) setup.front = redistributed(setup.front, points);
     if (radii) {
         setup.rInf = radii->first, setup.rSup = radii->second;
     } else {

@@ -23,9 +23,10 @@ struct FrontGSetup {
 };
 
 // `radii`: R_INF, R_SUP when given; otherwise 2 and 4 times the largest TAILLE_R of the front's
-// points (gveri3). `degree`: LEGENDRE's DEGRE.
+// points (gveri3). `degree`: LEGENDRE's DEGRE; `points`: NB_POINT_FOND (0: the front's own).
 FrontGSetup frontGSetup(const Mesh& mesh, const xfem::Crack& crack, int numeFond,
-                        std::optional<std::pair<double, double>> radii, GSmoothing smoothing, int degree);
+                        std::optional<std::pair<double, double>> radii, GSmoothing smoothing, int degree,
+                        size_t points = 0);
 
 // True where a cell of the mesh is read: some theta field varies on it.
 bool anyThetaVaries(const Mesh& mesh, int cell, const FrontGSetup& setup);

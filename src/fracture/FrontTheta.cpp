@@ -97,6 +97,30 @@ Front3D front3D(const Mesh& mesh, const xfem::Crack& crack, const std::vector<Ve
     return front;
 }
 
+Front3D redistributed(const Front3D& front, size_t count) {
+    Front3D out;
+    out.closed = front.closed;
+    out.cellSize = front.cellSize;
+    const double length = front.abscissa.back();
+    auto mix = [](const Vec3& a, const Vec3& b, double t) {
+        return Vec3{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+    };
+    size_t k = 1;
+    for (size_t i = 0; i < count; ++i) {
+        const double s = i + 1 == count ? length : double(i) * length / double(count - 1);
+        while (k + 1 < front.abscissa.size() && front.abscissa[k] <= s) ++k;
+        const double s1 = front.abscissa[k - 1], s2 = front.abscissa[k];
+        const double t = i == 0 ? 0.0 : (i + 1 == count ? 1.0 : (s - s1) / (s2 - s1));
+        const size_t a = i + 1 == count ? front.points.size() - 2 : k - 1;
+        const size_t b = a + 1;
+        out.points.push_back(mix(front.points[a], front.points[b], t));
+        const FrontFrame &fa = front.frames[a], &fb = front.frames[b];
+        out.frames.push_back({out.points.back(), mix(fa.e1, fb.e1, t), mix(fa.e2, fb.e2, t), mix(fa.e3, fb.e3, t)});
+        out.abscissa.push_back(s);
+    }
+    return out;
+}
+
 FrontProjection projectOnFront(const Front3D& front, const Vec3& x) {
     const double eps = 1e-12;  // gcour3's tolerance on the segment parameter
     FrontProjection best;

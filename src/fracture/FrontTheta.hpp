@@ -33,6 +33,12 @@ struct Front3D {
 Front3D front3D(const Mesh& mesh, const xfem::Crack& crack, const std::vector<Vec3>& grln,
                 const std::vector<Vec3>& grlt, int numeFond);
 
+// NB_POINT_FOND (code_aster's xrecff): `count` points evenly spaced in abscissa on the front
+// polyline, the first and last kept, coordinates and frames interpolated linearly between the two
+// original points around (the frames are not renormalised, as code_aster's BASEFOND); TAILLE_R
+// keeps the original points' (the default crown takes their largest).
+Front3D redistributed(const Front3D& front, size_t count);
+
 // The nearest point of the front polyline to x: segment j (0-based), parameter s and distance.
 struct FrontProjection {
     size_t segment = 0;

@@ -305,4 +305,28 @@ TEST(FractureFront3D, ClosedFrontSmoothing) {
     }
 }
 
+// NB_POINT_FOND (xrecff): evenly spaced abscissae on the polyline, ends kept, points and frames
+// interpolated linearly on the original segment around each.
+TEST(FractureFront3D, NbPointFondRedistributes) {
+    Front3D front;
+    front.points = {{0, 0, 0}, {0.1, 0, 0}, {0.1, 0.5, 0}, {0.1, 0.5, 0.4}};
+    front.abscissa = {0.0, 0.1, 0.6, 1.0};
+    for (size_t i = 0; i < 4; ++i) {
+        FrontFrame f;
+        f.origin = front.points[i], f.e1 = {double(i), 0, 0}, f.e2 = {0, 1, 0}, f.e3 = {0, 0, 1};
+        front.frames.push_back(f);
+    }
+    front.cellSize = {0.1, 0.2, 0.3, 0.4};
+    const auto r = redistributed(front, 5);
+    ASSERT_EQ(r.points.size(), 5u);
+    const std::vector<Vec3> expected = {{0, 0, 0}, {0.1, 0.15, 0}, {0.1, 0.4, 0}, {0.1, 0.5, 0.15}, {0.1, 0.5, 0.4}};
+    const std::vector<double> e1 = {0.0, 1.3, 1.8, 2.375, 3.0};
+    for (size_t i = 0; i < 5; ++i) {
+        EXPECT_NEAR(r.abscissa[i], 0.25 * double(i), 1e-15);
+        for (size_t c = 0; c < 3; ++c) EXPECT_NEAR(r.points[i][c], expected[i][c], 1e-15);
+        EXPECT_NEAR(r.frames[i].e1[0], e1[i], 1e-14);
+    }
+    EXPECT_EQ(r.cellSize, front.cellSize);
+}
+
 }  // namespace
