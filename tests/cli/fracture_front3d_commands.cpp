@@ -11,8 +11,7 @@ namespace {
 
 TEST(FractureFront3DCommands, LegendreThetaWithLagrangeGIsRefused) {
     const auto dir = ma::test::freshDir();
-    const std::string comm =
-        ma::test::readText(std::string(MINIASTER_SOURCE_DIR) + "/astest/g3d_ssnv185c_faces.comm");
+    const std::string comm = ma::test::readText(std::string(MINIASTER_SOURCE_DIR) + "/astest/g3d_ssnv185c_faces.comm");
     const auto cut = comm.find("# The edge-cracked strip");
     ASSERT_NE(cut, std::string::npos);
     ma::test::writeText(dir / "t.comm",
