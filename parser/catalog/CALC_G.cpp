@@ -6,15 +6,13 @@ namespace ma::catalog_entries {
 
 void CALC_G(Catalog& c) {
     const std::string orders = "miniaster's CALC_G selects the orders by TOUT_ORDRE, NUME_ORDRE or INST";
-    const std::string threeD = "smoothing along a 3D front is not implemented yet (issue 26)";
     c.add(cmd("CALC_G", kTable)
               .keywords(join({
                   {fact("THETA")
                        .mandatory()
                        .keywords(join({{CO("FISSURE", {kCrack}).mandatory(), I("NUME_FOND").def(1), R("R_INF"),
-                                        R("R_SUP")},
+                                        R("R_SUP"), I("NB_POINT_FOND")},
                                        unsupported({"FOND_FISS"}, "miniaster's cracks are fiss_xfem (FISSURE)"),
-                                       unsupported({"NB_POINT_FOND"}, threeD),
                                        unsupported({"R_INF_FO", "R_SUP_FO"},
                                                    "R_INF and R_SUP are real values in miniaster")}))
                        .rules({presentPresent({"R_INF", "R_SUP"})}),
@@ -24,12 +22,10 @@ void CALC_G(Catalog& c) {
                        .byDefault()
                        .keywords({TXM("LISSAGE_THETA")
                                       .into({"LEGENDRE", "LAGRANGE"})
-                                      .def("LEGENDRE")
-                                      .notSupported({"LAGRANGE"}),
+                                      .def("LEGENDRE"),
                                   TXM("LISSAGE_G")
                                       .into({"LEGENDRE", "LAGRANGE", "LAGRANGE_NO_NO"})
-                                      .def("LEGENDRE")
-                                      .notSupported({"LAGRANGE", "LAGRANGE_NO_NO"}),
+                                      .def("LEGENDRE"),
                                   bloc(when("LISSAGE_THETA", {"LEGENDRE"}),
                                        {I("DEGRE").intoInt({0, 1, 2, 3, 4, 5, 6, 7}).def(5)})}),
                    TXM("OPTION").into({"CALC_G", "CALC_K_G"}).def("CALC_G"), titre(), info()},

@@ -1,5 +1,5 @@
 // CALC_G THETA=_F(FISSURE=..., NUME_FOND, R_INF, R_SUP), OPTION='CALC_G' / 'CALC_K_G': the energy
-// release rate (and K1, K2) at a 2D crack tip of an X-FEM result by the theta method, code_aster's
+// release rate (and K1, K2) at a 2D crack tip (3D fronts: CalcG3D.cpp) of an X-FEM result by the theta method, code_aster's
 // table (cgcrtb, cakg2d): NUME_FOND NUME_ORDRE INST COOR_X COOR_Y G [K1 K2 G_IRWIN], a row per order.
 // The engine is src/fracture (docs/cracks.md).
 #include <fmt/format.h>
@@ -46,6 +46,7 @@ ConceptPtr calcG(const KeywordSet& kw, CommandContext&) {
     const KeywordSet& theta = kw.factor("THETA").front();
     auto crack = theta.object<xfem::Crack>("FISSURE");
     checkCrackResult(*result, *crack, theta.pathOf("FISSURE"), "CALC_G", true);
+    if (result->model->dim == 3) return calcG3D(kw, *result, *crack);
     const Mesh& mesh = *result->model->mesh;
     const int numeFond = int(theta.integer("NUME_FOND"));
     const auto grlt = xfem::nodalLevelSetGradient(mesh, crack->lst);

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "core/Concept.hpp"
 #include "fe/Result.hpp"
 #include "parser/KeywordTree.hpp"
 #include "xfem/Crack.hpp"
@@ -12,9 +13,13 @@ namespace ma {
 
 std::vector<const ResultStep*> fractureSteps(const Result& result, const KeywordSet& kw);
 
-// The crack must be one of the result's model's and have a front, the result be 2D; for the theta
+// The crack must be one of the result's model's and have a front, the result be 2D unless by the
+// theta method (CALC_G: 2D and 3D); for the theta
 // method (`thetaMethod`) also without loads on the lips or volume forces (terms not computed).
 void checkCrackResult(const Result& result, const xfem::Crack& crack, const std::string& keyword,
                       const std::string& command, bool thetaMethod);
+
+// CALC_G on a 3D crack's front (CalcG3D.cpp).
+ConceptPtr calcG3D(const KeywordSet& kw, const Result& result, const xfem::Crack& crack);
 
 }  // namespace ma

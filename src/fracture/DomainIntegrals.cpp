@@ -87,22 +87,44 @@ double interaction(Mode mode, const DomainPoint& p, const FrontFrame& f, const E
 
 }  // namespace
 
-FrontValues domainIntegrals(const std::vector<DomainPoint>& points, const FrontFrame& frame, Modelisation modelisation,
-                            int dim, bool withK) {
+namespace {
+
+template <class FrameOf>
+FrontValues integrate(const std::vector<DomainPoint>& points, const FrameOf& frameOf, Modelisation modelisation,
+                      int dim, bool withK) {
     FrontValues out;
     ElasticConstants c{};
-    for (const auto& p : points) {
+    for (size_t q = 0; q < points.size(); ++q) {
+        const DomainPoint& p = points[q];
         c = ElasticConstants::of(p.E, p.nu, modelisation);
         Tensor s;
         stress(p.gradU, c, dim, s);
         out.G += p.weight * (contract(s, p.gradU, p, dim) - 0.5 * doubleDot(s, p.gradU, dim) * divergence(p, dim));
         if (!withK) continue;
-        out.K1 += p.weight * c.eStar / 2 * interaction(Mode::I, p, frame, c, s, dim);
-        out.K2 += p.weight * c.eStar / 2 * interaction(Mode::II, p, frame, c, s, dim);
-        if (dim == 3) out.K3 += p.weight * c.mu * interaction(Mode::III, p, frame, c, s, dim);
+        const FrontFrame& frame = frameOf(q);
+        const double k1 = p.weight * c.eStar / 2 * interaction(Mode::I, p, frame, c, s, dim);
+        const double k2 = p.weight * c.eStar / 2 * interaction(Mode::II, p, frame, c, s, dim);
+        const double k3 = dim == 3 ? p.weight * c.mu * interaction(Mode::III, p, frame, c, s, dim) : 0.0;
+        out.K1 += k1, out.K2 += k2, out.K3 += k3;
+        out.irwin[0] += k1 / std::sqrt(c.eStar), out.irwin[1] += k2 / std::sqrt(c.eStar);
+        out.irwin[2] += k3 / std::sqrt(2 * c.mu);
     }
     if (c.eStar > 0) out.gIrwin = (out.K1 * out.K1 + out.K2 * out.K2) / c.eStar + out.K3 * out.K3 / (2 * c.mu);
     return out;
+}
+
+}  // namespace
+
+FrontValues domainIntegrals(const std::vector<DomainPoint>& points, const FrontFrame& frame, Modelisation modelisation,
+                            int dim, bool withK) {
+    return integrate(
+        points, [&](size_t) -> const FrontFrame& { return frame; }, modelisation, dim, withK);
+}
+
+FrontValues domainIntegrals(const std::vector<DomainPoint>& points, std::span<const FrontFrame> frames,
+                            Modelisation modelisation, int dim, bool withK) {
+    return integrate(
+        points, [&](size_t q) -> const FrontFrame& { return frames[q]; }, modelisation, dim, withK);
 }
 
 }  // namespace ma::fracture

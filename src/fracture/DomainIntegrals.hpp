@@ -9,6 +9,8 @@
 // (no body force, unloaded lips, linear elasticity, small strains), with the auxiliary Williams
 // fields ua of unit K: K1 = E* I(mode I) / 2, K2 = E* I(mode II) / 2, K3 = mu I(mode III),
 // E* = E / (1 - nu^2) in plane strain and 3D, E in plane stress.
+#include <array>
+#include <span>
 #include <vector>
 
 #include "core/Vec3.hpp"
@@ -45,11 +47,19 @@ struct ElasticConstants {
 struct FrontValues {
     double G = 0.0, K1 = 0.0, K2 = 0.0, K3 = 0.0;
     double gIrwin = 0.0;  // (K1^2 + K2^2) / E* + K3^2 / (2 mu), at the last point's material
+    // K1 / sqrt(E*), K2 / sqrt(E*), K3 / sqrt(2 mu) summed point by point with each point's
+    // material (code_aster's G_IRWIN components, smoothed along a 3D front before squaring).
+    std::array<double, 3> irwin{};
 };
 
 // The integrals over `points` for the front point of `frame`; `dim` = 2 or 3 (index ranges).
 // `withK`: the interaction integrals too (OPTION='CALC_K_G').
 FrontValues domainIntegrals(const std::vector<DomainPoint>& points, const FrontFrame& frame, Modelisation modelisation,
                             int dim, bool withK);
+
+// The same with the auxiliary fields written in a frame of each point (`frames[p]`, code_aster's
+// BASLOC interpolated at the point in 3D, coor_cyl) instead of one front point's.
+FrontValues domainIntegrals(const std::vector<DomainPoint>& points, std::span<const FrontFrame> frames,
+                            Modelisation modelisation, int dim, bool withK);
 
 }  // namespace ma::fracture

@@ -62,3 +62,85 @@ std::vector<DomainPoint> domainPoints(const Discretisation& space, const std::ve
 }
 
 }  // namespace ma::fracture
+
+namespace ma::fracture {
+
+namespace {
+
+Vec3 unit(const Vec3& v) {
+    const double l = norm(v);
+    return l > 0 ? Vec3{v[0] / l, v[1] / l, v[2] / l} : Vec3{};
+}
+
+// BASLOC at a point: the nodal origins and directions interpolated, then made orthonormal.
+FrontFrame interpolatedFrame(const std::vector<xfem::FrontBasis>& basloc, std::span<const int> nodes,
+                             std::span<const double> N) {
+    Vec3 o{}, e1{}, e2{};
+    for (size_t a = 0; a < nodes.size(); ++a) {
+        const auto& b = basloc[size_t(nodes[a])];
+        for (size_t c = 0; c < 3; ++c) o[c] += N[a] * b.origin[c], e1[c] += N[a] * b.e1[c], e2[c] += N[a] * b.e2[c];
+    }
+    FrontFrame f;
+    f.origin = o;
+    f.e2 = unit(e2);
+    const double along = dot(e1, f.e2);
+    f.e1 = unit({e1[0] - along * f.e2[0], e1[1] - along * f.e2[1], e1[2] - along * f.e2[2]});
+    f.e3 = cross(f.e1, f.e2);
+    return f;
+}
+
+}  // namespace
+
+void domainPoints3D(const Discretisation& space, const std::vector<double>& u,
+                    const std::vector<std::vector<Vec3>>& thetas, const std::vector<double>& lsn,
+                    const std::vector<xfem::FrontBasis>& basloc, const FieldPointSink& sink) {
+    const Mesh& mesh = space.mesh();
+    std::vector<std::vector<DomainPoint>> points(thetas.size());
+    std::vector<std::vector<FrontFrame>> frames(thetas.size());
+    ElementIntegration scratch;
+    PointGeometry geo;
+    std::vector<int> dofs;
+    std::vector<size_t> fields;
+    for (size_t e = 0; e < space.elementCount(); ++e) {
+        const int cell = space.model().elements[e].cell;
+        fields.clear();
+        for (size_t k = 0; k < thetas.size(); ++k)
+            if (thetaVaries(mesh, cell, thetas[k])) fields.push_back(k);
+        if (fields.empty()) continue;
+        const Material& material = space.material().at(cell);
+        const ElementIntegration& ei = space.integrationOf(e, scratch);
+        computePointGeometry(mesh, cell, 3, false, ei, geo);
+        localDofs(mesh, space.numbering(), ei, dofs);
+        const auto nodes = mesh.cellNodes(cell);
+        const size_t n = nodes.size();
+        for (size_t k : fields) points[k].clear(), frames[k].clear();
+        for (size_t p = 0; p < ei.refPoints.size(); ++p) {
+            DomainPoint q;
+            q.weight = geo.weight[p];
+            q.xyz = geo.xyz[p];
+            q.E = material.E;
+            q.nu = material.nu;
+            displacementGradient(ei, geo, dofs, u, p, 3, q.gradU);
+            const std::span<const double> N(&geo.N[p * n], n);
+            double levelSet = 0.0;
+            for (size_t a = 0; a < n; ++a) levelSet += N[a] * lsn[size_t(nodes[a])];
+            q.side = levelSet > 0 ? 1.0 : (levelSet < 0 ? -1.0 : 0.0);
+            const FrontFrame frame = interpolatedFrame(basloc, nodes, N);
+            for (size_t k : fields) {
+                DomainPoint r = q;
+                for (size_t a = 0; a < n; ++a) {
+                    const Vec3& t = thetas[k][size_t(nodes[a])];
+                    for (size_t i = 0; i < 3; ++i) {
+                        r.theta[i] += N[a] * t[i];
+                        for (size_t j = 0; j < 3; ++j) r.gradTheta[i][j] += geo.gradN[(p * n + a) * 3 + j] * t[i];
+                    }
+                }
+                points[k].push_back(r);
+                frames[k].push_back(frame);
+            }
+        }
+        for (size_t k : fields) sink(k, points[k], frames[k]);
+    }
+}
+
+}  // namespace ma::fracture

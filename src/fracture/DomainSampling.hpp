@@ -2,11 +2,13 @@
 // The solution at the integration points of the cells where theta varies (elsewhere grad theta = 0):
 // integrals of CALC_G read. The displacement gradient comes from fe's element description (every
 // slot and multiplier of an X-FEM element: Heaviside sides, crack-tip functions), in one place.
+#include <functional>
 #include <vector>
 
 #include "core/Vec3.hpp"
 #include "fe/Discretisation.hpp"
 #include "fracture/DomainIntegrals.hpp"
+#include "xfem/TipEnrichment.hpp"
 
 namespace ma::fracture {
 
@@ -21,5 +23,16 @@ bool thetaVaries(const Mesh& mesh, int cell, const std::vector<Vec3>& theta);
 std::vector<DomainPoint> domainPoints(const Discretisation& space, const std::vector<double>& u,
                                       const std::vector<Vec3>& theta, const std::vector<double>& lsn,
                                       double positiveLsnSide);
+
+// The points of several theta fields at once (a 3D front's, one per front point or degree), each
+// with its frame: the nodal BASLOC `basloc` interpolated at the point, e2 normalised, e1 made
+// orthogonal to it, e3 = e1 x e2 (code_aster's coor_cyl / xbasgl); LSN > 0 is the e2 side. The
+// cells are read once; `sink(k, points, frames)` gets field k's points cell by cell (crack-tip cells
+// hold ~10^5 points: kept, they would double the peak memory of ssnv185c).
+using FieldPointSink =
+    std::function<void(size_t field, const std::vector<DomainPoint>& points, const std::vector<FrontFrame>& frames)>;
+void domainPoints3D(const Discretisation& space, const std::vector<double>& u,
+                    const std::vector<std::vector<Vec3>>& thetas, const std::vector<double>& lsn,
+                    const std::vector<xfem::FrontBasis>& basloc, const FieldPointSink& sink);
 
 }  // namespace ma::fracture
