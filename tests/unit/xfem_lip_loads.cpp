@@ -1,0 +1,170 @@
+// Loads on the crack-tip enriched cells of a crack with a front (docs/cracks.md, "Loads on tip
+// cells"): the lips' points (each lip's area, clipped at the front), the external forces of AFFE_CHAR_MECA's lip pressure (PRES_REP FISSURE) and boundary
+// pressure (PRES_REP on faces whose nodes carry K1, K2[, K3]) against closed forms. Every node is given the
+// exact Williams field (modes I + II + III, plane strain) as in astest/xfem_tip_williams_*: DX, DY
+// [, DZ] its nodal value, H1 the jump the shifted enrichment implies, K1, K2[, K3] the factors; the
+// field lies in the discrete space, so the work f . U of the loads is an integral of the exact field:
+// on the lips p times the opening, p K1 (kappa + 1) / mu / sqrt(2 pi) (2/3) a^(3/2) per unit
+// thickness (a the lips' length behind the front), modes II and III doing no work. Measured: the
+// lip work within 2.6e-15 relative on QUAD4, TRIA3, HEXA8, TETRA4 (so to 1e-13 here), modes II + III
+// below 1e-17; the boundary pressure within 6.0e-12 (the skin elements' Gauss rule on the smooth
+// field; 1e-10 here).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "fe/Discretisation.hpp"
+#include "fe/ExternalForces.hpp"
+#include "fe_test_support.hpp"
+#include "xfem/TipEnrichment.hpp"
+#include "xfem_test_meshes.hpp"
+
+namespace {
+
+using namespace ma;
+
+constexpr double kE = 2.0e5, kNu = 0.3, kXt = 0.29, kYt = 0.37;
+constexpr double kMu = kE / (2 * (1 + kNu)), kKappa = 3 - 4 * kNu;
+
+struct Factors {
+    double k1 = 0, k2 = 0, k3 = 0;
+};
+
+// Williams' displacement of modes I, II (plane strain) and III at (x, y), front along z at (kXt, kYt).
+Vec3 williams(double x, double y, const Factors& k) {
+    const double r = std::hypot(x - kXt, y - kYt), t = std::atan2(y - kYt, x - kXt);
+    const double s = std::sqrt(r / (2 * std::numbers::pi)) / (2 * kMu);
+    const double c1 = s * k.k1 * (kKappa - std::cos(t)), c2 = s * k.k2;
+    return {c1 * std::cos(t / 2) + c2 * std::sin(t / 2) * (kKappa + 2 + std::cos(t)),
+            c1 * std::sin(t / 2) + c2 * std::cos(t / 2) * (2 - kKappa - std::cos(t)), s * k.k3 * 4 * std::sin(t / 2)};
+}
+
+struct Scene {
+    std::shared_ptr<Mesh> mesh;
+    std::shared_ptr<xfem::Crack> crack;
+    std::shared_ptr<Model> model;
+    std::shared_ptr<Discretisation> space;
+};
+
+Scene scene(std::shared_ptr<Mesh> mesh) {
+    Scene s;
+    s.mesh = mesh;
+    s.crack = xfem::buildCrackWithFront(mesh, xfemtest::levelSet(*mesh, [](double, double y, double) { return y - kYt; }),
+                                        xfemtest::levelSet(*mesh, [](double x, double, double) { return x - kXt; }));
+    s.crack->name = "FISS";
+    xfem::enrichCrackTipZone(*s.crack, 100.0, 0);  // every node carries the tip unknowns
+    s.model = std::make_shared<Model>(xfemtest::model(mesh, true));
+    s.model->enrichment = std::make_shared<xfem::XfemModel>(*s.model, std::vector<std::shared_ptr<const xfem::Crack>>{s.crack});
+    s.space = std::make_shared<Discretisation>(s.model, fetest::material(s.model, kE, kNu), ExtraUnknowns{});
+    return s;
+}
+
+// The exact field's unknowns (docs/cracks.md: H1 = sign (F(x, y) - F(x, 2 yt - y)) / 2).
+std::vector<double> exactUnknowns(const Scene& s, const Factors& k) {
+    const auto& numbering = s.space->numbering();
+    const int dim = numbering.dim();
+    std::vector<double> U(numbering.size(), 0.0);
+    const double K[3] = {k.k1, k.k2, k.k3};
+    for (int n = 0; n < s.mesh->nodeCount(); ++n) {
+        const auto& x = s.mesh->coords[size_t(n)];
+        const Vec3 u = williams(x[0], x[1], k), mirror = williams(x[0], 2 * kYt - x[1], k);
+        const double side = x[1] > kYt ? 1.0 : -1.0;
+        for (int c = 0; c < dim; ++c) {
+            if (const int d = numbering.dof(n, 0, c); d >= 0) U[size_t(d)] = u[size_t(c)];
+            if (const int d = numbering.dof(n, 1, c); d >= 0) U[size_t(d)] = side * 0.5 * (u[size_t(c)] - mirror[size_t(c)]);
+            if (const int d = numbering.tipDof(n, c); d >= 0) U[size_t(d)] = K[c];
+        }
+    }
+    return U;
+}
+
+double work(const Scene& s, const std::shared_ptr<MechanicalLoad>& load, const Factors& k) {
+    std::vector<double> f;
+    assembleExternalForces(*s.space, {LoadCase{load, nullptr}}, 0.0, f);
+    const auto U = exactUnknowns(s, k);
+    double w = 0.0;
+    for (size_t i = 0; i < f.size(); ++i) w += f[i] * U[i];
+    return w;
+}
+
+std::shared_ptr<MechanicalLoad> lipPressure(const Scene& s, double p) {
+    auto load = std::make_shared<MechanicalLoad>();
+    LipPressure lp;
+    lp.path = "PRES_REP[1]/FISSURE";
+    lp.crack = s.crack;
+    lp.pressure.value = p;
+    load->lipPressures.push_back(lp);
+    return load;
+}
+
+// Lips from x = -5 (the mesh's edge) to the front: length a = kXt + 5.
+double lipWork(double p, double k1, double thickness) {
+    const double a = kXt + 5;
+    return p * k1 * (kKappa + 1) / kMu / std::sqrt(2 * std::numbers::pi) * (2.0 / 3.0) * std::pow(a, 1.5) * thickness;
+}
+
+TEST(XfemLipLoads, LipPressureWorkOnWilliamsFieldIsTheClosedForm) {
+    const double p = 3.0e3;
+    for (CellType type : {CellType::QUAD4, CellType::TRIA3, CellType::HEXA8, CellType::TETRA4}) {
+        const bool plane = type == CellType::QUAD4 || type == CellType::TRIA3;
+        const auto s = scene(plane ? xfemtest::square(9, type) : xfemtest::slab(9, type));
+        const double exact = lipWork(p, 3.0, 1.0);
+        const double w = work(s, lipPressure(s, p), {3.0, 0.0, 0.0});
+        EXPECT_NEAR(w / exact, 1.0, 1e-13) << cellTypeName(type) << ": " << w << " vs " << exact;
+        // Modes II and III open nothing: their work under a normal pressure vanishes.
+        EXPECT_NEAR(work(s, lipPressure(s, p), {0.0, 2.0, plane ? 0.0 : 1.0}) / exact, 0.0, 1e-14)
+            << cellTypeName(type);
+    }
+}
+
+// Each lip, clipped at the front, is the strip -5 <= x <= kXt of the crack plane: the lip points'
+// weights sum to its length (2D) or area (3D, thickness 1) on either side, so a pressure p puts the
+// force p a on each lip, and the two lips' forces cancel.
+TEST(XfemLipLoads, EachLipCarriesPressureTimesItsArea) {
+    for (CellType type : {CellType::QUAD4, CellType::TRIA3, CellType::HEXA8, CellType::TETRA4}) {
+        const bool plane = type == CellType::QUAD4 || type == CellType::TRIA3;
+        const auto s = scene(plane ? xfemtest::square(9, type) : xfemtest::slab(9, type));
+        std::vector<LipIntegration> lips;
+        ASSERT_TRUE(s.model->enrichment->lipIntegration(*s.crack, lips));
+        double upper = 0.0, lower = 0.0, xmax = -1e300;
+        Vec3 resultant{};
+        for (const auto& lip : lips)
+            for (size_t p = 0; p < lip.weight.size(); ++p) {
+                (lip.normal[p][1] < 0 ? upper : lower) += lip.weight[p];
+                for (size_t c = 0; c < 3; ++c) resultant[c] += lip.weight[p] * lip.normal[p][c];
+                xmax = std::max(xmax, lip.xyz[p][0]);
+            }
+        const double area = kXt + 5;
+        EXPECT_NEAR(upper / area, 1.0, 1e-13) << cellTypeName(type);
+        EXPECT_NEAR(lower / area, 1.0, 1e-13) << cellTypeName(type);
+        EXPECT_LT(norm(resultant), 1e-13 * area) << cellTypeName(type);
+        EXPECT_LT(xmax, kXt) << cellTypeName(type);  // no point ahead of the front
+    }
+}
+
+// PRES_REP on the edge x = 5 of the square (its cells' nodes carry K1, K2): the work equals
+// -p int u_x dy of the exact field along the edge (20 Gauss points per cell).
+TEST(XfemLipLoads, BoundaryPressureOnTipEnrichedCellsWorksOnTheExactField) {
+    for (CellType type : {CellType::QUAD4, CellType::TRIA3}) {
+        const auto s = scene(xfemtest::square(9, type));
+        auto load = std::make_shared<MechanicalLoad>();
+        PressureLoad pr;
+        pr.path = "PRES_REP[1]";
+        pr.cells = s.mesh->cellGroups.get("LD");
+        pr.value = 2.0e3;
+        load->pressures.push_back(pr);
+        const Factors k{3.0, 2.0, 0.0};
+        std::vector<double> x, w;
+        xfem::gaussLegendre01(20, x, w);
+        double exact = 0.0;
+        const double h = 10.0 / 9.0;
+        for (int cell = 0; cell < 9; ++cell)
+            for (size_t q = 0; q < x.size(); ++q)
+                exact += -pr.value * williams(5.0, -5.0 + h * (cell + x[q]), k)[0] * w[q] * h;
+        const double got = work(s, load, k);
+        EXPECT_NEAR(got / exact, 1.0, 1e-10) << cellTypeName(type) << ": " << got << " vs " << exact;
+    }
+}
+
+}  // namespace
