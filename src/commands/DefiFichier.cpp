@@ -19,7 +19,8 @@ ConceptPtr defiFichier(const KeywordSet& kw, CommandContext& ctx) {
     if (unit == 6 || unit == 8 || unit == 9)
         throw UserError(fmt::format("{}={}: the message, result and error units of the run cannot be redefined",
                                     kw.pathOf("UNITE"), unit));
-    if (unit <= 0 || unit > 99) throw UserError(fmt::format("{}={}: a logical unit is 1 to 99", kw.pathOf("UNITE"), unit));
+    if (unit <= 0 || unit > 99)
+        throw UserError(fmt::format("{}={}: a logical unit is 1 to 99", kw.pathOf("UNITE"), unit));
     if (!ctx.units) throw UserError("DEFI_FICHIER: no logical units are defined for this run");
     const std::string action = kw.text("ACTION");
     if (ctx.units->hasInput(int(unit)))
@@ -27,8 +28,8 @@ ConceptPtr defiFichier(const KeywordSet& kw, CommandContext& ctx) {
                                     kw.pathOf("UNITE"), unit));
     const std::string path = ctx.units->output(int(unit));
     restartUnit(path);
-    msg().infof("    unit {} {}: {} (written at its first write)", unit,
-                action == "LIBERER" ? "freed" : "associated", path);
+    msg().infof("    unit {} {}: {} (written at its first write)", unit, action == "LIBERER" ? "freed" : "associated",
+                path);
     return nullptr;
 }
 

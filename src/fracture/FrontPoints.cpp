@@ -33,7 +33,8 @@ bool containsPoint(const Mesh& mesh, int cell, const Vec3& x) {
     const CellType type = mesh.cellTypes[size_t(cell)];
     if (!mapToReference(type, nodes, x, xi)) return false;
     const double tol = 1e-9;
-    if (type == CellType::TETRA4) return xi[0] >= -tol && xi[1] >= -tol && xi[2] >= -tol && xi[0] + xi[1] + xi[2] <= 1 + tol;
+    if (type == CellType::TETRA4)
+        return xi[0] >= -tol && xi[1] >= -tol && xi[2] >= -tol && xi[0] + xi[1] + xi[2] <= 1 + tol;
     return std::abs(xi[0]) <= 1 + tol && std::abs(xi[1]) <= 1 + tol && std::abs(xi[2]) <= 1 + tol;
 }
 
@@ -44,7 +45,8 @@ double tipCellSize(const Mesh& mesh, const xfem::Crack& crack, const Vec3& x, co
         if (!containsPoint(mesh, cell, x)) continue;
         const auto nodes = mesh.cellNodes(cell);
         for (const auto& e : xfem::cellEdges(mesh.cellTypes[size_t(cell)])) {
-            const Vec3 edge = difference(mesh.coords[size_t(nodes[size_t(e[1])])], mesh.coords[size_t(nodes[size_t(e[0])])]);
+            const Vec3 edge =
+                difference(mesh.coords[size_t(nodes[size_t(e[1])])], mesh.coords[size_t(nodes[size_t(e[0])])]);
             size = std::max(size, std::abs(dot(edge, direction)));
         }
     }
@@ -67,7 +69,8 @@ std::vector<FrontPoint> frontPoints3D(const Mesh& mesh, const xfem::Crack& crack
         p.abscissa = front.abscissa[i];
         const PointInCell at = locatePoint(mesh, p.point);
         if (at.cell < 0)
-            throw UserError(fmt::format("point {} of front {} of crack {} lies in no cell", i + 1, numeFond, crack.name));
+            throw UserError(
+                fmt::format("point {} of front {} of crack {} lies in no cell", i + 1, numeFond, crack.name));
         const Vec3 n = interpolated(mesh, at, grln);
         Vec3 t = interpolated(mesh, at, grlt);
         const double nn = norm(n);

@@ -38,7 +38,7 @@ DEFI_FICHIER(ACTION='LIBERER', UNITE=82)
 IMPR_TABLE(TABLE=T, UNITE=82)
 FIN()
 )",
-                             kMesh);
+                           kMesh);
     ASSERT_EQ(r.status, 0) << r.output;
     // Two tables appended, then LIBERER: the third write starts the file afresh.
     EXPECT_EQ(count(r.file("out/fort.82"), "MARK"), 36u) << r.file("out/fort.82");
