@@ -188,14 +188,20 @@ bool XfemModel::boundaryTipFields(int cell, const std::vector<std::array<double,
     ElementIntegration vol;
     vol.cell = volume;
     std::vector<signed char> side;
+    // Coordinates from the cell's first node: mapToReference's stopping test is relative to the
+    // cell's size, which round-off on coordinates far from the origin does not reach.
+    const Vec3 origin = mesh_->coords[size_t(vn[0])];
+    std::vector<Vec3> corners;
+    for (int n : vn) corners.push_back(difference(mesh_->coords[size_t(n)], origin));
     for (const auto& x : xyz) {
-        const auto ref = referencePointIn(*mesh_, volume, Vec3{x[0], x[1], x[2]});
-        if (!ref) return false;
+        std::array<double, 3> ref{};
+        if (!mapToReference(mesh_->cellTypes[size_t(volume)], corners, difference(Vec3{x[0], x[1], x[2]}, origin), ref))
+            return false;
         std::array<double, 8> N{};
-        shapeValues(mesh_->cellTypes[size_t(volume)], *ref, std::span<double>(N.data(), vn.size()));
+        shapeValues(mesh_->cellTypes[size_t(volume)], ref, std::span<double>(N.data(), vn.size()));
         double lsn = 0.0;
         for (size_t a = 0; a < vn.size(); ++a) lsn += N[a] * crack.lsn[size_t(vn[a])];
-        vol.refPoints.push_back(*ref);
+        vol.refPoints.push_back(ref);
         side.push_back(lsn < 0 ? -1 : 1);
     }
     tipElementFields(*mesh_, volume, dim_, bases_, crack.nodeStatus, tipNodes_, side, vol);

@@ -7,8 +7,8 @@
 // on the lips p times the opening, p K1 (kappa + 1) / mu / sqrt(2 pi) (2/3) a^(3/2) per unit
 // thickness (a the lips' length behind the front), modes II and III doing no work. Measured: the
 // lip work within 2.2e-15 relative on QUAD4, TRIA3, HEXA8, TETRA4 (so to 1e-13 here), modes II + III
-// below 1e-17; the boundary pressure within 6.0e-12 (the skin elements' Gauss rule on the smooth
-// field; 1e-10 here).
+// below 1e-17; the boundary pressure within 6.0e-12 in 2D and 3.2e-12 in 3D (the skin elements'
+// Gauss rule on the smooth field; 1e-10 here).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -146,18 +146,38 @@ TEST(XfemLipLoads, EachLipCarriesPressureTimesItsArea) {
     }
 }
 
-// PRES_REP on the edge x = 5 of the square (its cells' nodes carry K1, K2): the work equals
-// -p int u_x dy of the exact field along the edge (20 Gauss points per cell).
+// The slab with its face x = 5 as skin cells LD (QUAD4 on HEXA8, the tetrahedra's TRIA3 on TETRA4),
+// outward normal +x.
+std::shared_ptr<Mesh> slabWithRightFace(int n, CellType type) {
+    auto m = xfemtest::slab(n, type);
+    auto id = [&](int i, int j, int k) { return k * (n + 1) * (n + 1) + j * (n + 1) + i; };
+    std::vector<int> ld;
+    for (int j = 0; j < n; ++j) {
+        const int a = id(n, j, 0), b = id(n, j + 1, 0), c = id(n, j + 1, 1), d = id(n, j, 1);
+        if (type == CellType::HEXA8) {
+            ld.push_back(m->addCell(CellType::QUAD4, std::vector<int>{a, b, c, d}));
+        } else {  // the faces of the tetrahedra around the hexahedron's diagonal 0-6
+            ld.push_back(m->addCell(CellType::TRIA3, std::vector<int>{a, b, c}));
+            ld.push_back(m->addCell(CellType::TRIA3, std::vector<int>{a, c, d}));
+        }
+    }
+    m->cellGroups.set("LD", ld);
+    return m;
+}
+
+// PRES_REP on the edge x = 5 of the square or the face x = 5 of the slab (their nodes carry K1, K2
+// [, K3]): the work equals -p int u_x dy (dz) of the exact field (20 Gauss points per cell).
 TEST(XfemLipLoads, BoundaryPressureOnTipEnrichedCellsWorksOnTheExactField) {
-    for (CellType type : {CellType::QUAD4, CellType::TRIA3}) {
-        const auto s = scene(xfemtest::square(9, type));
+    for (CellType type : {CellType::QUAD4, CellType::TRIA3, CellType::HEXA8, CellType::TETRA4}) {
+        const bool plane = type == CellType::QUAD4 || type == CellType::TRIA3;
+        const auto s = scene(plane ? xfemtest::square(9, type) : slabWithRightFace(9, type));
         auto load = std::make_shared<MechanicalLoad>();
         PressureLoad pr;
         pr.path = "PRES_REP[1]";
         pr.cells = s.mesh->cellGroups.get("LD");
         pr.value = 2.0e3;
         load->pressures.push_back(pr);
-        const Factors k{3.0, 2.0, 0.0};
+        const Factors k{3.0, 2.0, plane ? 0.0 : 1.0};
         std::vector<double> x, w;
         xfem::gaussLegendre01(20, x, w);
         double exact = 0.0;
