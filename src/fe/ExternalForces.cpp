@@ -54,7 +54,7 @@ public:
             throw InternalError(lp.path + ": the interface is not one of the model's");
         for (auto& lip : lips) {
             if (!lp.onlyCells.empty() && !lp.onlyCells[size_t(lip.element.cell)]) continue;
-            applyLaw(lip.element);
+            applyLaw(lip.element, lip.element.cell);
             const auto pres = valuesAt(lp.pressure, lip.xyz, inst);
             const auto shear = valuesAt(lp.shear, lip.xyz, inst);
             localDofs(space_.mesh(), space_.numbering(), lip.element, dofs_);
@@ -94,13 +94,16 @@ private:
         for (int cell : cells) {
             elementIntegration(space_.model(), cell, boundary, ei_);
             computePointGeometry(space_.mesh(), cell, dim, boundary, ei_, geo_);
-            if (boundary && carriesTipUnknowns(cell) &&
-                !space_.model().enrichment->boundaryTipFields(cell, geo_.xyz, ei_))
-                throw NotImplemented(fmt::format(
-                    "a distributed load on the face {}, whose nodes carry crack-tip unknowns (K1, K2...): no "
-                    "volume element of the model bounded by this face gives the crack-tip fields there",
-                    space_.mesh().cellNames[size_t(cell)]));
-            applyLaw(ei_);
+            int materialCell = cell;  // a face's crack-tip fields are its volume's, with its material
+            if (boundary && carriesTipUnknowns(cell)) {
+                materialCell = space_.model().enrichment->boundaryTipFields(cell, geo_.xyz, ei_);
+                if (materialCell < 0)
+                    throw NotImplemented(fmt::format(
+                        "a distributed load on the face {}, whose nodes carry crack-tip unknowns (K1, K2...): no "
+                        "volume element of the model bounded by this face gives the crack-tip fields there",
+                        space_.mesh().cellNames[size_t(cell)]));
+            }
+            applyLaw(ei_, materialCell);
             localDofs(space_.mesh(), space_.numbering(), ei_, dofs_);
             const int n = ei_.nodeCount;
             for (size_t p = 0; p < ei_.refPoints.size(); ++p)
@@ -128,10 +131,10 @@ private:
         }
     }
 
-    // The crack-tip fields of an element for its cell's material (Phi depends on kappa and mu).
-    void applyLaw(ElementIntegration& ei) {
+    // The crack-tip fields of an element for the material of `cell` (Phi depends on kappa and mu).
+    void applyLaw(ElementIntegration& ei, int cell) {
         if (!ei.hasTip()) return;
-        const IsotropicLaw& law = laws_.of(ModelElement{ei.cell, space_.model().modelisation});
+        const IsotropicLaw& law = laws_.of(ModelElement{cell, space_.model().modelisation});
         applyTipLaw(ei, law.lambdaEff, law.mu);
     }
 

@@ -68,8 +68,8 @@ public:
     // xfemDirichlet (xfem/XfemDirichlet.hpp); other components are left to the load engine.
     bool imposeDof(const Model& model, const ImposedDof& request, double inst,
                    std::vector<LinearRelation>& out) const override;
-    bool boundaryTipFields(int cell, const std::vector<std::array<double, 3>>& xyz,
-                           ElementIntegration& ei) const override;
+    int boundaryTipFields(int cell, const std::vector<std::array<double, 3>>& xyz,
+                          ElementIntegration& ei) const override;
     // PRES_REP FISSURE: the faces of each side's sub-cells on the interface (xfem/LipFaces.cpp).
     bool lipIntegration(const Concept& crack, std::vector<LipIntegration>& out) const override;
 

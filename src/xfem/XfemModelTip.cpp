@@ -169,9 +169,9 @@ void XfemModel::tipFieldsAt(int cell, const std::vector<signed char>& side, Elem
     tipElementFields(*mesh_, cell, dim_, bases_, cracks_[size_t(tipCrack_)]->nodeStatus, tipNodes_, side, ei);
 }
 
-bool XfemModel::boundaryTipFields(int cell, const std::vector<std::array<double, 3>>& xyz,
-                                  ElementIntegration& ei) const {
-    if (tipNodes_.empty()) return false;
+int XfemModel::boundaryTipFields(int cell, const std::vector<std::array<double, 3>>& xyz,
+                                 ElementIntegration& ei) const {
+    if (tipNodes_.empty()) return -1;
     const auto faceNodes = mesh_->cellNodes(cell);
     int volume = isEnriched(cell) ? adjacentVolume(cell) : -1;
     for (int c : cellsOfNode(faceNodes[0])) {
@@ -182,7 +182,7 @@ bool XfemModel::boundaryTipFields(int cell, const std::vector<std::array<double,
                         [&](int n) { return std::find(cn.begin(), cn.end(), n) != cn.end(); }))
             volume = c;
     }
-    if (volume < 0) return false;
+    if (volume < 0) return -1;
     const Crack& crack = *cracks_[size_t(tipCrack_)];
     const auto vn = mesh_->cellNodes(volume);
     ElementIntegration vol;
@@ -196,7 +196,7 @@ bool XfemModel::boundaryTipFields(int cell, const std::vector<std::array<double,
     for (const auto& x : xyz) {
         std::array<double, 3> ref{};
         if (!mapToReference(mesh_->cellTypes[size_t(volume)], corners, difference(Vec3{x[0], x[1], x[2]}, origin), ref))
-            return false;
+            return -1;
         std::array<double, 8> N{};
         shapeValues(mesh_->cellTypes[size_t(volume)], ref, std::span<double>(N.data(), vn.size()));
         double lsn = 0.0;
@@ -209,7 +209,7 @@ bool XfemModel::boundaryTipFields(int cell, const std::vector<std::array<double,
     for (size_t a = 0; a < faceNodes.size(); ++a) ei.tip[a] = tipNodes_[size_t(faceNodes[a])];
     ei.tipA = std::move(vol.tipA);
     ei.tipB = std::move(vol.tipB);
-    return true;
+    return volume;
 }
 
 void XfemModel::addTipFields(const CellCut& cut, ElementIntegration& out) const {
