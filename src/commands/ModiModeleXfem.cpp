@@ -67,12 +67,19 @@ void logTipEnrichment(const xfem::XfemModel& xm) {
         "    crack-tip enrichment of {}: {} nodes carry K1..K{} ({} unknowns; {} of them also Heaviside, status 3), "
         "{} Heaviside-enriched nodes in all, {} crack-tip elements",
         crack.name, xm.tipNodeCount(), xm.dim(), xm.tipNodeCount() * xm.dim(), both, heaviside, tipElements);
-    if (xm.subcellDegree() == 0)
+    if (xm.subcellDegree() == 0 && xm.dim() == 2)
         msg().infof(
             "    crack-tip elements: each sub-triangle integrated by a collapsed {}x{} Gauss-Legendre rule, fanned "
             "from "
             "the front point (radial coordinate s^2) in the cell containing it (code_aster: FPG12 per sub-triangle)",
             xfem::XfemModel::kTipGaussPoints, xfem::XfemModel::kTipGaussPoints);
+    else if (xm.subcellDegree() == 0)
+        msg().infof(
+            "    crack-tip elements: each sub-tetrahedron within {} of its diameter from the front line fanned from "
+            "that line ({}x{}x{} points per face piece), the others a conical Gauss rule of {}^3 points "
+            "(code_aster: FPG15 per sub-tetrahedron)",
+            xfem::XfemModel::kTipFanReach, xfem::XfemModel::kTipRadialPoints, xfem::XfemModel::kTipRadialPoints,
+            xfem::XfemModel::kTipAngularPoints, xfem::XfemModel::kTipFarPoints);
     msg().infof(
         "    conditioning: the linear solvers factorise the Jacobi-scaled matrix D^-1/2 K D^-1/2 (every unknown, "
         "K1..K{} included, scaled by its diagonal), in place of code_aster's preconditioning of the enriched unknowns",
