@@ -21,6 +21,7 @@ void CREA_CHAMP(Catalog&);
 void DEBUT(Catalog&);
 void DEFI_CONSTANTE(Catalog&);
 void DEFI_CONTACT(Catalog&);
+void DEFI_FICHIER(Catalog&);
 void DEFI_FISS_XFEM(Catalog&);
 void DEFI_FONCTION(Catalog&);
 void DEFI_GROUP(Catalog&);
@@ -66,6 +67,7 @@ inline const std::vector<CommandFile>& commandFiles() {
         {"DEBUT", DEBUT},
         {"DEFI_CONSTANTE", DEFI_CONSTANTE},
         {"DEFI_CONTACT", DEFI_CONTACT},
+        {"DEFI_FICHIER", DEFI_FICHIER},
         {"DEFI_FISS_XFEM", DEFI_FISS_XFEM},
         {"DEFI_FONCTION", DEFI_FONCTION},
         {"DEFI_GROUP", DEFI_GROUP},

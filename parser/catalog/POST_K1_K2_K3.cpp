@@ -9,12 +9,11 @@ void POST_K1_K2_K3(Catalog& c) {
               .keywords(join({
                   {CO("FISSURE", {kCrack}).mandatory(), CO("RESULTAT", kAnyResult).mandatory(),
                    CO("MATER", {kMaterial}), I("NB_NOEUD_COUPE").def(5).range(3, std::nullopt),
-                   I("NUME_FOND").def(1), R("ABSC_CURV_MAXI"), R("PREC_VIS_A_VIS").def(0.1),
+                   I("NUME_FOND").def(1), I("NB_POINT_FOND"), R("ABSC_CURV_MAXI"), R("PREC_VIS_A_VIS").def(0.1),
                    TXM("TOUT_ORDRE").into({"OUI"}), I("NUME_ORDRE").many(), R("INST").many(), critere(),
                    R("PRECISION").def(1.0e-6), info(), titre()},
                   unsupported({"FOND_FISS", "TYPE_MAILLAGE", "GROUP_NO", "SANS_GROUP_NO", "TOUT"},
                               "miniaster's cracks are fiss_xfem (FISSURE)"),
-                  unsupported({"NB_POINT_FOND"}, "3D fronts are not implemented yet in POST_K1_K2_K3 (issue 26)"),
                   unsupported({"LIST_ORDRE", "LIST_INST", "TOUT_MODE", "NUME_MODE", "LIST_MODE", "FREQ", "LIST_FREQ"},
                               "miniaster's POST_K1_K2_K3 selects the orders by TOUT_ORDRE, NUME_ORDRE or INST"),
               }))

@@ -34,10 +34,6 @@ void checkCrackResult(const Result& result, const xfem::Crack& crack, const std:
         throw UserError(fmt::format("{}: {} has no front in the mesh: there is no stress intensity to compute", keyword,
                                     crack.name));
     if (!result.material) throw UserError(fmt::format("result {} has no material field", result.name));
-    if (result.model->dim == 3 && !thetaMethod)
-        throw NotImplemented(fmt::format(
-            "{} on a 3D crack front is not implemented yet (issue 26): miniaster computes K and G at 2D crack tips",
-            command));
     if (!thetaMethod) return;
     for (const auto& load : result.loads)
         if (!load.load->lipPressures.empty() || !load.load->volumeForces.empty())

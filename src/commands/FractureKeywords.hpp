@@ -13,9 +13,9 @@ namespace ma {
 
 std::vector<const ResultStep*> fractureSteps(const Result& result, const KeywordSet& kw);
 
-// The crack must be one of the result's model's and have a front, the result be 2D unless by the
-// theta method (CALC_G: 2D and 3D); for the theta
-// method (`thetaMethod`) also without loads on the lips or volume forces (terms not computed).
+// The crack must be one of the result's model's and have a front (2D tips and 3D fronts); for the
+// theta method (`thetaMethod`) the result be without loads on the lips or volume forces (terms not
+// computed).
 void checkCrackResult(const Result& result, const xfem::Crack& crack, const std::string& keyword,
                       const std::string& command, bool thetaMethod);
 

@@ -12,11 +12,20 @@
 
 namespace ma {
 
+namespace {
+// Units written since the run started or since their last DEFI_FICHIER (their next write appends).
+std::set<std::string>& openedThisRun() {
+    static std::set<std::string> opened;
+    return opened;
+}
+}  // namespace
+
+void restartUnit(const std::string& path) { openedThisRun().erase(path); }
+
 void appendToUnit(const std::string& command, const std::string& path, const std::string& text) {
-    static std::set<std::string> openedThisRun;
     if (!mpi::isRoot()) return;  // rank 0 writes (docs/mpi.md)
     std::string content;
-    if (openedThisRun.count(path) && std::filesystem::exists(path)) {
+    if (openedThisRun().count(path) && std::filesystem::exists(path)) {
         std::ifstream in(path, std::ios::binary);
         if (!in) throw UserError(command + ": cannot read back " + path);
         std::ostringstream ss;
@@ -25,7 +34,7 @@ void appendToUnit(const std::string& command, const std::string& path, const std
     }
     content += text;
     writeFileAtomically(path, content);
-    openedThisRun.insert(path);
+    openedThisRun().insert(path);
 }
 
 std::string printOnUnit(const std::string& command, long long unit, const Units* units, const std::string& text) {

@@ -10,6 +10,9 @@ namespace ma {
 // keeps the unit open for the whole run). Atomic; rank 0 only.
 void appendToUnit(const std::string& command, const std::string& path, const std::string& text);
 
+// DEFI_FICHIER ACTION='ASSOCIER' (ACCES='NEW') or 'LIBERER': the unit's next write replaces its file.
+void restartUnit(const std::string& path);
+
 // The text on UNITE: 8 is the result file (.resu); another unit is a file of the run (above).
 // Returns that file's path ("" for the .resu). UserError when the run has no units.
 std::string printOnUnit(const std::string& command, long long unit, const Units* units, const std::string& text);

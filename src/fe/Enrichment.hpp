@@ -55,6 +55,14 @@ public:
                            std::vector<LinearRelation>& /*out*/) const {
         return false;
     }
+    // Loads on a boundary face whose nodes carry crack-tip unknowns: fills ei.tip, tipA, tipB at the
+    // face element's points (physical positions `xyz`) with the tip fields of the volume element the
+    // face bounds (the displacement on the face is that element's); returns that volume cell (whose
+    // material gives Phi), or -1 when it cannot.
+    virtual int boundaryTipFields(int /*cell*/, const std::vector<std::array<double, 3>>& /*xyz*/,
+                                  ElementIntegration& /*ei*/) const {
+        return -1;
+    }
     // The lips of `crack` (a fiss_xfem of this model): appends one LipIntegration per side and
     // parent cell; false when `crack` is not an interface of this model.
     virtual bool lipIntegration(const Concept& /*crack*/, std::vector<LipIntegration>& /*out*/) const { return false; }

@@ -15,7 +15,8 @@ namespace {
 
 class ExternalForceAssembler {
 public:
-    ExternalForceAssembler(const Discretisation& space, std::vector<double>& f) : space_(space), f_(f) {}
+    ExternalForceAssembler(const Discretisation& space, std::vector<double>& f)
+        : space_(space), f_(f), laws_(space.material()) {}
 
     void addPressure(const PressureLoad& pr, double factor, double inst) {
         const bool anyFunction = pr.function || pr.shear.function;
@@ -44,14 +45,16 @@ public:
         });
     }
 
-    // Both lips of an interface: each side's faces with that side's psi and outward normal.
+    // Both lips of an interface or crack: each side's faces with that side's psi (and crack-tip
+    // fields) and outward normal.
     void addLipPressure(const LipPressure& lp, double factor, double inst) {
         const Model& model = space_.model();
         std::vector<LipIntegration> lips;
         if (!model.enrichment || !model.enrichment->lipIntegration(*lp.crack, lips))
             throw InternalError(lp.path + ": the interface is not one of the model's");
-        for (const auto& lip : lips) {
+        for (auto& lip : lips) {
             if (!lp.onlyCells.empty() && !lp.onlyCells[size_t(lip.element.cell)]) continue;
+            applyLaw(lip.element, lip.element.cell);
             const auto pres = valuesAt(lp.pressure, lip.xyz, inst);
             const auto shear = valuesAt(lp.shear, lip.xyz, inst);
             localDofs(space_.mesh(), space_.numbering(), lip.element, dofs_);
@@ -90,13 +93,17 @@ private:
         const int dim = space_.dim();
         for (int cell : cells) {
             elementIntegration(space_.model(), cell, boundary, ei_);
-            if (ei_.hasTip())
-                throw NotImplemented(fmt::format(
-                    "a distributed load on cell {}, whose nodes carry crack-tip unknowns (K1, K2...): loads on "
-                    "crack-tip enriched cells are not implemented yet; load cells away from the crack front or "
-                    "impose displacements (DDL_IMPO)",
-                    space_.mesh().cellNames[size_t(cell)]));
             computePointGeometry(space_.mesh(), cell, dim, boundary, ei_, geo_);
+            int materialCell = cell;  // a face's crack-tip fields are its volume's, with its material
+            if (boundary && carriesTipUnknowns(cell)) {
+                materialCell = space_.model().enrichment->boundaryTipFields(cell, geo_.xyz, ei_);
+                if (materialCell < 0)
+                    throw NotImplemented(fmt::format(
+                        "a distributed load on the face {}, whose nodes carry crack-tip unknowns (K1, K2...): no "
+                        "volume element of the model bounded by this face gives the crack-tip fields there",
+                        space_.mesh().cellNames[size_t(cell)]));
+            }
+            applyLaw(ei_, materialCell);
             localDofs(space_.mesh(), space_.numbering(), ei_, dofs_);
             const int n = ei_.nodeCount;
             for (size_t p = 0; p < ei_.refPoints.size(); ++p)
@@ -104,15 +111,41 @@ private:
         }
     }
 
-    // f += w psi_ak N_a t at one point of an element (dofs_ holds the element's dofs).
+    // f += w psi_ak N_a t at one point of an element (dofs_ holds the element's dofs), and on a
+    // crack-tip node f(K_m) += w N_a sum_c Phi[c][m] t_c.
     void addAtPoint(const ElementIntegration& ei, int p, const double* N, double w, const std::array<double, 3>& t) {
         const int dim = space_.dim();
         int i = 0;
-        for (int a = 0; a < ei.nodeCount; ++a)
+        for (int a = 0; a < ei.nodeCount; ++a) {
             for (int k = 0; k < ei.slots[size_t(a)]; ++k) {
                 const double pa = ei.multiplier(p, a, k);
                 for (int c = 0; c < dim; ++c, ++i) f_[size_t(dofs_[size_t(i)])] += w * pa * N[a] * t[size_t(c)];
             }
+            if (!ei.tipAt(a)) continue;
+            const double* Phi = ei.tipValue(size_t(p));
+            for (int m = 0; m < dim; ++m, ++i) {
+                double work = 0.0;
+                for (int c = 0; c < dim; ++c) work += Phi[c * 3 + m] * t[size_t(c)];
+                f_[size_t(dofs_[size_t(i)])] += w * N[a] * work;
+            }
+        }
+    }
+
+    // The crack-tip fields of an element for the material of `cell` (Phi depends on kappa and mu).
+    void applyLaw(ElementIntegration& ei, int cell) {
+        if (!ei.hasTip()) return;
+        const IsotropicLaw& law = laws_.of(ModelElement{cell, space_.model().modelisation});
+        applyTipLaw(ei, law.lambdaEff, law.mu);
+    }
+
+    // A face whose nodes carry K1, K2[, K3]: its load works on them through the tip fields of the
+    // volume element it bounds (Enrichment::boundaryTipFields).
+    bool carriesTipUnknowns(int cell) const {
+        const auto* enrichment = space_.model().enrichment.get();
+        if (!enrichment) return false;
+        for (int node : space_.mesh().cellNodes(cell))
+            if (enrichment->tipNode(node)) return true;
+        return false;
     }
 
     // Traction of a pressure p and (plane models) a shear c on a surface of unit outward normal m.
@@ -142,6 +175,7 @@ private:
 
     const Discretisation& space_;
     std::vector<double>& f_;
+    LawCache laws_;
     ElementIntegration ei_;
     PointGeometry geo_;
     std::vector<int> dofs_;

@@ -164,6 +164,54 @@ bool XfemModel::tipMatrixOnSide(int cell, const std::array<double, 3>& ref, int 
     return true;
 }
 
+void XfemModel::tipFieldsAt(int cell, const std::vector<signed char>& side, ElementIntegration& ei) const {
+    if (tipNodes_.empty()) return;
+    tipElementFields(*mesh_, cell, dim_, bases_, cracks_[size_t(tipCrack_)]->nodeStatus, tipNodes_, side, ei);
+}
+
+int XfemModel::boundaryTipFields(int cell, const std::vector<std::array<double, 3>>& xyz,
+                                 ElementIntegration& ei) const {
+    if (tipNodes_.empty()) return -1;
+    const auto faceNodes = mesh_->cellNodes(cell);
+    int volume = isEnriched(cell) ? adjacentVolume(cell) : -1;
+    for (int c : cellsOfNode(faceNodes[0])) {
+        if (volume >= 0) break;
+        const auto cn = mesh_->cellNodes(c);
+        if (cuts_[size_t(cellIndex_[size_t(c)])].skin) continue;
+        if (std::all_of(faceNodes.begin(), faceNodes.end(),
+                        [&](int n) { return std::find(cn.begin(), cn.end(), n) != cn.end(); }))
+            volume = c;
+    }
+    if (volume < 0) return -1;
+    const Crack& crack = *cracks_[size_t(tipCrack_)];
+    const auto vn = mesh_->cellNodes(volume);
+    ElementIntegration vol;
+    vol.cell = volume;
+    std::vector<signed char> side;
+    // Coordinates from the cell's first node: mapToReference's stopping test is relative to the
+    // cell's size, which round-off on coordinates far from the origin does not reach.
+    const Vec3 origin = mesh_->coords[size_t(vn[0])];
+    std::vector<Vec3> corners;
+    for (int n : vn) corners.push_back(difference(mesh_->coords[size_t(n)], origin));
+    for (const auto& x : xyz) {
+        std::array<double, 3> ref{};
+        if (!mapToReference(mesh_->cellTypes[size_t(volume)], corners, difference(Vec3{x[0], x[1], x[2]}, origin), ref))
+            return -1;
+        std::array<double, 8> N{};
+        shapeValues(mesh_->cellTypes[size_t(volume)], ref, std::span<double>(N.data(), vn.size()));
+        double lsn = 0.0;
+        for (size_t a = 0; a < vn.size(); ++a) lsn += N[a] * crack.lsn[size_t(vn[a])];
+        vol.refPoints.push_back(ref);
+        side.push_back(lsn < 0 ? -1 : 1);
+    }
+    tipElementFields(*mesh_, volume, dim_, bases_, crack.nodeStatus, tipNodes_, side, vol);
+    ei.tip.assign(faceNodes.size(), 0);
+    for (size_t a = 0; a < faceNodes.size(); ++a) ei.tip[a] = tipNodes_[size_t(faceNodes[a])];
+    ei.tipA = std::move(vol.tipA);
+    ei.tipB = std::move(vol.tipB);
+    return volume;
+}
+
 void XfemModel::addTipFields(const CellCut& cut, ElementIntegration& out) const {
     const auto at = std::find(cut.cracks.begin(), cut.cracks.end(), tipCrack_);
     std::vector<signed char> side(out.refPoints.size(), 1);

@@ -1,6 +1,6 @@
 // CALC_G and POST_K1_K2_K3 through the supervisor before crack-tip enrichment is merged: what is not
-// implemented is refused by the static check before the first command (CHAM_THETA, POST_K1_K2_K3's
-// NB_POINT_FOND), and a crack without front (ssnv511e's interfaces) is a
+// implemented is refused by the static check before the first command (CHAM_THETA,
+// TYPE_MAILLAGE), and a crack without front (ssnv511e's interfaces) is a
 // user error naming the crack. The values are checked by tests/unit/fracture_*.cpp on exact fields.
 #include <gtest/gtest.h>
 
@@ -19,14 +19,14 @@ ma::test::RunResult runOnSsnv511e(const std::string& extra) {
 TEST(FractureCommandsStatic, UnimplementedKeywordsAreRefusedBeforeTheSolve) {
     const auto r = runOnSsnv511e(
         "G = CALC_G(RESULTAT=UTOT1, THETA=_F(FISSURE=FISS1), CHAM_THETA=CO('TH'))\n"
-        "K = POST_K1_K2_K3(FISSURE=FISS1, RESULTAT=UTOT1, NB_POINT_FOND=5)\n");
+        "K = POST_K1_K2_K3(FISSURE=FISS1, RESULTAT=UTOT1, TYPE_MAILLAGE='LIBRE')\n");
     EXPECT_EQ(r.status, 1) << r.output;
     const std::string mess = r.file("out/t.mess");
     EXPECT_NE(mess.find("problems found in the command file before its first command (none was run)"),
               std::string::npos)
         << mess;
     EXPECT_NE(mess.find("CALC_G: keyword CHAM_THETA is not supported by miniaster"), std::string::npos) << mess;
-    EXPECT_NE(mess.find("POST_K1_K2_K3: keyword NB_POINT_FOND is not supported by miniaster"), std::string::npos)
+    EXPECT_NE(mess.find("POST_K1_K2_K3: keyword TYPE_MAILLAGE is not supported by miniaster"), std::string::npos)
         << mess;
     EXPECT_EQ(mess.find("STAT_NON_LINE("), std::string::npos);  // nothing ran
 }
