@@ -43,4 +43,33 @@ TEST(FractureCommands, InterfaceHasNoFront) {
     }
 }
 
+// The theta method takes the lip pressure's term (astest/glip_griffith_pressure checks its values)
+// but not the volume forces': a result loaded by FORCE_INTERNE (on cells far from the crack) is
+// refused at CALC_G, after the solves.
+TEST(FractureCommands, VolumeForcesAreRefusedByTheThetaMethod) {
+    const auto dir = ma::test::freshDir();
+    const std::string comm =
+        ma::test::readText(std::string(MINIASTER_SOURCE_DIR) + "/astest/glip_griffith_pressure.comm");
+    const auto cut = comm.find("lam = A / 1.");
+    ASSERT_NE(cut, std::string::npos);
+    ma::test::writeText(
+        dir / "t.comm",
+        comm.substr(0, cut) +
+            "MA = DEFI_GROUP(reuse=MA, MAILLAGE=MA, CREA_GROUP_MA=_F(NOM='FAR', OPTION='SPHERE', POINT=(0.8, 1.8), "
+            "RAYON=0.1))\n"
+            "FV = AFFE_CHAR_MECA(MODELE=MX, FORCE_INTERNE=_F(GROUP_MA='FAR', FY=1.))\n"
+            "RV = MECA_STATIQUE(MODELE=MX, CHAM_MATER=CM, EXCIT=(_F(CHARGE=BC), _F(CHARGE=FV)))\n"
+            "T = CALC_G(RESULTAT=RV, THETA=_F(FISSURE=FISS))\nFIN()\n");
+    const auto r =
+        ma::test::runMiniaster(dir, "t.comm",
+                               "--mesh '" + std::string(MINIASTER_SOURCE_DIR) + "/astest/glip_griffith_n40.mmed'");
+    EXPECT_EQ(r.status, 1) << r.output;
+    const std::string mess = r.file("out/t.mess");
+    EXPECT_NE(mess.find("CALC_G with the load FV of result RV: volume forces enter the theta method's right-hand "
+                        "side, which miniaster does not compute yet"),
+              std::string::npos)
+        << mess;
+    EXPECT_NE(mess.find("# end of MECA_STATIQUE"), std::string::npos);
+}
+
 }  // namespace
