@@ -24,6 +24,11 @@ void classicalIntegration(const Mesh& mesh, int cell, bool boundary, ElementInte
     out.slots.assign(out.nodeCount, 1);
     out.maxSlots = 1;
     out.psi.clear();
+    // A reused ElementIntegration (the load loops) must not keep the previous cell's tip terms.
+    out.tip.clear();
+    out.tipA.clear();
+    out.tipB.clear();
+    out.tipPhi.clear();
 }
 
 void elementIntegration(const Model& model, int cell, bool boundary, ElementIntegration& out) {
