@@ -157,6 +157,8 @@ void setUpWithOptionPetsc(KSP ksp, const SolverOptions& options) {
     const int unused = unusedGiven(defaults, options.petscOptions);
     check(PetscOptionsClear(nullptr), "PetscOptionsClear");
     check(PetscOptionsSetValue(nullptr, "-no_signal_handler", "true"), "PetscOptionsSetValue");
+    PetscBool set = PETSC_FALSE;  // marks it used: the next solve counts only its own unused options
+    check(PetscOptionsHasName(nullptr, nullptr, "-no_signal_handler", &set), "PetscOptionsHasName");
     check(code, options.petscOptions.empty() ? "KSPSetUp (the preconditioner's construction)"
                                              : "KSPSetFromOptions / KSPSetUp (SOLVEUR/OPTION_PETSC)");
     if (!defaults.empty()) msg().infof("    PRE_COND='{}': miniaster's options {}", options.preconditioner, defaults);
