@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
+#include <sstream>
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
@@ -111,21 +113,59 @@ void configurePreconditioner(PC pc, const SolverOptions& options) {
     }
 }
 
-void applyOptionPetsc(KSP ksp, const SolverOptions& options) {
-    if (options.petscOptions.empty()) {
-        check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
-        return;
-    }
-    check(PetscOptionsInsertString(nullptr, options.petscOptions.c_str()),
-          "PetscOptionsInsertString (SOLVEUR/OPTION_PETSC)");
-    const PetscErrorCode code = KSPSetFromOptions(ksp);
+namespace {
+
+// miniaster's defaults for PETSc's multigrid preconditioners, in the options database before
+// OPTION_PETSC (which overrides them). ML: code_aster's aggregation (Uncoupled, also PETSc's) and
+// Chebyshev over 4 SOR sweeps per level instead of Richardson over 2 (half the iterations, less time,
+// on the flat cells of ssnv511c's box). GAMG keeps PETSc's Chebyshev/Jacobi: SOR halves its iterations there but fails on
+// the zero pivots of coarse levels with more rigid modes than rows in an aggregate (N = 31).
+// docs/solver.md, "3D multigrid".
+const char* defaultOptionsOf(const std::string& preconditioner) {
+    if (preconditioner == "ML")
+        return "-pc_ml_CoarsenScheme Uncoupled -mg_levels_ksp_type chebyshev -mg_levels_ksp_max_it 4";
+    return "";
+}
+
+// Options left unused among those OPTION_PETSC gave (the defaults a solver does not read are not
+// counted).
+int unusedGiven(const std::string& defaults, const std::string& given) {
     PetscInt unused = 0;
     PetscOptionsAllUsed(nullptr, &unused);
+    std::istringstream words(defaults);
+    for (std::string word; words >> word;) {
+        if (word.size() < 2 || word[0] != '-' || std::isdigit(static_cast<unsigned char>(word[1])) ||
+            given.find(word) != std::string::npos)
+            continue;
+        PetscBool used = PETSC_TRUE;
+        PetscOptionsUsed(nullptr, word.c_str(), &used);
+        if (!used) --unused;
+    }
+    return int(std::max<PetscInt>(unused, 0));
+}
+
+}  // namespace
+
+void setUpWithOptionPetsc(KSP ksp, const SolverOptions& options) {
+    const std::string defaults = defaultOptionsOf(options.preconditioner);
+    check(PetscOptionsInsertString(nullptr, defaults.c_str()), "PetscOptionsInsertString (defaults)");
+    check(PetscOptionsInsertString(nullptr, options.petscOptions.c_str()),
+          "PetscOptionsInsertString (SOLVEUR/OPTION_PETSC)");
+    // The options stay in PETSc's database through KSPSetUp: multigrid creates its levels' smoothers
+    // there and reads their options (-mg_levels_*, -mg_coarse_*) only then.
+    PetscErrorCode code = KSPSetFromOptions(ksp);
+    if (code == 0) code = KSPSetUp(ksp);
+    const int unused = unusedGiven(defaults, options.petscOptions);
     check(PetscOptionsClear(nullptr), "PetscOptionsClear");
     check(PetscOptionsSetValue(nullptr, "-no_signal_handler", "true"), "PetscOptionsSetValue");
-    check(code, "KSPSetFromOptions (SOLVEUR/OPTION_PETSC)");
-    msg().infof("    OPTION_PETSC='{}' given to PETSc{}", options.petscOptions,
-                unused > 0 ? fmt::format(" ({} option(s) not used by this solver)", int(unused)) : "");
+    PetscBool set = PETSC_FALSE;  // marks it used: the next solve counts only its own unused options
+    check(PetscOptionsHasName(nullptr, nullptr, "-no_signal_handler", &set), "PetscOptionsHasName");
+    check(code, options.petscOptions.empty() ? "KSPSetUp (the preconditioner's construction)"
+                                             : "KSPSetFromOptions / KSPSetUp (SOLVEUR/OPTION_PETSC)");
+    if (!defaults.empty()) msg().infof("    PRE_COND='{}': miniaster's options {}", options.preconditioner, defaults);
+    if (!options.petscOptions.empty())
+        msg().infof("    OPTION_PETSC='{}' given to PETSc{}", options.petscOptions,
+                    unused > 0 ? fmt::format(" ({} option(s) not used by this solver)", unused) : "");
 }
 
 std::string stallAdvice(const SolverOptions& options, bool inaccurate) {

@@ -220,8 +220,7 @@ private:
             factors_.factors.reset();
             configurePreconditioner(pc, options_);
         }
-        applyOptionPetsc(ksp_, options_);
-        check(KSPSetUp(ksp_), "KSPSetUp (the preconditioner's construction)");
+        setUpWithOptionPetsc(ksp_, options_);
         stale_ = false;
         msg().infof("    {}: preconditioner built in {:.3f} s, resident peak {:.0f} MB (from {:.0f} MB){}", name(),
                     secondsSince(t0), phase.peakMb(), phase.startMb(),

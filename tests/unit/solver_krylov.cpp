@@ -182,3 +182,27 @@ TEST(SolverKrylov, OptionPetscReachesPetsc) {
         << s.mess;
     EXPECT_LT(s.error, 1e-6);
 }
+
+// Multigrid builds its levels' smoothers in KSPSetUp and reads their options there: a smoother given
+// through OPTION_PETSC changes the iterations (more sweeps: fewer iterations), and is not counted as
+// unused. PRE_COND='ML' says its own defaults in the .mess.
+TEST(SolverKrylov, OptionPetscReachesTheMultigridLevels) {
+    msg().setEcho(false);
+    const CsrMatrix A = laplacian2d(40);
+    for (const char* pc : {"GAMG", "ML"}) {
+        SolverOptions o = krylov("PETSC", "CG", pc, 1e-10);
+        o.petscOptions = "-mg_levels_ksp_max_it 1";
+        const Solved one = solveKnown(A, o, MatrixKind::SymmetricPositiveDefinite);
+        o.petscOptions = "-mg_levels_ksp_max_it 8";
+        const Solved eight = solveKnown(A, o, MatrixKind::SymmetricPositiveDefinite);
+        EXPECT_LT(iterationsIn(eight.mess), iterationsIn(one.mess)) << one.mess << eight.mess;
+        EXPECT_EQ(eight.mess.find("not used"), std::string::npos) << eight.mess;
+        EXPECT_LT(one.error, 1e-6);
+        EXPECT_LT(eight.error, 1e-6);
+    }
+    const Solved ml = solveKnown(A, krylov("PETSC", "CG", "ML", 1e-10), MatrixKind::SymmetricPositiveDefinite);
+    EXPECT_NE(ml.mess.find("PRE_COND='ML': miniaster's options -pc_ml_CoarsenScheme Uncoupled -mg_levels_ksp_type "
+                           "chebyshev -mg_levels_ksp_max_it 4"),
+              std::string::npos)
+        << ml.mess;
+}
