@@ -30,9 +30,8 @@ public:
         classicalIntegration(*mesh_, cell, false, out);
         out.maxSlots = 2;
         out.slots.assign(out.nodeCount, 2);
-        out.psi.assign(out.refPoints.size() * out.nodeCount * 2, 0.0);
-        for (size_t p = 0; p < out.refPoints.size(); ++p)
-            for (int a = 0; a < out.nodeCount; ++a) out.psi[(p * out.nodeCount + a) * 2] = 1.0;  // slot 0: psi = 1
+        out.psi.assign(size_t(out.nodeCount) * 2, 0.0);  // one sub-cell (pointSubcell 0 at every point)
+        for (int a = 0; a < out.nodeCount; ++a) out.psi[size_t(a) * 2] = 1.0;  // slot 0: psi = 1
     }
 
 private:
