@@ -24,6 +24,10 @@ void classicalIntegration(const Mesh& mesh, int cell, bool boundary, ElementInte
     out.slots.assign(out.nodeCount, 1);
     out.maxSlots = 1;
     out.psi.clear();
+    out.tip.clear();  // `out` may be a scratch that last held a crack-tip element (elementIntegration)
+    out.tipA.clear();
+    out.tipB.clear();
+    out.tipPhi.clear();
 }
 
 void elementIntegration(const Model& model, int cell, bool boundary, ElementIntegration& out) {

@@ -145,6 +145,27 @@ private:
 };
 }  // namespace
 
+// A scratch description reused across elements (CALC_G's crown loop): a classical cell described
+// after a crack-tip one keeps none of its tip slot, psi or points.
+TEST(FeEnrichment, ClassicalDescriptionResetsAScratchThatHeldATipElement) {
+    auto mesh = planeMesh(2, 2, false);
+    ElementIntegration scratch;
+    scratch.tip.assign(4, 1);
+    scratch.tipA.assign(ElementIntegration::kTipStride, 1.0);
+    scratch.tipB = scratch.tipA;
+    scratch.tipPhi = scratch.tipA;
+    scratch.psi.assign(8, 1.0);
+    scratch.maxSlots = 2;
+    classicalIntegration(*mesh, 0, false, scratch);
+    EXPECT_FALSE(scratch.hasTip());
+    EXPECT_FALSE(scratch.tipAt(0));
+    EXPECT_TRUE(scratch.tipA.empty() && scratch.tipB.empty() && scratch.tipPhi.empty() && scratch.psi.empty());
+    EXPECT_EQ(scratch.refPoints.size(), 4u);  // QUAD4's 2 x 2 Gauss rule
+    EXPECT_EQ(scratch.pointSubcell, (std::vector<int>(4, 0)));
+    EXPECT_EQ(scratch.multiplier(3, 2, 0), 1.0);
+    EXPECT_EQ(scratch.multiplier(3, 2, 1), 0.0);
+}
+
 // Terms of another engine (AdditionalTerms): a grounded spring k holds a plate under a vertical
 // volume force f (area 4): by equilibrium it carries 4f, so the solution equals the one with
 // DY = 4f/k imposed at that node. A spring between two nodes that share no element (outside the
