@@ -73,6 +73,17 @@ foreach(_name ${MINIASTER_ORIGINALS} ${MINIASTER_FAMILY} ${MINIASTER_BEYOND} ${M
   endif()
 endforeach()
 
+# ssnv185c (3D crack, docs/cracks.md "ssnv185c"): its .comm and mesh unmodified, every reference check
+# OK (31: CALC_G on the faces traction UTOT1x and the lip pressure UTOT2x, POST_K1_K2_K3, POST_RELEVE_T,
+# POST_CHAM_XFEM), its 34 NON_REGRESSION values code_aster's own. Not in MINIASTER_CRACKS: the run
+# peaks at ~745 MB resident (the three solves 608 MB: the tip elements' 3D rules and each result's
+# fields; each CALC_G's crown cells) against the original .export's 512 MB, so it runs from
+# tests/ssnv185c_memory1024.export, the same files with memory_limit 1024 and time_limit 600 (miniaster's
+# time_limit also bounds the elapsed time: 55 s of CPU take 120-240 s on the shared 2-core machine).
+add_test(NAME original_memory1024.ssnv185c
+         COMMAND ${_run} $<TARGET_FILE:miniaster-bin> ${CMAKE_SOURCE_DIR}/tests/ssnv185c_memory1024.export
+                 ${CMAKE_BINARY_DIR}/astest-out/ssnv185c --allow-nonregression-nook)
+
 # The manufactured fields of the smooth scenes (open and with contact): derivatives against finite
 # differences, body force, contact conditions on the interfaces, and mutated fields that must fail
 # (tools/study/smooth_field.py). The astest/smooth_* cases trust these fields; ~1 s.

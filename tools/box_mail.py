@@ -101,12 +101,21 @@ def plane_box(kind, nx, ny, lx, ly, title):
 
 
 def volume_box(kind, nx, ny, nz, lx, ly, lz, title):
+    grid = volume_grid(kind, [lx * i / nx for i in range(nx + 1)], [ly * j / ny for j in range(ny + 1)],
+                       [lz * k / nz for k in range(nz + 1)], title)
+    return grid.text({"QUAD4", "TRIA3"})
+
+
+def volume_grid(kind, xs, ys, zs, title):
+    """The box of the tensor grid xs x ys x zs (increasing coordinates): a MailWriter, its node
+    names N((k * (ny + 1) + j) * (nx + 1) + i + 1), the groups of volume_box."""
+    nx, ny, nz = len(xs) - 1, len(ys) - 1, len(zs) - 1
     m = MailWriter(title, 3)
     name = lambda i, j, k: "N%d" % ((k * (ny + 1) + j) * (nx + 1) + i + 1)
     for k in range(nz + 1):
         for j in range(ny + 1):
             for i in range(nx + 1):
-                m.nodes.append((name(i, j, k), (lx * i / nx, ly * j / ny, lz * k / nz)))
+                m.nodes.append((name(i, j, k), (xs[i], ys[j], zs[k])))
     hexa = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
     for k in range(nz):
         for j in range(ny):
@@ -134,7 +143,8 @@ def volume_box(kind, nx, ny, nz, lx, ly, lz, title):
             face("FACE", [name(i, j, 0), name(i, j + 1, 0), name(i + 1, j + 1, 0), name(i + 1, j, 0)])
             face("DOS", [name(i, j, nz), name(i + 1, j, nz), name(i + 1, j + 1, nz), name(i, j + 1, nz)])
     m.node_groups["PIN"] = [name(nx, 0, 0)]
-    return m.text({"QUAD4", "TRIA3"})
+    return m
+
 
 
 def main():

@@ -10,6 +10,7 @@
 #include "fe/Discretisation.hpp"
 #include "fe/Result.hpp"
 #include "fracture/DomainSampling.hpp"
+#include "fracture/LipTerm.hpp"
 #include "fracture/ThetaField.hpp"
 #include "mesh/PointLocation.hpp"
 #include "parser/CommandRegistry.hpp"
@@ -75,7 +76,16 @@ ConceptPtr calcG(const KeywordSet& kw, CommandContext&) {
         if (!depl) throw UserError(fmt::format("result {} has no DEPL at NUME_ORDRE {}", result->name, step->order));
         const auto u = space.numbering().fromNodalField(*depl);
         const auto points = fracture::domainPoints(space, u, thetaField, crack->lsn, side);
-        const auto v = fracture::domainIntegrals(points, tip.frame, result->model->modelisation, 2, withK);
+        auto v = fracture::domainIntegrals(points, tip.frame, result->model->modelisation, 2, withK);
+        const auto lips = fracture::lipPoints(space, u, result->loads, *crack, step->inst,
+                                              [&](int cell) { return fracture::thetaReaches(mesh, cell, thetaField); });
+        if (!lips.empty()) {
+            const auto lip = fracture::lipIntegrals(mesh, lips, thetaField, std::span(&tip.frame, 1),
+                                                    result->model->modelisation, 2, withK);
+            msg().infof("    NUME_ORDRE {}: lip-pressure term on {} lip points: G {:.6e}{}", step->order, lips.size(),
+                        lip.G, withK ? fmt::format(", K1 {:.6e}, K2 {:.6e}", lip.K1, lip.K2) : std::string());
+            fracture::addLipTerm(v, lip, lips, result->model->modelisation);
+        }
         const size_t row = table->addRow();
         table->set(row, "NUME_FOND", static_cast<long long>(numeFond));
         table->set(row, "NUME_ORDRE", static_cast<long long>(step->order));

@@ -112,7 +112,11 @@ ConceptPtr calcG3D(const KeywordSet& kw, const Result& result, const xfem::Crack
         const auto depl = step->nodal("DEPL");
         if (!depl) throw UserError(fmt::format("result {} has no DEPL at NUME_ORDRE {}", result.name, step->order));
         const auto u = space.numbering().fromNodalField(*depl);
-        const auto values = fracture::frontValues(space, u, crack, setup, withK);
+        const auto lips = fracture::lipPoints(space, u, result.loads, crack, step->inst,
+                                              [&](int cell) { return fracture::anyThetaReaches(mesh, cell, setup); });
+        if (!lips.empty())
+            msg().infof("    NUME_ORDRE {}: lip-pressure term on {} lip points", step->order, lips.size());
+        const auto values = fracture::frontValues(space, u, crack, setup, withK, lips);
         addRows(*table, numeFond, *step, setup.front, values, withK);
         for (size_t i = 0; i < values.size(); ++i)
             msg().infof("    NUME_ORDRE {} point {} (s = {:.6e}): G = {:.6e}{}", step->order, i + 1,

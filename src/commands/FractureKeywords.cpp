@@ -35,12 +35,20 @@ void checkCrackResult(const Result& result, const xfem::Crack& crack, const std:
                                     crack.name));
     if (!result.material) throw UserError(fmt::format("result {} has no material field", result.name));
     if (!thetaMethod) return;
-    for (const auto& load : result.loads)
-        if (!load.load->lipPressures.empty() || !load.load->volumeForces.empty())
-            throw NotImplemented(
-                fmt::format("{} with the load {} of result {}: pressure on the crack lips and volume forces enter the "
-                            "theta method's right-hand side, which miniaster does not compute yet",
-                            command, load.load->name, result.name));
+    for (const auto& load : result.loads) {
+        if (!load.load->volumeForces.empty())
+            throw NotImplemented(fmt::format(
+                "{} with the load {} of result {}: volume forces enter the theta method's right-hand side, which "
+                "miniaster does not compute yet",
+                command, load.load->name, result.name));
+        for (const auto& lip : load.load->lipPressures)
+            if (lip.crack.get() != &crack)
+                throw NotImplemented(fmt::format(
+                    "{} on crack {} with the load {} of result {}: its pressure on the lips of another crack or "
+                    "interface would enter the theta method of {}; miniaster computes the lip term of the crack "
+                    "studied only",
+                    command, crack.name, load.load->name, result.name, crack.name));
+    }
 }
 
 }  // namespace ma

@@ -13,8 +13,9 @@ namespace ma {
 
 std::vector<const ResultStep*> fractureSteps(const Result& result, const KeywordSet& kw);
 
-// The crack must be one of the result's model's and have a front; for the theta method
-// (`thetaMethod`) the result must be without loads on the lips or volume forces (terms not computed).
+// The crack must be one of the result's model's and have a front (2D tips and 3D fronts); for the
+// theta method (`thetaMethod`) the result be without volume forces, and its lip pressures on this
+// crack only (the terms miniaster computes).
 void checkCrackResult(const Result& result, const xfem::Crack& crack, const std::string& keyword,
                       const std::string& command, bool thetaMethod);
 

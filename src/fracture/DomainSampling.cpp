@@ -73,7 +73,8 @@ Vec3 unit(const Vec3& v) {
     return l > 0 ? Vec3{v[0] / l, v[1] / l, v[2] / l} : Vec3{};
 }
 
-// BASLOC at a point: the nodal origins and directions interpolated, then made orthonormal.
+}  // namespace
+
 FrontFrame interpolatedFrame(const std::vector<xfem::FrontBasis>& basloc, std::span<const int> nodes,
                              std::span<const double> N) {
     Vec3 o{}, e1{}, e2{};
@@ -89,8 +90,6 @@ FrontFrame interpolatedFrame(const std::vector<xfem::FrontBasis>& basloc, std::s
     f.e3 = cross(f.e1, f.e2);
     return f;
 }
-
-}  // namespace
 
 void domainPoints3D(const Discretisation& space, const std::vector<double>& u,
                     const std::vector<std::vector<Vec3>>& thetas, const std::vector<double>& lsn,

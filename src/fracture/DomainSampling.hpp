@@ -3,6 +3,7 @@
 // integrals of CALC_G read. The displacement gradient comes from fe's element description (every
 // slot and multiplier of an X-FEM element: Heaviside sides, crack-tip functions), in one place.
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "core/Vec3.hpp"
@@ -23,6 +24,11 @@ bool thetaVaries(const Mesh& mesh, int cell, const std::vector<Vec3>& theta);
 std::vector<DomainPoint> domainPoints(const Discretisation& space, const std::vector<double>& u,
                                       const std::vector<Vec3>& theta, const std::vector<double>& lsn,
                                       double positiveLsnSide);
+
+// BASLOC at a point of a cell (`N` its shape functions at the point): the nodal origins and
+// directions interpolated, e2 normalised, e1 made orthogonal to it, e3 = e1 x e2.
+FrontFrame interpolatedFrame(const std::vector<xfem::FrontBasis>& basloc, std::span<const int> nodes,
+                             std::span<const double> N);
 
 // The points of several theta fields at once (a 3D front's, one per front point or degree), each
 // with its frame: the nodal BASLOC `basloc` interpolated at the point, e2 normalised, e1 made

@@ -35,7 +35,7 @@ FrontGSetup frontGSetup(const Mesh& mesh, const xfem::Crack& crack, int numeFond
     }
     std::vector<char> read(size_t(mesh.nodeCount()), 0);
     for (int cell = 0; cell < mesh.cellCount(); ++cell)
-        if (anyThetaVaries(mesh, cell, setup))
+        if (anyThetaReaches(mesh, cell, setup))  // the lip term reads the frames where theta is constant too
             for (int n : mesh.cellNodes(cell)) read[size_t(n)] = 1;
     setup.basloc = xfem::frontBases(mesh, crack, read);
     return setup;
@@ -46,8 +46,14 @@ bool anyThetaVaries(const Mesh& mesh, int cell, const FrontGSetup& setup) {
                        [&](const std::vector<Vec3>& t) { return thetaVaries(mesh, cell, t); });
 }
 
+bool anyThetaReaches(const Mesh& mesh, int cell, const FrontGSetup& setup) {
+    return std::any_of(setup.thetas.begin(), setup.thetas.end(),
+                       [&](const std::vector<Vec3>& t) { return thetaReaches(mesh, cell, t); });
+}
+
 std::vector<FrontValues> frontValues(const Discretisation& space, const std::vector<double>& u,
-                                     const xfem::Crack& crack, const FrontGSetup& setup, bool withK) {
+                                     const xfem::Crack& crack, const FrontGSetup& setup, bool withK,
+                                     const std::vector<LipPoint>& lips) {
     std::vector<FrontValues> integrals(setup.thetas.size());
     domainPoints3D(space, u, setup.thetas, crack.lsn, setup.basloc,
                    [&](size_t k, const std::vector<DomainPoint>& points, const std::vector<FrontFrame>& frames) {
@@ -56,6 +62,15 @@ std::vector<FrontValues> frontValues(const Discretisation& space, const std::vec
                        sum.G += v.G, sum.K1 += v.K1, sum.K2 += v.K2, sum.K3 += v.K3;
                        for (size_t c = 0; c < 3; ++c) sum.irwin[c] += v.irwin[c];
                    });
+    if (!lips.empty()) {
+        std::vector<FrontFrame> frames;
+        for (const auto& p : lips)
+            frames.push_back(interpolatedFrame(setup.basloc, space.mesh().cellNodes(p.cell), p.N));
+        for (size_t k = 0; k < integrals.size(); ++k)
+            addLipTerm(integrals[k],
+                       lipIntegrals(space.mesh(), lips, setup.thetas[k], frames, space.model().modelisation, 3, withK),
+                       lips, space.model().modelisation);
+    }
     if (setup.smoothing == GSmoothing::Legendre) return legendreAlongFront(integrals, setup.front.abscissa);
     return smoothAlongFront(std::move(integrals), setup.front.abscissa, setup.front.closed, setup.smoothing, withK);
 }

@@ -10,6 +10,7 @@
 #include "fe/Discretisation.hpp"
 #include "fracture/FrontSmoothing.hpp"
 #include "fracture/FrontTheta.hpp"
+#include "fracture/LipTerm.hpp"
 #include "xfem/TipEnrichment.hpp"
 
 namespace ma::fracture {
@@ -30,9 +31,13 @@ FrontGSetup frontGSetup(const Mesh& mesh, const xfem::Crack& crack, int numeFond
 
 // True where a cell of the mesh is read: some theta field varies on it.
 bool anyThetaVaries(const Mesh& mesh, int cell, const FrontGSetup& setup);
+// True where some theta is not zero at a node of the cell (the lip term's cells).
+bool anyThetaReaches(const Mesh& mesh, int cell, const FrontGSetup& setup);
 
-// The smoothed values at each front point for displacement `u` (numbering of `space`).
+// The smoothed values at each front point for displacement `u` (numbering of `space`), with the
+// lip-pressure term of `lips` (LipTerm; their frames: BASLOC at each point).
 std::vector<FrontValues> frontValues(const Discretisation& space, const std::vector<double>& u,
-                                     const xfem::Crack& crack, const FrontGSetup& setup, bool withK);
+                                     const xfem::Crack& crack, const FrontGSetup& setup, bool withK,
+                                     const std::vector<LipPoint>& lips = {});
 
 }  // namespace ma::fracture

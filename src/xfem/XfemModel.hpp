@@ -137,9 +137,10 @@ public:
     static constexpr int kTipGaussPoints = 12;
     // 3D fanned rules (TipEnrichment's fannedTetrahedronRule): points along the two radii and the
     // angle of a face piece; sub-cells farther from the front line than kTipFanReach diameters
-    // get the conical Gauss rule of kTipFarPoints^3 points.
+    // get a conical Gauss rule of n^3 points, n = kTipFarPoints + 4, + 2, + 1 while that distance is
+    // below 0.5, 1, 2 diameters, kTipFarPoints beyond (measured on the exactness case, docs/cracks.md).
     static constexpr int kTipRadialPoints = 6;
-    static constexpr int kTipAngularPoints = 10;
+    static constexpr int kTipAngularPoints = 8;
     static constexpr double kTipFanReach = 0.25;
     static constexpr int kTipFarPoints = 4;
     // Levels of splitting of the sub-triangles near the front point (TipEnrichment's tipTriangleRule).
@@ -184,8 +185,8 @@ private:
     std::vector<std::optional<std::array<double, 3>>> tipPoint_;  // per cuts_ entry: front point (reference)
     std::vector<Vec3> frontPoints_;                               // 2D front points (physical)
     // 3D, per cuts_ entry: the line of the front segment nearest the cell, in its reference
-    // coordinates (a point and a unit direction).
-    std::vector<std::optional<std::array<Vec3, 2>>> frontLine_;
+    // coordinates: its first point, its unit direction and (first component) its length.
+    std::vector<std::optional<std::array<Vec3, 3>>> frontLine_;
 };
 
 }  // namespace ma::xfem

@@ -80,9 +80,62 @@ void XfemModel::buildFrontLines(const Crack& crack) {
         const auto rb = referenceCoordinates(mesh, cuts_[i].cell, segment[1]);
         const Vec3 O{ra[0], ra[1], ra[2]}, d{rb[0] - ra[0], rb[1] - ra[1], rb[2] - ra[2]};
         const double l = norm(d);
-        if (l > 0) frontLine_[i] = std::array<Vec3, 2>{O, Vec3{d[0] / l, d[1] / l, d[2] / l}};
+        if (l > 0) frontLine_[i] = std::array<Vec3, 3>{O, Vec3{d[0] / l, d[1] / l, d[2] / l}, Vec3{l, 0, 0}};
     }
 }
+
+namespace {
+
+// Distance from the line through O along t (unit) to the tetrahedron V: in the plane normal to the
+// line, from the line's point to the convex hull of the projected vertices (0 when the line
+// crosses the tetrahedron). The vertices' own distances overstate it when the line passes near
+// an edge or a face between them.
+double tetrahedronLineDistance(const std::array<std::array<double, 3>, 4>& V, const Vec3& O, const Vec3& t) {
+    std::array<std::array<double, 2>, 4> p;
+    const Vec3 a = std::abs(t[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+    const Vec3 u = cross(t, a), w = cross(t, u);
+    const double nu = norm(u), nw = norm(w);
+    for (int v = 0; v < 4; ++v) {
+        const Vec3 d = difference(Vec3{V[size_t(v)][0], V[size_t(v)][1], V[size_t(v)][2]}, O);
+        p[size_t(v)] = {dot(d, u) / nu, dot(d, w) / nw};
+    }
+    auto cross2 = [](const std::array<double, 2>& a0, const std::array<double, 2>& b0,
+                     const std::array<double, 2>& c0) {
+        return (b0[0] - a0[0]) * (c0[1] - a0[1]) - (b0[1] - a0[1]) * (c0[0] - a0[0]);
+    };
+    const std::array<double, 2> origin{0.0, 0.0};
+    double best = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) {
+            const auto &A = p[size_t(i)], &B = p[size_t(j)];
+            const double ab[2] = {B[0] - A[0], B[1] - A[1]}, l2 = ab[0] * ab[0] + ab[1] * ab[1];
+            const double s = l2 > 0 ? std::clamp((-A[0] * ab[0] - A[1] * ab[1]) / l2, 0.0, 1.0) : 0.0;
+            best = std::min(best, std::hypot(A[0] + s * ab[0], A[1] + s * ab[1]));
+            for (int k = j + 1; k < 4; ++k) {  // inside the triangle (i, j, k): the line crosses
+                const auto& C = p[size_t(k)];
+                const double c1 = cross2(A, B, origin), c2 = cross2(B, C, origin), c3 = cross2(C, A, origin);
+                if ((c1 >= 0 && c2 >= 0 && c3 >= 0) || (c1 <= 0 && c2 <= 0 && c3 <= 0)) return 0.0;
+            }
+        }
+    return best;
+}
+
+// A lower bound of the distance from the front segment {O, t, (length)} to the tetrahedron V: the
+// distance to its line, combined with the gap between their extents along it. A curved front's
+// segment line, extended, crosses sub-cells far from the front: they are not fanned (the fan's
+// signed pieces would then weigh a smooth integrand with weights of both signs).
+double tetrahedronSegmentGap(const std::array<std::array<double, 3>, 4>& V, const std::array<Vec3, 3>& segment) {
+    const Vec3 &O = segment[0], &t = segment[1];
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& v : V) {
+        const double along = dot(difference(Vec3{v[0], v[1], v[2]}, O), t);
+        lo = std::min(lo, along), hi = std::max(hi, along);
+    }
+    const double gap = std::max({0.0, lo - segment[2][0], -hi});
+    return std::hypot(tetrahedronLineDistance(V, O, t), gap);
+}
+
+}  // namespace
 
 void XfemModel::tipSubcellRule3(const CellCut& cut, int s, std::vector<std::array<double, 3>>& points,
                                 std::vector<double>& weights) const {
@@ -90,20 +143,22 @@ void XfemModel::tipSubcellRule3(const CellCut& cut, int s, std::vector<std::arra
     std::array<std::array<double, 3>, 4> V;
     for (int v = 0; v < 4; ++v) V[size_t(v)] = cut.points[size_t(sub.vertices[size_t(v)])].ref;
     const auto& line = frontLine_[size_t(cellIndex_[size_t(cut.cell)])];
-    double diameter = 0.0, near = std::numeric_limits<double>::infinity();
-    for (int v = 0; v < 4; ++v) {
-        const Vec3 P{V[size_t(v)][0], V[size_t(v)][1], V[size_t(v)][2]};
+    double diameter = 0.0;
+    for (int v = 0; v < 4; ++v)
         for (int w = 0; w < v; ++w)
-            diameter = std::max(diameter, distance(P, Vec3{V[size_t(w)][0], V[size_t(w)][1], V[size_t(w)][2]}));
-        if (!line) continue;
-        const Vec3 op = difference(P, (*line)[0]);
-        const double along = dot(op, (*line)[1]);
-        near = std::min(near, norm(Vec3{op[0] - along * (*line)[1][0], op[1] - along * (*line)[1][1],
-                                        op[2] - along * (*line)[1][2]}));
-    }
+            diameter = std::max(diameter, distance(Vec3{V[size_t(v)][0], V[size_t(v)][1], V[size_t(v)][2]},
+                                                   Vec3{V[size_t(w)][0], V[size_t(w)][1], V[size_t(w)][2]}));
+    const double near = line ? tetrahedronSegmentGap(V, *line) : std::numeric_limits<double>::infinity();
     if (line && near <= kTipFanReach * diameter)
         return fannedTetrahedronRule(V, (*line)[0], (*line)[1], kTipRadialPoints, kTipAngularPoints, points, weights);
-    tetrahedronGaussRule(V, kTipFarPoints, points, weights);
+    // The 1/r term is analytic on the sub-cell but its nearest singularity is near/diameter away:
+    // Gauss's error falls as that ratio's Bernstein factor to the power 2n (docs/cracks.md).
+    const double ratio = line ? near / diameter : std::numeric_limits<double>::infinity();
+    const int n = ratio < 0.5 ? kTipFarPoints + 4
+                  : ratio < 1 ? kTipFarPoints + 2
+                  : ratio < 2 ? kTipFarPoints + 1
+                              : kTipFarPoints;
+    tetrahedronGaussRule(V, n, points, weights);
 }
 
 void XfemModel::tipSubcellRule(const CellCut& cut, int s, std::vector<std::array<double, 3>>& points,
@@ -135,14 +190,16 @@ bool XfemModel::tipMatrix(int cell, int subcell, const std::array<double, 3>& re
     out.cell = cell, out.ref = ref;
     if (c->skin) {  // evaluated in the volume element the skin cell bounds, at the same physical point
         const int volume = adjacentVolume(cell);
-        if (volume < 0 || dim_ != 2) return false;
+        if (volume < 0) return false;
         const auto sn = mesh_->cellNodes(cell);
         std::array<double, 8> N{};
         shapeValues(mesh_->cellTypes[size_t(cell)], ref, std::span<double>(N.data(), sn.size()));
         Vec3 x{};
         for (size_t a = 0; a < sn.size(); ++a)
             for (int j = 0; j < 3; ++j) x[size_t(j)] += N[a] * mesh_->coords[size_t(sn[a])][size_t(j)];
-        const auto r = referencePointIn(*mesh_, volume, x);
+        // 3D: the skin cell is a face of the volume, so Newton's point is on it (no inside test).
+        const auto r = dim_ == 2 ? referencePointIn(*mesh_, volume, x)
+                                 : std::optional<std::array<double, 3>>(referenceCoordinates(*mesh_, volume, x));
         if (!r) return false;
         out.cell = volume, out.ref = *r;
     }

@@ -1,5 +1,5 @@
 // CALC_G and POST_K1_K2_K3 through the supervisor before crack-tip enrichment is merged: what is not
-// implemented is refused by the static check before the first command (CHAM_THETA, POST_K1_K2_K3's
+// implemented is refused by the static check before the first command (CHAM_THETA,
 // TYPE_MAILLAGE), and a crack without front (ssnv511e's interfaces) is a
 // user error naming the crack. The values are checked by tests/unit/fracture_*.cpp on exact fields.
 #include <gtest/gtest.h>
@@ -41,6 +41,35 @@ TEST(FractureCommands, InterfaceHasNoFront) {
                   std::string::npos)
             << mess;
     }
+}
+
+// The theta method takes the lip pressure's term (astest/glip_griffith_pressure checks its values)
+// but not the volume forces': a result loaded by FORCE_INTERNE (on cells far from the crack) is
+// refused at CALC_G, after the solves.
+TEST(FractureCommands, VolumeForcesAreRefusedByTheThetaMethod) {
+    const auto dir = ma::test::freshDir();
+    const std::string comm =
+        ma::test::readText(std::string(MINIASTER_SOURCE_DIR) + "/astest/glip_griffith_pressure.comm");
+    const auto cut = comm.find("lam = A / 1.");
+    ASSERT_NE(cut, std::string::npos);
+    ma::test::writeText(
+        dir / "t.comm",
+        comm.substr(0, cut) +
+            "MA = DEFI_GROUP(reuse=MA, MAILLAGE=MA, CREA_GROUP_MA=_F(NOM='FAR', OPTION='SPHERE', POINT=(0.8, 1.8), "
+            "RAYON=0.1))\n"
+            "FV = AFFE_CHAR_MECA(MODELE=MX, FORCE_INTERNE=_F(GROUP_MA='FAR', FY=1.))\n"
+            "RV = MECA_STATIQUE(MODELE=MX, CHAM_MATER=CM, EXCIT=(_F(CHARGE=BC), _F(CHARGE=FV)))\n"
+            "T = CALC_G(RESULTAT=RV, THETA=_F(FISSURE=FISS))\nFIN()\n");
+    const auto r =
+        ma::test::runMiniaster(dir, "t.comm",
+                               "--mesh '" + std::string(MINIASTER_SOURCE_DIR) + "/astest/glip_griffith_n40.mmed'");
+    EXPECT_EQ(r.status, 1) << r.output;
+    const std::string mess = r.file("out/t.mess");
+    EXPECT_NE(mess.find("CALC_G with the load FV of result RV: volume forces enter the theta method's right-hand "
+                        "side, which miniaster does not compute yet"),
+              std::string::npos)
+        << mess;
+    EXPECT_NE(mess.find("# end of MECA_STATIQUE"), std::string::npos);
 }
 
 }  // namespace

@@ -120,5 +120,25 @@ TEST(XfemTip, FannedTetrahedronRuleIntegratesTheFrontSingularity) {
         EXPECT_NEAR(sum, std::log(1.0 + std::sqrt(2.0)) / std::sqrt(2.0), n == 4 ? 1e-6 : 1e-12) << n;
     }
 }
+
+// With the line parallel to faces of the tetrahedron (and crossing none of them within reach), the
+// distance to the line is polynomial in the radial variables times an angular factor: the radial
+// count does not change a (polynomial) / r integral once it is exact for the polynomial's degree.
+TEST(XfemTip, FannedRuleIsExactAlongTheRaysOfFacesParallelToTheLine) {
+    const std::array<std::array<double, 3>, 4> T{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+    const Vec3 O{-0.3, 0.4, 0.0}, t{0, 0, 1};  // parallel to the faces x = 0 and y = 0
+    auto integral = [&](int nRadial) {
+        std::vector<std::array<double, 3>> pts;
+        std::vector<double> w;
+        fannedTetrahedronRule(T, O, t, nRadial, 8, pts, w);
+        double sum = 0;
+        for (size_t q = 0; q < w.size(); ++q) {
+            const double x = pts[q][0], y = pts[q][1], z = pts[q][2];
+            sum += w[q] * (1 + x * y + z * z) / std::hypot(x - O[0], y - O[1]);
+        }
+        return sum;
+    };
+    EXPECT_NEAR(integral(6), integral(12), 1e-14);
+}
 }  // namespace
 }  // namespace ma::xfem
