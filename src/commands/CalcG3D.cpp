@@ -105,8 +105,8 @@ ConceptPtr calcG3D(const KeywordSet& kw, const Result& result, const xfem::Crack
                 numeFond, crack.name, setup.front.points.size(), setup.front.abscissa.back(), setup.thetas.size(),
                 lissage.text("LISSAGE_THETA"), setup.rInf, setup.rSup);
     const bool withK = kw.text("OPTION") == "CALC_K_G";
-    Discretisation space(result.model, result.material, {},
-                         [&](int cell) { return fracture::anyThetaVaries(mesh, cell, setup); });
+    // The numbering only: frontValues describes each element of the crown when it samples it.
+    Discretisation space(result.model, result.material, {}, [](int) { return false; });
     auto table = frontTable(withK);
     for (const ResultStep* step : fractureSteps(result, kw)) {
         const auto depl = step->nodal("DEPL");

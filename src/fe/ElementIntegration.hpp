@@ -35,8 +35,9 @@ struct ElementIntegration {
 
     // slots[a] = number of slots of local node a in this element (1 = standard only).
     std::vector<int> slots;
-    // psi[(p * nodeCount + a) * maxSlots + k]; only read for k < slots[a]. Empty means psi = 1
-    // for k = 0 (a classical element).
+    // psi[(s * nodeCount + a) * maxSlots + k] on sub-cell s = pointSubcell[p] (psi is constant on a
+    // sub-cell: stored once per sub-cell, not per point, for the ~10^4 points of a 3D tip element);
+    // only read for k < slots[a]. Empty means psi = 1 for k = 0 (a classical element).
     int maxSlots = 1;
     std::vector<double> psi;
 
@@ -55,7 +56,7 @@ struct ElementIntegration {
 
     double multiplier(int p, int a, int k) const {
         if (psi.empty()) return k == 0 ? 1.0 : 0.0;
-        return psi[(std::size_t(p) * nodeCount + a) * maxSlots + k];
+        return psi[(std::size_t(pointSubcell[std::size_t(p)]) * nodeCount + a) * maxSlots + k];
     }
 };
 

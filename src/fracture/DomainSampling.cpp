@@ -2,6 +2,7 @@
 
 #include "fe/ElasticityKernels.hpp"
 #include "fe/ElementKinematics.hpp"
+#include "fe/FieldSampling.hpp"
 
 namespace ma::fracture {
 
@@ -107,7 +108,11 @@ void domainPoints3D(const Discretisation& space, const std::vector<double>& u,
             if (thetaVaries(mesh, cell, thetas[k])) fields.push_back(k);
         if (fields.empty()) continue;
         const Material& material = space.material().at(cell);
-        const ElementIntegration& ei = space.integrationOf(e, scratch);
+        // Described here, one element at a time: a 3D crack-tip element holds ~10^4 points with
+        // Phi and its gradient, which `space` need not keep for the whole front (CalcG3D).
+        elementIntegration(space.model(), cell, false, scratch);
+        applyMaterialToTip(space.model(), &space.material(), space.model().elements[e], scratch);
+        const ElementIntegration& ei = scratch;
         computePointGeometry(mesh, cell, 3, false, ei, geo);
         localDofs(mesh, space.numbering(), ei, dofs);
         const auto nodes = mesh.cellNodes(cell);

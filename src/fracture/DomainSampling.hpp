@@ -34,7 +34,9 @@ FrontFrame interpolatedFrame(const std::vector<xfem::FrontBasis>& basloc, std::s
 // with its frame: the nodal BASLOC `basloc` interpolated at the point, e2 normalised, e1 made
 // orthogonal to it, e3 = e1 x e2 (code_aster's coor_cyl / xbasgl); LSN > 0 is the e2 side. The
 // cells are read once; `sink(k, points, frames)` gets field k's points cell by cell (crack-tip cells
-// hold ~10^5 points: kept, they would double the peak memory of ssnv185c).
+// hold ~10^5 points: kept, they would double the peak memory of ssnv185c). Each cell is described
+// (X-FEM points, crack-tip fields with its material) when it is read: `space` gives the numbering
+// and the material, and need not hold any X-FEM description.
 using FieldPointSink =
     std::function<void(size_t field, const std::vector<DomainPoint>& points, const std::vector<FrontFrame>& frames)>;
 void domainPoints3D(const Discretisation& space, const std::vector<double>& u,

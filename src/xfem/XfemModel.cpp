@@ -398,7 +398,7 @@ void XfemModel::integration(int cell, ElementIntegration& out) const {
         maxSlots = std::max(maxSlots, out.slots[a]);
     }
     out.maxSlots = maxSlots;
-    out.psi.reserve(size_t(np) * nn * maxSlots);
+    out.psi.reserve(size_t(nsub) * nn * maxSlots);
     bool hasTip = false;
     for (int a = 0; a < nn && !cut.skin; ++a) hasTip = hasTip || tipNode(nodes[a]);
     // Crack-tip elements of a 2D model with the catalogue's rules: collapsed Gauss rules (the
@@ -414,14 +414,12 @@ void XfemModel::integration(int cell, ElementIntegration& out) const {
             subPsi[size_t(a) * maxSlots] = 1.0;
             for (int k = 1; k < out.slots[a]; ++k) subPsi[size_t(a) * maxSlots + k] = psi(nodes[a], k, cut, s);
         }
+        out.psi.insert(out.psi.end(), subPsi.begin(), subPsi.end());
         if (tipRule) {
             const size_t before = out.refPoints.size();
             if (cut.dim == 3) tipSubcellRule3(cut, s, out.refPoints, out.refWeights);
             else tipSubcellRule(cut, s, out.refPoints, out.refWeights);
-            for (size_t q = before; q < out.refPoints.size(); ++q, ++p) {
-                out.pointSubcell.push_back(s);
-                out.psi.insert(out.psi.end(), subPsi.begin(), subPsi.end());
-            }
+            for (size_t q = before; q < out.refPoints.size(); ++q, ++p) out.pointSubcell.push_back(s);
             continue;
         }
         for (int q = 0; q < rule.size(); ++q, ++p) {
@@ -432,8 +430,12 @@ void XfemModel::integration(int cell, ElementIntegration& out) const {
             out.refPoints.push_back(xi);
             out.refWeights.push_back(rule.weights[q] * ratio);
             out.pointSubcell.push_back(s);
-            out.psi.insert(out.psi.end(), subPsi.begin(), subPsi.end());
         }
+    }
+    if (tipRule) {  // the tip rules' point counts are not known beforehand: drop the growth slack
+        out.refPoints.shrink_to_fit();
+        out.refWeights.shrink_to_fit();
+        out.pointSubcell.shrink_to_fit();
     }
     if (hasTip) addTipFields(cut, out);
     if (cut.skin && !tipNodes_.empty()) {  // flags only: loads on such cells are refused (fe/ExternalForces)

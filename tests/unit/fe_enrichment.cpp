@@ -30,9 +30,8 @@ public:
         classicalIntegration(*mesh_, cell, false, out);
         out.maxSlots = 2;
         out.slots.assign(out.nodeCount, 2);
-        out.psi.assign(out.refPoints.size() * out.nodeCount * 2, 0.0);
-        for (size_t p = 0; p < out.refPoints.size(); ++p)
-            for (int a = 0; a < out.nodeCount; ++a) out.psi[(p * out.nodeCount + a) * 2] = 1.0;  // slot 0: psi = 1
+        out.psi.assign(size_t(out.nodeCount) * 2, 0.0);  // one sub-cell (pointSubcell 0 at every point)
+        for (int a = 0; a < out.nodeCount; ++a) out.psi[size_t(a) * 2] = 1.0;  // slot 0: psi = 1
     }
 
 private:
@@ -145,6 +144,27 @@ private:
     double k_;
 };
 }  // namespace
+
+// A scratch description reused across elements (CALC_G's crown loop): a classical cell described
+// after a crack-tip one keeps none of its tip slot, psi or points.
+TEST(FeEnrichment, ClassicalDescriptionResetsAScratchThatHeldATipElement) {
+    auto mesh = planeMesh(2, 2, false);
+    ElementIntegration scratch;
+    scratch.tip.assign(4, 1);
+    scratch.tipA.assign(ElementIntegration::kTipStride, 1.0);
+    scratch.tipB = scratch.tipA;
+    scratch.tipPhi = scratch.tipA;
+    scratch.psi.assign(8, 1.0);
+    scratch.maxSlots = 2;
+    classicalIntegration(*mesh, 0, false, scratch);
+    EXPECT_FALSE(scratch.hasTip());
+    EXPECT_FALSE(scratch.tipAt(0));
+    EXPECT_TRUE(scratch.tipA.empty() && scratch.tipB.empty() && scratch.tipPhi.empty() && scratch.psi.empty());
+    EXPECT_EQ(scratch.refPoints.size(), 4u);  // QUAD4's 2 x 2 Gauss rule
+    EXPECT_EQ(scratch.pointSubcell, (std::vector<int>(4, 0)));
+    EXPECT_EQ(scratch.multiplier(3, 2, 0), 1.0);
+    EXPECT_EQ(scratch.multiplier(3, 2, 1), 0.0);
+}
 
 // Terms of another engine (AdditionalTerms): a grounded spring k holds a plate under a vertical
 // volume force f (area 4): by equilibrium it carries 4f, so the solution equals the one with
