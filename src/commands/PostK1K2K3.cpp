@@ -128,8 +128,9 @@ std::shared_ptr<Table> postK1K2K3InPlane(const KeywordSet& kw, const std::shared
     for (const ResultStep* step : fractureSteps(*result, kw)) {
         const auto depl = step->nodal("DEPL");
         if (!depl) throw UserError(fmt::format("result {} has no DEPL at NUME_ORDRE {}", result->name, step->order));
-        const auto samples = fracture::heavisideJumps(mesh, *depl, tip.point, tip.frame.e1, length, points,
-                                                      tipJumpOf(*result, *crack, *depl));
+        const auto samples =
+            fracture::heavisideJumps(mesh, *depl, tip.point, tip.frame.e1, length, points,
+                                     kw.real("PREC_VIS_A_VIS") * length, tipJumpOf(*result, *crack, *depl));
         for (size_t i = 0; i < samples.abscissa.size(); ++i)
             msg().infof("    lips' jump at abscissa {:.6e}: opening {:.6e}, sliding {:.6e}", samples.abscissa[i],
                         dot(samples.jump[i], normal), dot(samples.jump[i], tangent));
@@ -202,7 +203,8 @@ std::shared_ptr<Table> postK1K2K3AlongFront(const KeywordSet& kw, const std::sha
             const std::array<Vec3, 3> basis{v1, v2, unit(cross(v1, v2))};
             const Material& material = materialAt(kw, *result, mesh, fp.point);
             const auto coef = fracture::JumpCoefficients::of(material.E, material.nu, Modelisation::TRI_D);
-            const auto samples = fracture::heavisideJumps(mesh, *depl, fp.point, v2, length, points, tipJump);
+            const auto samples = fracture::heavisideJumps(mesh, *depl, fp.point, v2, length, points,
+                                                          kw.real("PREC_VIS_A_VIS") * length, tipJump);
             const auto k = sifsOf(samples, basis, coef, *step, result->name);
             const size_t row = table->addRow();
             table->set(row, "FISSURE", crack->name);

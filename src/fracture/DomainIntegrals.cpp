@@ -51,6 +51,7 @@ void auxiliaryGradient(Mode mode, const DomainPoint& p, const FrontFrame& f, con
             double v = 0.0;
             for (int a = 0; a < 3; ++a)
                 for (int b = 0; b < 3; ++b) v += (*e[a])[i] * local.grad[a][b] * (*e[b])[j];
+            for (int k = 0; k < 3; ++k) v += local.u[size_t(k)] * f.basisGradient[k][i][j];
             g[i][j] = v;
         }
 }

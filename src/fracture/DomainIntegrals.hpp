@@ -23,6 +23,10 @@ namespace ma::fracture {
 struct FrontFrame {
     Vec3 origin{};
     Vec3 e1{}, e2{}, e3{};
+    // d(e_k)_i / dx_j at the point (code_aster's xcourb): on a curved 3D front the auxiliary
+    // displacement u_k e_k turns with the basis, which adds u_k d(e_k)_i / dx_j to its gradient.
+    // Zero for a straight front and in 2D.
+    double basisGradient[3][3][3]{};
 };
 
 // What the integrals need at one integration point.

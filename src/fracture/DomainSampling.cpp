@@ -73,6 +73,19 @@ Vec3 unit(const Vec3& v) {
     return l > 0 ? Vec3{v[0] / l, v[1] / l, v[2] / l} : Vec3{};
 }
 
+// The gradient of the nodal bases (e1, e2 normalised, e3 = e1 x e2) at a point of gradients dN.
+void basisGradient(const std::vector<xfem::FrontBasis>& basloc, std::span<const int> nodes, std::span<const double> dN,
+                   FrontFrame& f) {
+    for (size_t a = 0; a < nodes.size(); ++a) {
+        const auto& b = basloc[size_t(nodes[a])];
+        const Vec3 e1 = unit(b.e1), e2 = unit(b.e2);
+        const Vec3 e[3] = {e1, e2, cross(e1, e2)};
+        for (size_t k = 0; k < 3; ++k)
+            for (size_t i = 0; i < 3; ++i)
+                for (size_t j = 0; j < 3; ++j) f.basisGradient[k][i][j] += e[k][i] * dN[a * 3 + j];
+    }
+}
+
 }  // namespace
 
 FrontFrame interpolatedFrame(const std::vector<xfem::FrontBasis>& basloc, std::span<const int> nodes,
@@ -129,7 +142,8 @@ void domainPoints3D(const Discretisation& space, const std::vector<double>& u,
             double levelSet = 0.0;
             for (size_t a = 0; a < n; ++a) levelSet += N[a] * lsn[size_t(nodes[a])];
             q.side = levelSet > 0 ? 1.0 : (levelSet < 0 ? -1.0 : 0.0);
-            const FrontFrame frame = interpolatedFrame(basloc, nodes, N);
+            FrontFrame frame = interpolatedFrame(basloc, nodes, N);
+            basisGradient(basloc, nodes, std::span<const double>(&geo.gradN[p * n * 3], n * 3), frame);
             for (size_t k : fields) {
                 DomainPoint r = q;
                 for (size_t a = 0; a < n; ++a) {

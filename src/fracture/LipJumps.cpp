@@ -6,14 +6,14 @@
 namespace ma::fracture {
 
 LipSamples heavisideJumps(const Mesh& mesh, const NodalField& depl, const Vec3& front, const Vec3& direction,
-                          double length, int points, const TipJump& tipJump) {
+                          double length, int points, double maxDistance, const TipJump& tipJump) {
     const int comps[3] = {depl.componentIndex("H1X"), depl.componentIndex("H1Y"), depl.componentIndex("H1Z")};
     LipSamples out;
     std::vector<double> N;
     for (int i = 0; i < points; ++i) {
         const double s = length * i / (points - 1);
         const Vec3 x{front[0] - s * direction[0], front[1] - s * direction[1], front[2] - s * direction[2]};
-        const PointInCell at = locatePoint(mesh, x);
+        const PointInCell at = locateNearPoint(mesh, x, maxDistance);
         if (at.cell < 0) continue;
         const auto nodes = mesh.cellNodes(at.cell);
         N.assign(nodes.size(), 0.0);

@@ -58,6 +58,58 @@ PointInCell locatePoint(const Mesh& mesh, const Vec3& x) {
     return {};
 }
 
+namespace {
+
+// xi moved to the nearest point of the reference element (a simplex's excess spread evenly).
+void clampToReference(CellType type, std::array<double, 3>& xi, int d) {
+    if (type == CellType::TRIA3 || type == CellType::TETRA4) {
+        double sum = 0.0;
+        for (int j = 0; j < d; ++j) sum += (xi[size_t(j)] = std::max(xi[size_t(j)], 0.0));
+        if (sum > 1.0)
+            for (int j = 0; j < d; ++j) xi[size_t(j)] /= sum;
+        return;
+    }
+    for (int j = 0; j < d; ++j) xi[size_t(j)] = std::clamp(xi[size_t(j)], -1.0, 1.0);
+}
+
+}  // namespace
+
+PointInCell locateNearPoint(const Mesh& mesh, const Vec3& x, double maxDistance) {
+    const PointInCell inside = locatePoint(mesh, x);
+    if (inside.cell >= 0 || !(maxDistance > 0)) return inside;
+    const int dim = mesh.maxCellDimension();
+    PointInCell best;
+    double nearest = maxDistance;
+    std::vector<std::array<double, 3>> nodes;
+    std::array<double, 27> N{};
+    for (int c = 0; c < mesh.cellCount(); ++c) {
+        const CellType type = mesh.cellTypes[size_t(c)];
+        if (cellDimension(type) != dim || dim < 2 || !hasShapeFunctions(type)) continue;
+        nodes.clear();
+        for (int n : mesh.cellNodes(c)) nodes.push_back(mesh.coords[size_t(n)]);
+        bool near = true;
+        for (int j = 0; j < dim; ++j) {
+            double lo = nodes[0][size_t(j)], hi = lo;
+            for (const auto& p : nodes) lo = std::min(lo, p[size_t(j)]), hi = std::max(hi, p[size_t(j)]);
+            near = near && x[j] >= lo - maxDistance && x[j] <= hi + maxDistance;
+        }
+        if (!near) continue;
+        const Vec3 origin = nodes[0];
+        for (auto& p : nodes) p = difference(p, origin);
+        const Vec3 target = difference({x[0], x[1], mesh.dim == 3 ? x[2] : 0.0}, origin);
+        std::array<double, 3> xi{};
+        if (!mapToReference(type, nodes, target, xi)) continue;
+        clampToReference(type, xi, dim);
+        shapeValues(type, xi, N);
+        Vec3 y{};
+        for (size_t a = 0; a < nodes.size(); ++a)
+            for (size_t j = 0; j < 3; ++j) y[j] += N[a] * nodes[a][j];
+        const double d = distance(y, target);
+        if (d < nearest) nearest = d, best = {c, xi};
+    }
+    return best;
+}
+
 double interpolateAt(const Mesh& mesh, const PointInCell& at, const std::vector<double>& values) {
     const auto nodes = mesh.cellNodes(at.cell);
     std::array<double, 27> N{};

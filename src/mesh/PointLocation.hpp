@@ -21,6 +21,11 @@ struct PointInCell {
 // A 2D mesh ignores x's z.
 PointInCell locatePoint(const Mesh& mesh, const Vec3& x);
 
+// locatePoint, or for a point outside the mesh its projection on the nearest cell when that lies
+// within maxDistance (code_aster's PROJ_CHAMP DISTANCE_MAX): the reference coordinates clamped to
+// the reference element, the lowest-numbered of equally near cells.
+PointInCell locateNearPoint(const Mesh& mesh, const Vec3& x, double maxDistance);
+
 // sum_a N_a(xi) values[node a] over the nodes of the located cell.
 double interpolateAt(const Mesh& mesh, const PointInCell& at, const std::vector<double>& values);
 

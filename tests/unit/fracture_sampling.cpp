@@ -211,6 +211,13 @@ TEST(FractureSampling, HeavisideJumpsInterpolateTwiceH1) {
     }
     // beyond the mesh: dropped
     EXPECT_EQ(heavisideJumps(*mesh, depl, {0.1, 0.0, 0.0}, {1, 0, 0}, 2.0, 5).abscissa.size(), 3u);
+    // 0.06 beyond the edge x = -1: kept within DISTANCE_MAX 0.1, with the values at x = -1
+    const auto near = heavisideJumps(*mesh, depl, {0.1, 0.0, 0.0}, {1, 0, 0}, 1.16, 5, 0.1);
+    ASSERT_EQ(near.abscissa.size(), 5u);
+    EXPECT_NEAR(near.abscissa[4], 1.16, 1e-15);
+    EXPECT_NEAR(near.jump[4][0], 2e-3 * 2, 1e-15);
+    EXPECT_NEAR(near.jump[4][1], 2 * (2e-3 - 1e-3), 1e-15);
+    EXPECT_EQ(heavisideJumps(*mesh, depl, {0.1, 0.0, 0.0}, {1, 0, 0}, 1.16, 5, 0.05).abscissa.size(), 4u);
 }
 
 // Near the front the Heaviside nodes end: code_aster's projection of an X-FEM DEPL (pjxfem)
@@ -238,7 +245,7 @@ TEST(FractureSampling, HeavisideJumpsSkipNodesWithoutH1AndAddTheTipJump) {
         for (double v : N) sum += v;
         return Vec3{0.0, 5e-4 * sum, 0.0};
     };
-    const auto near = heavisideJumps(*mesh, depl, {-0.1, 0.0, 0.0}, {1, 0, 0}, 0.5, 2, tip);
+    const auto near = heavisideJumps(*mesh, depl, {-0.1, 0.0, 0.0}, {1, 0, 0}, 0.5, 2, 0.0, tip);
     EXPECT_EQ(near.jump[0][0], 0.0);
     EXPECT_NEAR(near.jump[0][1], 5e-4, 1e-15);
     EXPECT_NEAR(near.jump[1][0], 2e-3 * 1.6, 1e-15);
