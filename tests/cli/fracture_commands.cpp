@@ -53,12 +53,11 @@ TEST(FractureCommands, VolumeForcesAreRefusedByTheThetaMethod) {
         ma::test::readText(std::string(MINIASTER_SOURCE_DIR) + "/astest/glip_griffith_pressure.comm");
     const auto cut = comm.find("lam = A / 1.");
     ASSERT_NE(cut, std::string::npos);
-    ma::test::writeText(
-        dir / "t.comm",
-        comm.substr(0, cut) +
-            "FV = AFFE_CHAR_MECA(MODELE=MX, FORCE_INTERNE=_F(TOUT='OUI', FY=1.))\n"
-            "RV = MECA_STATIQUE(MODELE=MX, CHAM_MATER=CM, EXCIT=(_F(CHARGE=BC), _F(CHARGE=FV)))\n"
-            "T = CALC_G(RESULTAT=RV, THETA=_F(FISSURE=FISS))\nFIN()\n");
+    ma::test::writeText(dir / "t.comm",
+                        comm.substr(0, cut) +
+                            "FV = AFFE_CHAR_MECA(MODELE=MX, FORCE_INTERNE=_F(TOUT='OUI', FY=1.))\n"
+                            "RV = MECA_STATIQUE(MODELE=MX, CHAM_MATER=CM, EXCIT=(_F(CHARGE=BC), _F(CHARGE=FV)))\n"
+                            "T = CALC_G(RESULTAT=RV, THETA=_F(FISSURE=FISS))\nFIN()\n");
     const auto r =
         ma::test::runMiniaster(dir, "t.comm",
                                "--mesh '" + std::string(MINIASTER_SOURCE_DIR) + "/astest/glip_griffith_n40.mmed'");
