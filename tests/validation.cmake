@@ -76,8 +76,8 @@ endforeach()
 # ssnv185c (3D crack, docs/cracks.md "ssnv185c"): its .comm and mesh unmodified, every reference check
 # OK (31: CALC_G on the faces traction UTOT1x and the lip pressure UTOT2x, POST_K1_K2_K3, POST_RELEVE_T,
 # POST_CHAM_XFEM), its 34 NON_REGRESSION values code_aster's own. Not in MINIASTER_CRACKS: the run
-# peaks at ~745 MB resident (the three solves 608 MB: the tip elements' 3D rules and each result's
-# fields; each CALC_G's crown cells) against the original .export's 512 MB, so it runs from
+# peaks at ~671 MB resident (the three solves 475 / 591 / 671 MB: the tip elements' stored crack-tip
+# fields and each result's fields) against the original .export's 512 MB, so it runs from
 # tests/ssnv185c_memory1024.export, the same files with memory_limit 1024 and time_limit 600 (miniaster's
 # time_limit also bounds the elapsed time: 55 s of CPU take 120-240 s on the shared 2-core machine).
 add_test(NAME original_memory1024.ssnv185c

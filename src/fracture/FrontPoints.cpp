@@ -38,7 +38,8 @@ bool containsPoint(const Mesh& mesh, int cell, const Vec3& x) {
     return std::abs(xi[0]) <= 1 + tol && std::abs(xi[1]) <= 1 + tol && std::abs(xi[2]) <= 1 + tol;
 }
 
-// xtailm over the tip cells containing the point.
+}  // namespace
+
 double tipCellSize(const Mesh& mesh, const xfem::Crack& crack, const Vec3& x, const Vec3& direction) {
     double size = 0.0;
     for (int cell : crack.tipCells) {
@@ -52,8 +53,6 @@ double tipCellSize(const Mesh& mesh, const xfem::Crack& crack, const Vec3& x, co
     }
     return size;
 }
-
-}  // namespace
 
 std::vector<FrontPoint> frontPoints3D(const Mesh& mesh, const xfem::Crack& crack, int numeFond) {
     if (numeFond < 1 || size_t(numeFond) > crack.fronts.size())

@@ -25,6 +25,10 @@ struct FrontPoint {
 // gradients vanish at a point.
 std::vector<FrontPoint> frontPoints3D(const Mesh& mesh, const xfem::Crack& crack, int numeFond);
 
+// code_aster's xtailm: the largest projection on `direction` of an edge of the tip cells that hold
+// the point x (a front point on a face belongs to the two cells of the face).
+double tipCellSize(const Mesh& mesh, const xfem::Crack& crack, const Vec3& x, const Vec3& direction);
+
 // NB_POINT_FOND: `count` points evenly spaced in abscissa along the front, coordinates and bases
 // interpolated linearly between the front's points (InterpolFondFiss, InterpolBaseFiss); the cell
 // sizes are those of the nearer front point.

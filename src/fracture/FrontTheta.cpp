@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/Error.hpp"
+#include "fracture/FrontPoints.hpp"
 #include "mesh/PointLocation.hpp"
 #include "xfem/CellGeometry.hpp"
 #include "xfem/TipEnrichment.hpp"
@@ -39,30 +40,6 @@ FrontFrame frameAt(const Vec3& origin, const Vec3& gn, const Vec3& gt) {
     f.e1 = scaled(t, 1.0 / lt);
     f.e3 = cross(f.e1, f.e2);
     return f;
-}
-
-bool holds(const Mesh& mesh, int cell, const Vec3& x) {
-    const auto xi = xfem::referenceCoordinates(mesh, cell, x);
-    const double tol = 1e-8;
-    if (mesh.cellTypes[size_t(cell)] == CellType::TETRA4)
-        return xi[0] >= -tol && xi[1] >= -tol && xi[2] >= -tol && xi[0] + xi[1] + xi[2] <= 1 + tol;
-    return std::abs(xi[0]) <= 1 + tol && std::abs(xi[1]) <= 1 + tol && std::abs(xi[2]) <= 1 + tol;
-}
-
-// code_aster's xtailm over every tip cell that holds the point (a front point on a face belongs to
-// the two cells of the face).
-double tipCellSize(const Mesh& mesh, const xfem::Crack& crack, const Vec3& x, const Vec3& e1) {
-    double size = 0.0;
-    for (int cell : crack.tipCells) {
-        if (!holds(mesh, cell, x)) continue;
-        const auto nodes = mesh.cellNodes(cell);
-        for (const auto& edge : xfem::cellEdges(mesh.cellTypes[size_t(cell)])) {
-            const Vec3 d =
-                difference(mesh.coords[size_t(nodes[size_t(edge[1])])], mesh.coords[size_t(nodes[size_t(edge[0])])]);
-            size = std::max(size, std::abs(dot(d, e1)));
-        }
-    }
-    return size;
 }
 
 }  // namespace
