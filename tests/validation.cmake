@@ -9,9 +9,17 @@ file(GLOB _cases CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/astest/*.export)
 # The 3D crack cases that take 15-40 s each run on one process only (the CI's 25 minutes): two
 # processes are checked on the 3D crack tip by xfem_tip_williams_hexa8/_tetra4 and xfem_tip_k3d_hexa8
 # (POST_K1_K2_K3), on CALC_G with the lip term by glip_griffith_pressure.
-set(_one_process_only g3d_ssnv185c_faces xfem_crack_185c_scene glip_ssnv185c_linear xfem_penny_hexa8)
+set(_one_process_only glip_ssnv185c_linear xfem_penny_hexa8)
+# Cases on ssnv185c's mesh whose solves and CALC_G / POST_K1_K2_K3 calls original_memory1024.ssnv185c
+# runs too (below): kept for `./miniaster run` (their extra checks: K2, K3 = 0 and G_IRWIN on every
+# crown; K1 at every front point, the lip pressure's superposition, DX = 0 of POST_CHAM_XFEM), not
+# in ctest (30-40 s each against the CI's 25 minutes).
+set(_not_in_ctest g3d_ssnv185c_faces xfem_crack_185c_scene)
 foreach(_export ${_cases})
   get_filename_component(_name ${_export} NAME_WE)
+  if(_name IN_LIST _not_in_ctest)
+    continue()
+  endif()
   add_test(NAME astest.${_name}
            COMMAND ${_run} $<TARGET_FILE:miniaster-bin> ${_export} ${CMAKE_BINARY_DIR}/astest-out/${_name})
   if(_name IN_LIST _one_process_only)
