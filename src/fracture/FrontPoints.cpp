@@ -14,18 +14,6 @@ namespace ma::fracture {
 
 namespace {
 
-Vec3 interpolated(const Mesh& mesh, const PointInCell& at, const std::vector<std::array<double, 3>>& grad) {
-    std::vector<double> component(grad.size());
-    Vec3 v{};
-    for (int c = 0; c < 3; ++c) {
-        for (size_t i = 0; i < grad.size(); ++i) component[i] = grad[i][size_t(c)];
-        v[size_t(c)] = interpolateAt(mesh, at, component);
-    }
-    return v;
-}
-
-Vec3 scaled(const Vec3& v, double s) { return {v[0] * s, v[1] * s, v[2] * s}; }
-
 bool containsPoint(const Mesh& mesh, int cell, const Vec3& x) {
     std::vector<Vec3> nodes;
     for (int n : mesh.cellNodes(cell)) nodes.push_back(mesh.coords[size_t(n)]);
@@ -70,8 +58,8 @@ std::vector<FrontPoint> frontPoints3D(const Mesh& mesh, const xfem::Crack& crack
         if (at.cell < 0)
             throw UserError(
                 fmt::format("point {} of front {} of crack {} lies in no cell", i + 1, numeFond, crack.name));
-        const Vec3 n = interpolated(mesh, at, grln);
-        Vec3 t = interpolated(mesh, at, grlt);
+        const Vec3 n = interpolateAt(mesh, at, grln);
+        Vec3 t = interpolateAt(mesh, at, grlt);
         const double nn = norm(n);
         if (!(nn > 0))
             throw UserError(fmt::format("the gradient of LSN of crack {} vanishes at point {} of front {}", crack.name,

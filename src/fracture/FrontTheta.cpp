@@ -15,18 +15,6 @@ namespace ma::fracture {
 
 namespace {
 
-Vec3 interpolated(const Mesh& mesh, const PointInCell& at, const std::vector<Vec3>& field) {
-    Vec3 v{};
-    std::vector<double> component(field.size());
-    for (size_t c = 0; c < 3; ++c) {
-        for (size_t n = 0; n < field.size(); ++n) component[n] = field[n][c];
-        v[c] = interpolateAt(mesh, at, component);
-    }
-    return v;
-}
-
-Vec3 scaled(const Vec3& v, double a) { return {a * v[0], a * v[1], a * v[2]}; }
-
 // e2 the unit normal, e1 the propagation direction made orthogonal to it, e3 = e1 x e2.
 FrontFrame frameAt(const Vec3& origin, const Vec3& gn, const Vec3& gt) {
     FrontFrame f;
@@ -60,7 +48,7 @@ Front3D front3D(const Mesh& mesh, const xfem::Crack& crack, const std::vector<Ve
         if (at.cell < 0)
             throw InternalError(
                 fmt::format("front {} of crack {}: point {} lies in no cell", numeFond, crack.name, i + 1));
-        front.frames.push_back(frameAt(p, interpolated(mesh, at, grln), interpolated(mesh, at, grlt)));
+        front.frames.push_back(frameAt(p, interpolateAt(mesh, at, grln), interpolateAt(mesh, at, grlt)));
         if (norm(front.frames.back().e1) == 0.0)
             throw UserError(
                 fmt::format("front {} of crack {}: the level sets have no gradient at front point {}, so "

@@ -119,4 +119,14 @@ double interpolateAt(const Mesh& mesh, const PointInCell& at, const std::vector<
     return v;
 }
 
+Vec3 interpolateAt(const Mesh& mesh, const PointInCell& at, const std::vector<Vec3>& values) {
+    const auto nodes = mesh.cellNodes(at.cell);
+    std::array<double, 27> N{};
+    shapeValues(mesh.cellTypes[size_t(at.cell)], at.xi, N);
+    Vec3 v{};
+    for (size_t a = 0; a < nodes.size(); ++a)
+        for (size_t c = 0; c < 3; ++c) v[c] += N[a] * values[size_t(nodes[a])][c];
+    return v;
+}
+
 }  // namespace ma

@@ -28,5 +28,6 @@ PointInCell locateNearPoint(const Mesh& mesh, const Vec3& x, double maxDistance)
 
 // sum_a N_a(xi) values[node a] over the nodes of the located cell.
 double interpolateAt(const Mesh& mesh, const PointInCell& at, const std::vector<double>& values);
+Vec3 interpolateAt(const Mesh& mesh, const PointInCell& at, const std::vector<Vec3>& values);
 
 }  // namespace ma

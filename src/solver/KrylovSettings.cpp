@@ -14,15 +14,15 @@ namespace ma {
 
 namespace {
 
-void check(PetscErrorCode code, const char* call) {
-    if (code != 0) throw NumericalError(fmt::format("PETSc: {} failed (PETSc error code {})", call, int(code)));
-}
-
 bool isOneOf(const std::string& value, std::initializer_list<const char*> values) {
     return std::any_of(values.begin(), values.end(), [&](const char* v) { return value == v; });
 }
 
 }  // namespace
+
+void checkPetsc(PetscErrorCode code, const char* call) {
+    if (code != 0) throw NumericalError(fmt::format("PETSc: {} failed (PETSc error code {})", call, int(code)));
+}
 
 std::string krylovAlgorithm(const SolverOptions& options) {
     return options.method == "GCPC" ? "CG" : options.algorithm;
@@ -84,30 +84,31 @@ void configureKrylov(KSP ksp, const SolverOptions& options) {
                          : algorithm == "GMRES" ? KSPGMRES
                          : algorithm == "GCR"   ? KSPGCR
                                                 : KSPFGMRES;
-    check(KSPSetType(ksp, type), "KSPSetType");
+    checkPetsc(KSPSetType(ksp, type), "KSPSetType");
     // code_aster's criterion: ||b - A x|| <= RESI_RELA ||b||, the unpreconditioned residual. CG
     // computes it with a left preconditioner; GMRES gets it from right preconditioning; FGMRES and GCR
     // are right-preconditioned. PETSc's CR iterates on the preconditioned norm only (with the other one
     // it stalls at once): the true residual is checked after every solve (PetscSolver.cpp).
-    if (algorithm == "GMRES") check(KSPSetPCSide(ksp, PC_RIGHT), "KSPSetPCSide");
-    if (algorithm == "CG") check(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+    if (algorithm == "GMRES") checkPetsc(KSPSetPCSide(ksp, PC_RIGHT), "KSPSetPCSide");
+    if (algorithm == "CG") checkPetsc(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
     const PetscInt maxIterations = options.maxIterations > 0 ? PetscInt(options.maxIterations) : PETSC_DEFAULT;
-    check(KSPSetTolerances(ksp, options.resiRela, PETSC_DEFAULT, PETSC_DEFAULT, maxIterations), "KSPSetTolerances");
+    checkPetsc(KSPSetTolerances(ksp, options.resiRela, PETSC_DEFAULT, PETSC_DEFAULT, maxIterations),
+               "KSPSetTolerances");
 }
 
 void configurePreconditioner(PC pc, const SolverOptions& options) {
     const std::string& p = options.preconditioner;
-    if (p == "SANS") check(PCSetType(pc, PCNONE), "PCSetType");
-    else if (p == "JACOBI") check(PCSetType(pc, PCJACOBI), "PCSetType");
-    else if (p == "SOR") check(PCSetType(pc, PCSOR), "PCSetType");  // symmetric sweeps: fit for CG
-    else if (p == "GAMG") check(PCSetType(pc, PCGAMG), "PCSetType");
-    else if (p == "ML") check(PCSetType(pc, PCML), "PCSetType");
+    if (p == "SANS") checkPetsc(PCSetType(pc, PCNONE), "PCSetType");
+    else if (p == "JACOBI") checkPetsc(PCSetType(pc, PCJACOBI), "PCSetType");
+    else if (p == "SOR") checkPetsc(PCSetType(pc, PCSOR), "PCSetType");  // symmetric sweeps: fit for CG
+    else if (p == "GAMG") checkPetsc(PCSetType(pc, PCGAMG), "PCSetType");
+    else if (p == "ML") checkPetsc(PCSetType(pc, PCML), "PCSetType");
     else if (p == "BOOMER") {
-        check(PCSetType(pc, PCHYPRE), "PCSetType");
-        check(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
+        checkPetsc(PCSetType(pc, PCHYPRE), "PCSetType");
+        checkPetsc(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
     } else if (p == "LDLT_INC") {
-        check(PCSetType(pc, PCICC), "PCSetType");
-        check(PCFactorSetLevels(pc, PetscInt(options.fillLevel)), "PCFactorSetLevels");
+        checkPetsc(PCSetType(pc, PCICC), "PCSetType");
+        checkPetsc(PCFactorSetLevels(pc, PetscInt(options.fillLevel)), "PCFactorSetLevels");
     } else {
         throw InternalError("SOLVEUR/PRE_COND='" + p + "' reached the PETSc setup");
     }
@@ -148,20 +149,20 @@ int unusedGiven(const std::string& defaults, const std::string& given) {
 
 void setUpWithOptionPetsc(KSP ksp, const SolverOptions& options) {
     const std::string defaults = defaultOptionsOf(options.preconditioner);
-    check(PetscOptionsInsertString(nullptr, defaults.c_str()), "PetscOptionsInsertString (defaults)");
-    check(PetscOptionsInsertString(nullptr, options.petscOptions.c_str()),
-          "PetscOptionsInsertString (SOLVEUR/OPTION_PETSC)");
+    checkPetsc(PetscOptionsInsertString(nullptr, defaults.c_str()), "PetscOptionsInsertString (defaults)");
+    checkPetsc(PetscOptionsInsertString(nullptr, options.petscOptions.c_str()),
+               "PetscOptionsInsertString (SOLVEUR/OPTION_PETSC)");
     // The options stay in PETSc's database through KSPSetUp: multigrid creates its levels' smoothers
     // there and reads their options (-mg_levels_*, -mg_coarse_*) only then.
     PetscErrorCode code = KSPSetFromOptions(ksp);
     if (code == 0) code = KSPSetUp(ksp);
     const int unused = unusedGiven(defaults, options.petscOptions);
-    check(PetscOptionsClear(nullptr), "PetscOptionsClear");
-    check(PetscOptionsSetValue(nullptr, "-no_signal_handler", "true"), "PetscOptionsSetValue");
+    checkPetsc(PetscOptionsClear(nullptr), "PetscOptionsClear");
+    checkPetsc(PetscOptionsSetValue(nullptr, "-no_signal_handler", "true"), "PetscOptionsSetValue");
     PetscBool set = PETSC_FALSE;  // marks it used: the next solve counts only its own unused options
-    check(PetscOptionsHasName(nullptr, nullptr, "-no_signal_handler", &set), "PetscOptionsHasName");
-    check(code, options.petscOptions.empty() ? "KSPSetUp (the preconditioner's construction)"
-                                             : "KSPSetFromOptions / KSPSetUp (SOLVEUR/OPTION_PETSC)");
+    checkPetsc(PetscOptionsHasName(nullptr, nullptr, "-no_signal_handler", &set), "PetscOptionsHasName");
+    checkPetsc(code, options.petscOptions.empty() ? "KSPSetUp (the preconditioner's construction)"
+                                                  : "KSPSetFromOptions / KSPSetUp (SOLVEUR/OPTION_PETSC)");
     if (!defaults.empty()) msg().infof("    PRE_COND='{}': miniaster's options {}", options.preconditioner, defaults);
     if (!options.petscOptions.empty())
         msg().infof("    OPTION_PETSC='{}' given to PETSc{}", options.petscOptions,

@@ -11,6 +11,9 @@
 namespace ma {
 
 // ALGORITHME, or CG for GCPC.
+// A PETSc call's error code as an exception naming the call (NumericalError).
+void checkPetsc(PetscErrorCode code, const char* call);
+
 std::string krylovAlgorithm(const SolverOptions& options);
 // A NotImplemented / UserError for what PETSc cannot do here or cannot converge on: a saddle-point
 // system (`indefinite`: multipliers, contact unknowns) with a preconditioner that divides by its

@@ -27,10 +27,6 @@ namespace ma {
 
 namespace {
 
-void check(PetscErrorCode code, const char* call) {
-    if (code != 0) throw NumericalError(fmt::format("PETSc: {} failed (PETSc error code {})", call, int(code)));
-}
-
 // PETSc on the MPI the process already runs, once; its errors come back as codes (no printing,
 // no signal handlers of its own). PetscFinalize is not called: it must precede MPI_Finalize, which
 // core/Mpi runs at exit; the objects are destroyed by their owners before.
@@ -38,9 +34,9 @@ void initialisePetsc() {
     static bool done = false;
     if (done) return;
     mpi::initialise();
-    check(PetscOptionsSetValue(nullptr, "-no_signal_handler", "true"), "PetscOptionsSetValue");
-    check(PetscInitializeNoArguments(), "PetscInitializeNoArguments");
-    check(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr), "PetscPushErrorHandler");
+    checkPetsc(PetscOptionsSetValue(nullptr, "-no_signal_handler", "true"), "PetscOptionsSetValue");
+    checkPetsc(PetscInitializeNoArguments(), "PetscInitializeNoArguments");
+    checkPetsc(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr), "PetscPushErrorHandler");
     done = true;
 }
 
@@ -151,25 +147,25 @@ public:
         destroyOperator();
         if (usesFactors(options_)) {
             scaled_ = CsrMatrix{}, rowStart_.clear();
-            check(MatCreateShell(PETSC_COMM_SELF, A.rows, A.rows, A.rows, A.rows, &operator_, &matrix_),
-                  "MatCreateShell");
-            check(MatShellSetOperation(matrix_, MATOP_MULT, reinterpret_cast<void (*)(void)>(multiplyScaled)),
-                  "MatShellSetOperation");
+            checkPetsc(MatCreateShell(PETSC_COMM_SELF, A.rows, A.rows, A.rows, A.rows, &operator_, &matrix_),
+                       "MatCreateShell");
+            checkPetsc(MatShellSetOperation(matrix_, MATOP_MULT, reinterpret_cast<void (*)(void)>(multiplyScaled)),
+                       "MatShellSetOperation");
         } else {
             scaled_ = scaledCopy(A, scale_, options_);
             rowStart_.assign(scaled_.rowStart.begin(), scaled_.rowStart.end());
-            check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, A.rows, A.rows, rowStart_.data(), scaled_.cols.data(),
-                                            scaled_.values.data(), &matrix_),
-                  "MatCreateSeqAIJWithArrays");
+            checkPetsc(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, A.rows, A.rows, rowStart_.data(), scaled_.cols.data(),
+                                                 scaled_.values.data(), &matrix_),
+                       "MatCreateSeqAIJWithArrays");
         }
-        check(MatSetOption(matrix_, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+        checkPetsc(MatSetOption(matrix_, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
         if (options_.preconditioner == "GAMG" || options_.preconditioner == "ML") attachNearNullSpace();
         if (keep) {
             msg().infof(
                 "    {}: preconditioner kept from the previous matrix (its last solve took {} iterations, "
                 "REAC_PRECOND={})",
                 name(), lastIterations_, options_.reacPrecond);
-            check(KSPSetOperators(ksp_, matrix_, matrix_), "KSPSetOperators");
+            checkPetsc(KSPSetOperators(ksp_, matrix_, matrix_), "KSPSetOperators");
             stale_ = true;
             return;
         }
@@ -202,20 +198,20 @@ private:
         const auto t0 = std::chrono::steady_clock::now();
         MemoryPhase phase;
         destroySolver();
-        check(KSPCreate(PETSC_COMM_SELF, &ksp_), "KSPCreate");
-        check(KSPSetOperators(ksp_, matrix_, matrix_), "KSPSetOperators");
+        checkPetsc(KSPCreate(PETSC_COMM_SELF, &ksp_), "KSPCreate");
+        checkPetsc(KSPSetOperators(ksp_, matrix_, matrix_), "KSPSetOperators");
         configureKrylov(ksp_, options_);
         PC pc = nullptr;
-        check(KSPGetPC(ksp_, &pc), "KSPGetPC");
+        checkPetsc(KSPGetPC(ksp_, &pc), "KSPGetPC");
         if (usesFactors(options_)) {
             SolverOptions f = factorOptions(options_);
             factors_.factors = makeMumpsFactors(f);
             factors_.factors->factorizeWith(*A_, scale_, kind_, rowPoints_);  // S A S
             factors_.applications = 0, factors_.seconds = 0.0;
-            check(PCSetType(pc, PCSHELL), "PCSetType");
-            check(PCShellSetContext(pc, &factors_), "PCShellSetContext");
-            check(PCShellSetApply(pc, applyFactors), "PCShellSetApply");
-            check(PCShellSetName(pc, options_.preconditioner.c_str()), "PCShellSetName");
+            checkPetsc(PCSetType(pc, PCSHELL), "PCSetType");
+            checkPetsc(PCShellSetContext(pc, &factors_), "PCShellSetContext");
+            checkPetsc(PCShellSetApply(pc, applyFactors), "PCShellSetApply");
+            checkPetsc(PCShellSetName(pc, options_.preconditioner.c_str()), "PCShellSetName");
         } else {
             factors_.factors.reset();
             configurePreconditioner(pc, options_);
@@ -252,11 +248,11 @@ private:
             if (!(norm > 0.0)) continue;
             for (size_t i = 0; i < n; ++i) v[i] /= norm;
             Vec vec = nullptr;
-            check(VecCreateSeq(PETSC_COMM_SELF, PetscInt(n), &vec), "VecCreateSeq");
+            checkPetsc(VecCreateSeq(PETSC_COMM_SELF, PetscInt(n), &vec), "VecCreateSeq");
             PetscScalar* a = nullptr;
-            check(VecGetArray(vec, &a), "VecGetArray");
+            checkPetsc(VecGetArray(vec, &a), "VecGetArray");
             std::copy(v, v + n, a);
-            check(VecRestoreArray(vec, &a), "VecRestoreArray");
+            checkPetsc(VecRestoreArray(vec, &a), "VecRestoreArray");
             vecs.push_back(vec);
         }
         MatNullSpace space = nullptr;
@@ -264,7 +260,7 @@ private:
             MatNullSpaceCreate(PETSC_COMM_SELF, PETSC_FALSE, PetscInt(vecs.size()), vecs.data(), &space);
         if (code == 0) MatSetNearNullSpace(matrix_, space), MatNullSpaceDestroy(&space);
         for (Vec& v : vecs) VecDestroy(&v);
-        check(code, "MatNullSpaceCreate");
+        checkPetsc(code, "MatNullSpaceCreate");
         nearNullModes_ = int(vecs.size());
     }
 
@@ -276,8 +272,8 @@ private:
         std::vector<double> sb(n), y(n, 0.0), r(n);
         for (size_t i = 0; i < n; ++i) sb[i] = scale_[i] * b[i];
         Vec vb = nullptr, vy = nullptr;
-        check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, PetscInt(n), sb.data(), &vb), "VecCreateSeqWithArray");
-        check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, PetscInt(n), y.data(), &vy), "VecCreateSeqWithArray");
+        checkPetsc(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, PetscInt(n), sb.data(), &vb), "VecCreateSeqWithArray");
+        checkPetsc(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, PetscInt(n), y.data(), &vy), "VecCreateSeqWithArray");
         const int appliedBefore = factors_.applications;
         const double applyBefore = factors_.seconds;
         const PetscErrorCode code = KSPSolve(ksp_, vb, vy);
@@ -288,7 +284,7 @@ private:
         KSPGetIterationNumber(ksp_, &iterations);
         KSPGetResidualNorm(ksp_, &estimate);
         VecDestroy(&vb), VecDestroy(&vy);
-        check(code, "KSPSolve");
+        checkPetsc(code, "KSPSolve");
         operator_.apply(y.data(), r.data());
         long double num = 0.0L, den = 0.0L;
         for (size_t i = 0; i < n; ++i) num += (sb[i] - r[i]) * (sb[i] - r[i]), den += sb[i] * sb[i];

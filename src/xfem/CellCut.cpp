@@ -25,20 +25,6 @@ constexpr double kVertexOnInterface = 1e-9;  // zero closer than this (relative)
 // whose measure is below it times its cofactors is numerically zero.
 constexpr double kMeasureRoundOff = 16 * 2.2e-16;
 
-// Characteristic length of the parent (loncar).
-double characteristicLength(const Mesh& mesh, int cell) {
-    const auto n = mesh.cellNodes(cell);
-    auto d = [&](int a, int b) { return distance(mesh.coords[n[a]], mesh.coords[n[b]]); };
-    switch (mesh.cellTypes[cell]) {
-        case CellType::SEG2: return d(0, 1);
-        case CellType::TRIA3:
-        case CellType::QUAD4: return std::sqrt(d(0, 1) * d(0, 2));
-        case CellType::TETRA4: return std::cbrt(d(0, 1) * d(0, 2) * d(0, 3));
-        case CellType::HEXA8: return d(0, 6);
-        default: return d(0, 1);
-    }
-}
-
 using Piece = std::vector<int>;
 
 class Cutter {

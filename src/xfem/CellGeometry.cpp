@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/Error.hpp"
+#include "core/Vec3.hpp"
 #include "mesh/ShapeFunctions.hpp"
 
 namespace ma::xfem {
@@ -68,6 +69,21 @@ double simplexMeasure(int dim, std::span<const std::array<double, 3>> v) {
     if (dim == 2) return 0.5 * (ax * by - ay * bx);
     const double cx = v[3][0] - v[0][0], cy = v[3][1] - v[0][1], cz = v[3][2] - v[0][2];
     return (ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx)) / 6.0;
+}
+
+double characteristicLength(const Mesh& mesh, int cell) {
+    const auto nodes = mesh.cellNodes(cell);
+    auto d = [&](int a, int b) {
+        return distance(mesh.coords[size_t(nodes[size_t(a)])], mesh.coords[size_t(nodes[size_t(b)])]);
+    };
+    switch (mesh.cellTypes[size_t(cell)]) {
+        case CellType::SEG2: return d(0, 1);
+        case CellType::HEXA8: return d(0, 6);
+        case CellType::TETRA4: return std::cbrt(d(0, 1) * d(0, 2) * d(0, 3));
+        case CellType::QUAD4:
+        case CellType::TRIA3: return std::sqrt(d(0, 1) * d(0, 2));
+        default: throw NotImplemented("characteristic length of cell " + mesh.cellNames[size_t(cell)]);
+    }
 }
 
 }  // namespace ma::xfem

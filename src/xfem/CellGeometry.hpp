@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "mesh/CellType.hpp"
+#include "mesh/Mesh.hpp"
 
 namespace ma::xfem {
 
@@ -28,5 +29,9 @@ bool xfemSupports(CellType type);
 // Signed measure of the simplex with the given vertices (dim 1, 2 or 3), in the coordinates given
 // (reference or physical). 2D: z ignored.
 double simplexMeasure(int dim, std::span<const std::array<double, 3>> v);
+
+// code_aster's characteristic length of a cell (loncar): SEG2 its length, QUAD4 and TRIA3
+// sqrt(|P1P2| |P1P3|), TETRA4 the cube root of its three edges from P1, HEXA8 its diagonal P1P7.
+double characteristicLength(const Mesh& mesh, int cell);
 
 }  // namespace ma::xfem

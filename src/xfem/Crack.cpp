@@ -358,20 +358,6 @@ std::shared_ptr<Crack> buildCrackWithFront(const std::shared_ptr<const Mesh>& me
     return crack;
 }
 
-double characteristicLength(const Mesh& mesh, int cell) {
-    const auto nodes = mesh.cellNodes(cell);
-    auto d = [&](int a, int b) {
-        return distance(mesh.coords[size_t(nodes[size_t(a)])], mesh.coords[size_t(nodes[size_t(b)])]);
-    };
-    switch (mesh.cellTypes[size_t(cell)]) {
-        case CellType::HEXA8: return d(0, 6);
-        case CellType::TETRA4: return std::cbrt(d(0, 1) * d(0, 2) * d(0, 3));
-        case CellType::QUAD4:
-        case CellType::TRIA3: return std::sqrt(d(0, 1) * d(0, 2));
-        default: throw NotImplemented("characteristic length of cell " + mesh.cellNames[size_t(cell)]);
-    }
-}
-
 double enrichCrackTipZone(Crack& crack, double radius, int layers) {
     const Mesh& mesh = *crack.mesh;
     if (crack.tipCells.empty()) return 0.0;

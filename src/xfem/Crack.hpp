@@ -70,10 +70,6 @@ std::shared_ptr<Crack> buildCrack(const std::shared_ptr<const Mesh>& mesh, std::
 std::shared_ptr<Crack> buildCrackWithFront(const std::shared_ptr<const Mesh>& mesh, std::vector<double> lsn,
                                            std::vector<double> lst);
 
-// code_aster's characteristic length of a cell (loncar): QUAD4, TRIA3 sqrt(|P1P2| |P1P3|), TETRA4
-// the cube root of its three edges from P1, HEXA8 its diagonal P1P7.
-double characteristicLength(const Mesh& mesh, int cell);
-
 // TYPE_ENRI_FOND='GEOMETRIQUE' (xstano, xstama): nodes with sqrt(LSN^2 + LST^2) <= radius take the
 // crack-tip status too (0 -> 2, 1 -> 3); with radius <= 0, radius = layers (NB_COUCHES) times the
 // smallest characteristic length of the tip cells. Returns the radius used (0 without a front).
