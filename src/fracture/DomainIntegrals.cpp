@@ -71,7 +71,9 @@ bool turns(const FrontFrame& f) {
 //   dG_mn/dx_j = u_k,ab (e_b)_j (e_a)_n (e_k)_m + u_k,a [(D_a)_nj (e_k)_m + (e_a)_n (D_k)_mj + (e_a)_j (D_k)_mn]
 // + u_k dD_k/dx. The first term is left out: Williams' plane fields solve Navier's equations in
 // their plane (it adds nothing to div sigma^a) and it is symmetric in j, n (nothing to the curl).
-// The last (the basis' second derivatives, u_k ~ sqrt r times 1/rho^2) is left out too.
+// The last is symmetric in j, n too; in div sigma^a it gives u_k (lambda + 2 mu) grad(div e_k) for a
+// basis vector that is a gradient (e1, e2: of LST, LSN), added in curvedFrontTerm; e3's (mode III)
+// is left out.
 using Tensor3 = double[3][3][3];
 
 void auxiliaryGradientDerivative(const LocalField& local, const FrontFrame& f, Tensor3& t) {
@@ -107,6 +109,7 @@ double curvedFrontTerm(const LocalField& local, const FrontFrame& f, const Elast
             divSigma += c.mu * (t[i][j][j] + t[j][i][j]) + c.lambda * t[j][j][i];
             gradUTheta += p.gradU[i][j] * p.theta[j];
         }
+        for (size_t k = 0; k < 2; ++k) divSigma += (c.lambda + 2 * c.mu) * local.u[k] * f.divergenceGradient[k][i];
         v += divSigma * gradUTheta;
         for (size_t j = 0; j < 3; ++j)
             for (size_t k = 0; k < 3; ++k) v += s[i][j] * (t[i][k][j] - t[i][j][k]) * p.theta[k];

@@ -29,6 +29,9 @@ struct FrontFrame {
     // displacement u_k e_k turns with the basis, which adds u_k d(e_k)_i / dx_j to its gradient.
     // Zero for a straight front and in 2D.
     double basisGradient[3][3][3]{};
+    // grad(div e1), grad(div e2) at the point: the basis' second derivatives in the curved front's
+    // volume term (e1, e2 taken as the gradients of LST, LSN). Zero for a straight front.
+    Vec3 divergenceGradient[2]{};
 };
 
 // What the integrals need at one integration point.
