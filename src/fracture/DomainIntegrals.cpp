@@ -93,7 +93,7 @@ void auxiliaryGradientDerivative(const LocalField& local, const FrontFrame& f, T
         }
 }
 
-// The volume term of the interaction integral on a curved front (Gosz & Moran 2002, docs/cracks.md):
+// The volume term of the interaction integral on a curved front (docs/cracks.md, the penny section):
 // the divergence of the interaction's energy-momentum tensor, which vanishes for the straight
 // front's fields, is here
 //   [div sigma^a . (grad u theta)] + sigma_ij (G_ik,j - G_ij,k) theta_k
