@@ -8,7 +8,9 @@
 //
 // (no body force, unloaded lips, linear elasticity, small strains), with the auxiliary Williams
 // fields ua of unit K: K1 = E* I(mode I) / 2, K2 = E* I(mode II) / 2, K3 = mu I(mode III),
-// E* = E / (1 - nu^2) in plane strain and 3D, E in plane stress.
+// E* = E / (1 - nu^2) in plane strain and 3D, E in plane stress. Where the frame turns (a curved 3D
+// front) I(a) also takes the volume term sum_p w [div sigma^a . (grad u theta) + sigma_ij (ua_i,kj
+// - ua_i,jk) theta_k] that the straight front's fields do not need (docs/cracks.md).
 #include <array>
 #include <span>
 #include <vector>
@@ -27,6 +29,9 @@ struct FrontFrame {
     // displacement u_k e_k turns with the basis, which adds u_k d(e_k)_i / dx_j to its gradient.
     // Zero for a straight front and in 2D.
     double basisGradient[3][3][3]{};
+    // grad(div e1), grad(div e2) at the point: the basis' second derivatives in the curved front's
+    // volume term (e1, e2 taken as the gradients of LST, LSN). Zero for a straight front.
+    Vec3 divergenceGradient[2]{};
 };
 
 // What the integrals need at one integration point.

@@ -106,7 +106,8 @@ FrontFrame interpolatedFrame(const std::vector<xfem::FrontBasis>& basloc, std::s
 
 void domainPoints3D(const Discretisation& space, const std::vector<double>& u,
                     const std::vector<std::vector<Vec3>>& thetas, const std::vector<double>& lsn,
-                    const std::vector<xfem::FrontBasis>& basloc, const FieldPointSink& sink) {
+                    const std::vector<xfem::FrontBasis>& basloc,
+                    const std::vector<std::array<double, 2>>& basisDivergence, const FieldPointSink& sink) {
     const Mesh& mesh = space.mesh();
     std::vector<std::vector<DomainPoint>> points(thetas.size());
     std::vector<std::vector<FrontFrame>> frames(thetas.size());
@@ -144,6 +145,11 @@ void domainPoints3D(const Discretisation& space, const std::vector<double>& u,
             q.side = levelSet > 0 ? 1.0 : (levelSet < 0 ? -1.0 : 0.0);
             FrontFrame frame = interpolatedFrame(basloc, nodes, N);
             basisGradient(basloc, nodes, std::span<const double>(&geo.gradN[p * n * 3], n * 3), frame);
+            for (size_t a = 0; a < n && !basisDivergence.empty(); ++a)
+                for (size_t k = 0; k < 2; ++k)
+                    for (size_t j = 0; j < 3; ++j)
+                        frame.divergenceGradient[k][j] +=
+                            basisDivergence[size_t(nodes[a])][k] * geo.gradN[(p * n + a) * 3 + j];
             for (size_t k : fields) {
                 DomainPoint r = q;
                 for (size_t a = 0; a < n; ++a) {
@@ -159,6 +165,18 @@ void domainPoints3D(const Discretisation& space, const std::vector<double>& u,
         }
         for (size_t k : fields) sink(k, points[k], frames[k]);
     }
+}
+
+std::vector<std::array<double, 2>> basisDivergence(const Mesh& mesh, const std::vector<xfem::FrontBasis>& basloc) {
+    std::vector<std::array<double, 2>> out(basloc.size(), {0.0, 0.0});
+    std::vector<double> component(basloc.size());
+    for (size_t k = 0; k < 2; ++k)
+        for (size_t c = 0; c < 3; ++c) {
+            for (size_t n = 0; n < basloc.size(); ++n) component[n] = unit(k == 0 ? basloc[n].e1 : basloc[n].e2)[c];
+            const auto gradient = xfem::nodalLevelSetGradient(mesh, component);
+            for (size_t n = 0; n < basloc.size(); ++n) out[n][k] += gradient[n][c];
+        }
+    return out;
 }
 
 }  // namespace ma::fracture

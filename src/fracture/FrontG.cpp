@@ -6,6 +6,27 @@
 
 namespace ma::fracture {
 
+namespace {
+
+// The nodes whose BASLOC the integrals read: those of the cells where some theta is not zero (the
+// lip term reads the frames where theta is constant too), and one cell beyond, since the nodal
+// divergence of the bases averages the cells around a node.
+std::vector<char> baslocNodes(const Mesh& mesh, const FrontGSetup& setup) {
+    std::vector<char> read(size_t(mesh.nodeCount()), 0), wide;
+    for (int cell = 0; cell < mesh.cellCount(); ++cell)
+        if (anyThetaReaches(mesh, cell, setup))
+            for (int n : mesh.cellNodes(cell)) read[size_t(n)] = 1;
+    wide = read;
+    for (int cell = 0; cell < mesh.cellCount(); ++cell) {
+        const auto nodes = mesh.cellNodes(cell);
+        if (std::any_of(nodes.begin(), nodes.end(), [&](int n) { return read[size_t(n)] != 0; }))
+            for (int n : nodes) wide[size_t(n)] = 1;
+    }
+    return wide;
+}
+
+}  // namespace
+
 FrontGSetup frontGSetup(const Mesh& mesh, const xfem::Crack& crack, int numeFond,
                         std::optional<std::pair<double, double>> radii, GSmoothing smoothing, int degree,
                         size_t points) {
@@ -33,11 +54,8 @@ FrontGSetup frontGSetup(const Mesh& mesh, const xfem::Crack& crack, int numeFond
         for (size_t k = 0; k < front.points.size(); ++k)
             setup.thetas.push_back(frontTheta(mesh, front, nodes, gt, lagrangeHat(front, k), setup.rInf, setup.rSup));
     }
-    std::vector<char> read(size_t(mesh.nodeCount()), 0);
-    for (int cell = 0; cell < mesh.cellCount(); ++cell)
-        if (anyThetaReaches(mesh, cell, setup))  // the lip term reads the frames where theta is constant too
-            for (int n : mesh.cellNodes(cell)) read[size_t(n)] = 1;
-    setup.basloc = xfem::frontBases(mesh, crack, read);
+    setup.basloc = xfem::frontBases(mesh, crack, baslocNodes(mesh, setup));
+    setup.basisDivergence = basisDivergence(mesh, setup.basloc);
     return setup;
 }
 
@@ -55,7 +73,7 @@ std::vector<FrontValues> frontValues(const Discretisation& space, const std::vec
                                      const xfem::Crack& crack, const FrontGSetup& setup, bool withK,
                                      const std::vector<LipPoint>& lips) {
     std::vector<FrontValues> integrals(setup.thetas.size());
-    domainPoints3D(space, u, setup.thetas, crack.lsn, setup.basloc,
+    domainPoints3D(space, u, setup.thetas, crack.lsn, setup.basloc, setup.basisDivergence,
                    [&](size_t k, const std::vector<DomainPoint>& points, const std::vector<FrontFrame>& frames) {
                        const auto v = domainIntegrals(points, frames, space.model().modelisation, 3, withK);
                        FrontValues& sum = integrals[k];

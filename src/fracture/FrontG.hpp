@@ -19,8 +19,9 @@ struct FrontGSetup {
     Front3D front;
     GSmoothing smoothing = GSmoothing::Lagrange;
     double rInf = 0.0, rSup = 0.0;
-    std::vector<std::vector<Vec3>> thetas;  // per front point (or degree), at every mesh node
-    std::vector<xfem::FrontBasis> basloc;   // at the nodes where some theta varies
+    std::vector<std::vector<Vec3>> thetas;               // per front point (or degree), at every mesh node
+    std::vector<xfem::FrontBasis> basloc;                // at the nodes where some theta varies, and one cell beyond
+    std::vector<std::array<double, 2>> basisDivergence;  // div e1, div e2 at the nodes (DomainSampling)
 };
 
 // `radii`: R_INF, R_SUP when given; otherwise 2 and 4 times the largest TAILLE_R of the front's
