@@ -274,6 +274,10 @@ private:
         // the others then waited for it forever). Unit 0 is stderr.
         id_.icntl[0] = 0, id_.icntl[1] = 0, id_.icntl[2] = 0, id_.icntl[3] = 0;
         id_.icntl[13] = options_.pcentPivot;
+        // A positive definite matrix scaled to a unit diagonal has its largest entry of every row and
+        // column there (|K_ij| <= sqrt(K_ii K_jj)): it is equilibrated, and MUMPS's own scaling
+        // (ICNTL(8)=77 picks its iterative row and column scaling) only costs a pass per factorisation.
+        if (options_.diagonalScaling && spd) id_.icntl[7] = 0;
         mumps::setInputFormat(id_, options_);
         refuseLowRank(options_);
         if (options_.acceleration == "FR+" || options_.acceleration == "FR++")

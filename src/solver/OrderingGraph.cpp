@@ -24,10 +24,16 @@ OrderingGraph supervariableGraph(const CsrMatrix& A, const Supervariables& s) {
     const size_t n = s.size.size();
     OrderingGraph g;
     g.start.assign(n + 1, 0);
+    // The rows of a supervariable have the same columns, so its first row gives all its edges, and
+    // a neighbour's columns are consecutive: each edge is visited once, not once per pair of rows.
     auto forEachEdge = [&](auto&& visit) {
-        for (int i = 0; i < A.rows; ++i)
+        for (int i = 0; i < A.rows; ++i) {
+            const int a = s.of[i];
+            if (i > 0 && s.of[i - 1] == a) continue;
+            int last = a;
             for (long long k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k)
-                if (const int j = A.cols[k]; j > i && s.of[i] != s.of[j]) visit(s.of[i], s.of[j]);
+                if (const int j = A.cols[k]; j > i && s.of[j] != last) last = s.of[j], visit(a, last);
+        }
     };
     forEachEdge([&](int a, int b) { ++g.start[a + 1], ++g.start[b + 1]; });
     for (size_t v = 0; v < n; ++v) g.start[v + 1] += g.start[v];

@@ -14,6 +14,7 @@
 #include "solver/CoordinateOrdering.hpp"
 #include "solver/LinearSolver.hpp"
 #include "solver/MetisOrdering.hpp"
+#include "solver/OrderingGraph.hpp"
 
 using namespace ma;
 
@@ -89,6 +90,25 @@ TEST(SolverOrdering, NestedDissectionIsAPermutationKeepingNodesTogether) {
     expectNodeBlockPermutation(o, A.rows);
     EXPECT_EQ(o.vertices, 900);
     EXPECT_EQ(o.graphEdges, 2 * 29 * 30 + 2 * 29 * 29);  // 9-point stencil: 4 edges per cell, shared
+}
+
+// The graph of the supervariables (a node's unknowns, 2 or 4 here): each node joined to its 8 grid
+// neighbours once, in increasing order, whatever the number of rows of either.
+TEST(SolverOrdering, SupervariableGraphJoinsEachNodeToItsNeighboursOnce) {
+    const int k = 7;
+    const CsrMatrix A = gridMatrix(k, 3, 4);
+    const Supervariables s = consecutiveIdenticalRows(A);
+    ASSERT_EQ(s.size.size(), size_t(k * k));
+    const OrderingGraph g = supervariableGraph(A, s);
+    for (int n = 0; n < k * k; ++n) {
+        std::vector<idx_t> expected;
+        for (int di = -1; di <= 1; ++di)
+            for (int dj = -1; dj <= 1; ++dj)
+                if (const int a = n / k + di, b = n % k + dj; (di || dj) && a >= 0 && b >= 0 && a < k && b < k)
+                    expected.push_back(a * k + b);
+        const std::vector<idx_t> got(g.neighbours.begin() + g.start[n], g.neighbours.begin() + g.start[n + 1]);
+        EXPECT_EQ(got, expected) << "node " << n;
+    }
 }
 
 TEST(SolverOrdering, OrderingIsReproducible) {
