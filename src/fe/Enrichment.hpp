@@ -38,6 +38,11 @@ public:
     virtual bool isEnriched(int cell) const = 0;
     // Integration description of an enriched element (volume or skin cell).
     virtual void integration(int cell, ElementIntegration& out) const = 0;
+    // The material's crack-tip fields (ei.tipPhi, as applyTipLaw gives them; tipA, tipB left empty)
+    // at the points of `ei`, the description `integration` gave for `cell` (refPoints, pointSubcell,
+    // tip flags): a Discretisation keeps the description without them and fills them again each
+    // time it hands the element out.
+    virtual void tipFields(int /*cell*/, const TipLaw& /*law*/, ElementIntegration& /*ei*/) const {}
     // Parent local nodes that are vertices of each integration sub-cell of an enriched `cell`, in
     // sub-cell order (ElementIntegration::pointSubcell); empty for a classical cell. CALC_CHAMP's
     // ELNO fields average the sub-cells around each parent node (post/NodeValues.hpp).

@@ -70,6 +70,7 @@ public:
                    std::vector<LinearRelation>& out) const override;
     int boundaryTipFields(int cell, const std::vector<std::array<double, 3>>& xyz,
                           ElementIntegration& ei) const override;
+    void tipFields(int cell, const TipLaw& law, ElementIntegration& ei) const override;
     // PRES_REP FISSURE: the faces of each side's sub-cells on the interface (xfem/LipFaces.cpp).
     bool lipIntegration(const Concept& crack, std::vector<LipIntegration>& out) const override;
 
@@ -148,7 +149,8 @@ public:
 
 private:
     void buildTip();
-    void addTipFields(const CellCut& cut, ElementIntegration& out) const;
+    // ei.tipA, tipB; with `law`, ei.tipPhi instead (tipElementFields).
+    void addTipFields(const CellCut& cut, ElementIntegration& out, const TipLaw* law = nullptr) const;
     // Points and weights of a crack-tip element's sub-cell s (2D, catalogue rules): collapsed
     // Gauss rules, fanned from the front point when the sub-cell contains it.
     void tipSubcellRule(const CellCut& cut, int s, std::vector<std::array<double, 3>>& points,
