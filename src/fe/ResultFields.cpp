@@ -1,5 +1,7 @@
 #include "fe/ResultFields.hpp"
 
+#include <mutex>
+
 #include "fe/ElasticityKernels.hpp"
 #include "fe/Parallel.hpp"
 
@@ -45,6 +47,21 @@ std::shared_ptr<GaussField> emptyPointField(const Discretisation& space, const s
     return field;
 }
 
+// The point geometry of the latest stress or strain field: the next field on the same points (the
+// next solve of the model: ssnv185c's three results, ~6e5 points each) shares its storage instead
+// of keeping its own copy (60 bytes a point). Watched, not owned: it lives as long as a field holds it.
+void shareGeometry(GaussField& field) {
+    static std::mutex guard;
+    static std::weak_ptr<const std::vector<std::array<double, 3>>> coords, refCoords;
+    static std::weak_ptr<const std::vector<double>> weights;
+    static std::weak_ptr<const std::vector<int>> subcells;
+    const std::lock_guard lock(guard);
+    if (!field.pointCoords.shareIfEqual(coords)) coords = field.pointCoords.watch();
+    if (!field.pointWeights.shareIfEqual(weights)) weights = field.pointWeights.watch();
+    if (!field.pointSubcell.shareIfEqual(subcells)) subcells = field.pointSubcell.watch();
+    if (!field.pointRefCoords.shareIfEqual(refCoords)) refCoords = field.pointRefCoords.watch();
+}
+
 using PointStore = void (*)(const double G[3][3], const IsotropicLaw& law, int dim, double* out);
 
 // A tensor at every integration point (X-FEM sub-cell points included) from the displacement
@@ -54,6 +71,10 @@ std::shared_ptr<GaussField> pointField(const Discretisation& space, const std::v
     const int dim = space.dim();
     const size_t nc = field->components.size();
     const size_t nElements = space.elementCount();
+    auto& coords = field->pointCoords.mut();
+    auto& weights = field->pointWeights.mut();
+    auto& subcells = field->pointSubcell.mut();
+    auto& refCoords = field->pointRefCoords.mut();
     // Every element writes its own points (element ranges on the workers).
     parallelRanges(nElements, nElements >= 4096 ? workerCount() : 1, [&](size_t begin, size_t end, int) {
         GeneralElementScratch scratch;
@@ -65,10 +86,10 @@ std::shared_ptr<GaussField> pointField(const Discretisation& space, const std::v
             const size_t first = size_t(field->pointOffsets[e]);
             auto store = [&](size_t p, const std::array<double, 3>& xyz, double weight, int subcell,
                              const std::array<double, 3>& ref, const double G[3][3]) {
-                field->pointCoords[first + p] = xyz;
-                field->pointWeights[first + p] = weight;
-                field->pointSubcell[first + p] = subcell;
-                field->pointRefCoords[first + p] = ref;
+                coords[first + p] = xyz;
+                weights[first + p] = weight;
+                subcells[first + p] = subcell;
+                refCoords[first + p] = ref;
                 tensorAt(G, law, dim, field->values.data() + (first + p) * nc);
             };
             space.visit(
@@ -96,6 +117,7 @@ std::shared_ptr<GaussField> pointField(const Discretisation& space, const std::v
                 });
         }
     });
+    shareGeometry(*field);
     return field;
 }
 
