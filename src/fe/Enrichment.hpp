@@ -20,7 +20,8 @@ class Concept;  // core/Concept.hpp
 // (PRES_REP FISSURE): the faces of that side's integration sub-cells that lie on the interface.
 struct LipIntegration {
     // Parent cell, points in its reference element, the node slots and psi of that side; the
-    // physical weights are `weight` (refWeights unused).
+    // physical weights are `weight` (refWeights unused). Crack-tip nodes are flagged (element.tip)
+    // without the fields: tipFields gives Phi for the material of the load's user.
     ElementIntegration element;
     std::vector<std::array<double, 3>> xyz;     // physical points
     std::vector<double> weight;                 // physical weights (length or area of the faces)

@@ -131,9 +131,6 @@ public:
     // sub-cell (POST_K1_K2_K3: the jump of the tip terms across the lips, code_aster's pjxfem).
     bool tipMatrixOnSide(int cell, const std::array<double, 3>& ref, int side, double lambdaEff, double mu,
                          TipPoint& out) const;
-    // The crack-tip fields (ei.tip, tipA, tipB) at ei.refPoints of volume cell `cell`, each point on
-    // the side side[p] (+1, -1) of the crack (lip loads: the fields on either lip).
-    void tipFieldsAt(int cell, const std::vector<signed char>& side, ElementIntegration& ei) const;
     // Gauss-Legendre points per direction of the collapsed rules of crack-tip elements (2D).
     static constexpr int kTipGaussPoints = 12;
     // 3D fanned rules (TipEnrichment's fannedTetrahedronRule): points along the two radii and the

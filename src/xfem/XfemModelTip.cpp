@@ -221,11 +221,6 @@ bool XfemModel::tipMatrixOnSide(int cell, const std::array<double, 3>& ref, int 
     return true;
 }
 
-void XfemModel::tipFieldsAt(int cell, const std::vector<signed char>& side, ElementIntegration& ei) const {
-    if (tipNodes_.empty()) return;
-    tipElementFields(*mesh_, cell, dim_, bases_, cracks_[size_t(tipCrack_)]->nodeStatus, tipNodes_, side, ei);
-}
-
 int XfemModel::boundaryTipFields(int cell, const std::vector<std::array<double, 3>>& xyz,
                                  ElementIntegration& ei) const {
     if (tipNodes_.empty()) return -1;
