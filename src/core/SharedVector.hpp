@@ -62,14 +62,13 @@ public:
         v.insert(v.begin() + offset, n, value);
     }
 
-    // Sharing: the storage as it is now (for a cache that watches it), and taking `other`'s when
-    // it holds the same values (nothing changes otherwise).
+    // Sharing: the storage as it is now, for a cache that watches it without keeping it.
     std::weak_ptr<const std::vector<T>> watch() const { return data_; }
-    bool shareIfEqual(const std::weak_ptr<const std::vector<T>>& other) {
+    // Takes `other`'s storage as it is (the caller checks the values); false when it is gone.
+    bool adopt(const std::weak_ptr<const std::vector<T>>& other) {
         const auto held = other.lock();
-        if (!held || held == data_ || *held != get()) return held && held == data_;
-        data_ = std::const_pointer_cast<std::vector<T>>(held);  // read only while shared: mut() copies
-        return true;
+        if (held) data_ = std::const_pointer_cast<std::vector<T>>(held);
+        return held != nullptr;
     }
 
 private:

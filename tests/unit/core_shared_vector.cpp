@@ -1,6 +1,6 @@
 // core/SharedVector: the point geometry that the integration-point fields of one model share. A
-// change through one owner never shows through another (copy on write), and sharing happens only
-// between equal contents.
+// change through one owner never shows through another (copy on write); a watched storage is
+// adopted only while an owner keeps it.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -27,24 +27,23 @@ TEST(SharedVector, CopiesShareUntilOneChanges) {
     EXPECT_EQ(a.size(), 3u);
 }
 
-TEST(SharedVector, SharesOnlyEqualContents) {
+TEST(SharedVector, AdoptsAWatchedStorageWhileItLives) {
     SharedVector<std::array<double, 3>> first = std::vector<std::array<double, 3>>{{0.0, 1.0, 2.0}, {3.0, 4.0, 5.0}};
-    const auto watched = first.watch();
-    SharedVector<std::array<double, 3>> same = std::vector<std::array<double, 3>>{{0.0, 1.0, 2.0}, {3.0, 4.0, 5.0}};
-    SharedVector<std::array<double, 3>> other = std::vector<std::array<double, 3>>{{0.0, 1.0, 2.0}, {3.0, 4.0, 5.5}};
-    EXPECT_TRUE(same.shareIfEqual(watched));
-    EXPECT_EQ(same.watch().lock(), first.watch().lock());
-    EXPECT_FALSE(other.shareIfEqual(watched));
-    EXPECT_EQ(other[1][2], 5.5);
-    // Changing the shared copy leaves the first owner's values.
-    same.mut()[0][0] = 9.0;
+    SharedVector<std::array<double, 3>> later;
+    EXPECT_TRUE(later.adopt(first.watch()));
+    EXPECT_EQ(later.watch().lock(), first.watch().lock());
+    EXPECT_EQ(later[1][2], 5.0);
+    // Changing the adopted copy leaves the first owner's values.
+    later.mut()[0][0] = 9.0;
     EXPECT_EQ(first[0][0], 0.0);
-    // A watched storage whose owners are gone shares nothing.
+    EXPECT_EQ(later[0][0], 9.0);
+    // A watched storage whose owners are gone gives nothing.
     SharedVector<double> gone = std::vector<double>{1.0};
     const auto lost = gone.watch();
     gone.clear();
-    SharedVector<double> later = std::vector<double>{1.0};
-    EXPECT_FALSE(later.shareIfEqual(lost));
+    SharedVector<double> none;
+    EXPECT_FALSE(none.adopt(lost));
+    EXPECT_TRUE(none.empty());
     EXPECT_TRUE(gone.empty());
 }
 
