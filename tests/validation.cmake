@@ -10,10 +10,10 @@ file(GLOB _cases CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/astest/*.export)
 # processes are checked on the 3D crack tip by xfem_tip_williams_hexa8/_tetra4 and xfem_tip_k3d_hexa8
 # (POST_K1_K2_K3), on CALC_G with the lip term by glip_griffith_pressure.
 set(_one_process_only glip_ssnv185c_linear xfem_penny_hexa8)
-# Cases on ssnv185c's mesh whose solves and CALC_G / POST_K1_K2_K3 calls original_memory1024.ssnv185c
-# runs too (below): kept for `./miniaster run` (their extra checks: K2, K3 = 0 and G_IRWIN on every
-# crown; K1 at every front point, the lip pressure's superposition, DX = 0 of POST_CHAM_XFEM), not
-# in ctest (30-40 s each against the CI's 25 minutes).
+# Cases on ssnv185c's mesh whose solves and CALC_G / POST_K1_K2_K3 calls original.ssnv185c runs too:
+# kept for `./miniaster run` (their extra checks: K2, K3 = 0 and G_IRWIN on every crown; K1 at every
+# front point, the lip pressure's superposition, DX = 0 of POST_CHAM_XFEM), not in ctest (30-40 s each
+# against the CI's 25 minutes).
 set(_not_in_ctest g3d_ssnv185c_faces xfem_crack_185c_scene)
 foreach(_export ${_cases})
   get_filename_component(_name ${_export} NAME_WE)
@@ -43,12 +43,14 @@ set(MINIASTER_BEYOND ssnv173b ssnv173d ssnv173e ssnv173f ssnv173g ssnv195a ssnv2
     ssnp169a CACHE INTERNAL "")
 # Cracks (issue 26, docs/cracks.md): step 1, the level sets of a FORM_FISS crack; step 2 in 3D
 # (ssnv198a: TOPOLOGIQUE, K1 = K2 = K3 = 0, FACE_IMPO DNOR on Heaviside nodes); step 3 in 2D
-# (ssnp138a: CALC_G and POST_K1_K2_K3 on an inclined crack at five angles).
-set(MINIASTER_CRACKS sslv318a ssnv198a ssnp138a CACHE INTERNAL "")
+# (ssnp138a: CALC_G and POST_K1_K2_K3 on an inclined crack at five angles) and in 3D (ssnv185c: CALC_G
+# on six crowns, POST_K1_K2_K3, POST_CHAM_XFEM on a 3D front, within its .export's 512 MB: 480 MB,
+# docs/cracks.md "ssnv185c"; its time_limit 120 also bounds the elapsed time: ~75 s on a quiet machine).
+set(MINIASTER_CRACKS sslv318a ssnv198a ssnp138a ssnv185c CACHE INTERNAL "")
 # Originals whose NON_REGRESSION values are code_aster's own inexact results (docs/contact.md,
 # docs/family.md): exit 2 accepted when every reference check is OK (tools/run_validation.sh).
 set(MINIASTER_ORIGINALS_INEXACT_VALE_CALC ssnv511e ssnv511f ssnv511g ssnv511h ssnv512f ssnv513e ssnv513g
-    ssnp169a ssnp138a CACHE INTERNAL "")
+    ssnp169a ssnp138a ssnv185c CACHE INTERNAL "")
 # The one reference check allowed to stay NOOK: ssnv513e's ANALYTIQUE envelope -(X+5)/100 +- 0.06 of
 # DEPZON_4 DX-DX MAX, which the converged solution itself exceeds (0.0629 at N = 81, the refinement
 # study of docs/family.md). Its DEPZON_1 DX-DX MAX line is OK (0.044) and is not excused.
@@ -87,17 +89,6 @@ foreach(_name ${MINIASTER_ORIGINALS} ${MINIASTER_FAMILY} ${MINIASTER_BEYOND} ${M
     set_tests_properties(original_np2.${_name} PROPERTIES FIXTURES_REQUIRED one_process.${_name} PROCESSORS 2)
   endif()
 endforeach()
-
-# ssnv185c (3D crack, docs/cracks.md "ssnv185c"): its .comm and mesh unmodified, every reference check
-# OK (31: CALC_G on the faces traction UTOT1x and the lip pressure UTOT2x, POST_K1_K2_K3, POST_RELEVE_T,
-# POST_CHAM_XFEM), its 34 NON_REGRESSION values code_aster's own. Not in MINIASTER_CRACKS: the run
-# peaks at ~671 MB resident (the three solves 475 / 591 / 671 MB: the tip elements' stored crack-tip
-# fields and each result's fields) against the original .export's 512 MB, so it runs from
-# tests/ssnv185c_memory1024.export, the same files with memory_limit 1024 and time_limit 600 (miniaster's
-# time_limit also bounds the elapsed time: 55 s of CPU take 120-240 s on the shared 2-core machine).
-add_test(NAME original_memory1024.ssnv185c
-         COMMAND ${_run} $<TARGET_FILE:miniaster-bin> ${CMAKE_SOURCE_DIR}/tests/ssnv185c_memory1024.export
-                 ${CMAKE_BINARY_DIR}/astest-out/ssnv185c --allow-nonregression-nook)
 
 # The manufactured fields of the smooth scenes (open and with contact): derivatives against finite
 # differences, body force, contact conditions on the interfaces, and mutated fields that must fail

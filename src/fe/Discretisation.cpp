@@ -29,11 +29,11 @@ Discretisation::Discretisation(std::shared_ptr<const Model> model, std::shared_p
             enrichedIndex_[e] = static_cast<int>(enrichedIntegrations_.size());
             model_->enrichment->integration(element.cell, enrichedIntegrations_.emplace_back());
             ElementIntegration& ei = enrichedIntegrations_.back();
-            applyTipLaw(ei, law.lambdaEff, law.mu);
-            // The material is fixed here: only Phi is read from now on. A and B are two thirds of the
-            // crack-tip elements' storage (ssnp138a: their ~10^5 points held 60 MB more at the solve).
+            // The crack-tip fields are not kept: A, B and Phi are 108 doubles a point for the ~10^6
+            // points of a 3D front's elements (ssnv185c: 290 MB), refilled by integrationOf.
             std::vector<double>().swap(ei.tipA);
             std::vector<double>().swap(ei.tipB);
+            tipLaws_.emplace_back(law.lambdaEff, law.mu);
             markAttached(enrichedIntegrations_.back(), dofs);
         } else {
             for (int node : mesh.cellNodes(element.cell))
@@ -68,7 +68,13 @@ namespace {
 
 const ElementIntegration& Discretisation::integrationOf(size_t e, ElementIntegration& scratch) const {
     if (!enrichedIndex_.empty() && enrichedIndex_[e] == kNotDescribed) notDescribed(e);
-    if (isEnriched(e)) return enrichedIntegrations_[enrichedIndex_[e]];
+    if (isEnriched(e)) {
+        const ElementIntegration& stored = enrichedIntegrations_[size_t(enrichedIndex_[e])];
+        if (!stored.hasTip()) return stored;
+        scratch = stored;
+        model_->enrichment->tipFields(stored.cell, tipLaws_[size_t(enrichedIndex_[e])], scratch);
+        return scratch;
+    }
     classicalIntegration(*model_->mesh, model_->elements[e].cell, false, scratch);
     return scratch;
 }

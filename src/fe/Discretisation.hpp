@@ -33,6 +33,7 @@ public:
 
     bool isEnriched(size_t e) const { return !enrichedIndex_.empty() && enrichedIndex_[e] != -1; }
     // The X-FEM description of element e when it is enriched, else its classical one (in scratch).
+    // A crack-tip element's is copied into scratch with its tip fields computed again (not kept).
     const ElementIntegration& integrationOf(size_t e, ElementIntegration& scratch) const;
     // Integration points of element e.
     size_t pointCount(size_t e) const;
@@ -65,7 +66,8 @@ private:
     std::shared_ptr<const Model> model_;
     std::shared_ptr<const MaterialField> material_;
     DofNumbering numbering_;
-    std::vector<ElementIntegration> enrichedIntegrations_;  // X-FEM elements only
+    std::vector<ElementIntegration> enrichedIntegrations_;  // X-FEM elements only, without tip fields
+    std::vector<TipLaw> tipLaws_;                           // per enrichedIntegrations_ (crack tips)
     // element -> index in enrichedIntegrations_, -1 (empty: no X-FEM), kNotDescribed
     std::vector<int> enrichedIndex_;
     static constexpr int kNotDescribed = -2;

@@ -60,13 +60,18 @@ struct ElementIntegration {
     }
 };
 
-// Fills ei.tipPhi for an isotropic material given by its Hooke coefficients in the element's
-// formulation (lambdaEff: lambda, or the plane-stress lambda*): kappa = (lambdaEff + 3 mu) /
-// (lambdaEff + mu), which is 3 - 4 nu (3D, D_PLAN) or (3 - nu) / (1 + nu) (C_PLAN).
+// What makes Phi of A and B for an isotropic material given by its Hooke coefficients in the
+// element's formulation (lambdaEff: lambda, or the plane-stress lambda*): kappa = (lambdaEff + 3 mu)
+// / (lambdaEff + mu), which is 3 - 4 nu (3D, D_PLAN) or (3 - nu) / (1 + nu) (C_PLAN).
+struct TipLaw {
+    double kappa, scale;  // Phi = scale * (kappa * A + B)
+    TipLaw(double lambdaEff, double mu) : kappa((lambdaEff + 3.0 * mu) / (lambdaEff + mu)), scale(1.0 / (2.0 * mu)) {}
+};
+
+// Fills ei.tipPhi from ei.tipA and ei.tipB.
 inline void applyTipLaw(ElementIntegration& ei, double lambdaEff, double mu) {
     if (!ei.hasTip()) return;
-    const double kappa = (lambdaEff + 3.0 * mu) / (lambdaEff + mu);
-    const double scale = 1.0 / (2.0 * mu);
+    const auto [kappa, scale] = TipLaw(lambdaEff, mu);
     ei.tipPhi.resize(ei.tipA.size());
     for (std::size_t i = 0; i < ei.tipA.size(); ++i) ei.tipPhi[i] = scale * (kappa * ei.tipA[i] + ei.tipB[i]);
 }

@@ -20,7 +20,8 @@ class Concept;  // core/Concept.hpp
 // (PRES_REP FISSURE): the faces of that side's integration sub-cells that lie on the interface.
 struct LipIntegration {
     // Parent cell, points in its reference element, the node slots and psi of that side; the
-    // physical weights are `weight` (refWeights unused).
+    // physical weights are `weight` (refWeights unused). Crack-tip nodes are flagged (element.tip)
+    // without the fields: tipFields gives Phi for the material of the load's user.
     ElementIntegration element;
     std::vector<std::array<double, 3>> xyz;     // physical points
     std::vector<double> weight;                 // physical weights (length or area of the faces)
@@ -38,6 +39,11 @@ public:
     virtual bool isEnriched(int cell) const = 0;
     // Integration description of an enriched element (volume or skin cell).
     virtual void integration(int cell, ElementIntegration& out) const = 0;
+    // The material's crack-tip fields (ei.tipPhi, as applyTipLaw gives them; tipA, tipB left empty)
+    // at the points of `ei`, the description `integration` gave for `cell` (refPoints, pointSubcell,
+    // tip flags): a Discretisation keeps the description without them and fills them again each
+    // time it hands the element out.
+    virtual void tipFields(int /*cell*/, const TipLaw& /*law*/, ElementIntegration& /*ei*/) const {}
     // Parent local nodes that are vertices of each integration sub-cell of an enriched `cell`, in
     // sub-cell order (ElementIntegration::pointSubcell); empty for a classical cell. CALC_CHAMP's
     // ELNO fields average the sub-cells around each parent node (post/NodeValues.hpp).

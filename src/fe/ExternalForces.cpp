@@ -54,7 +54,10 @@ public:
             throw InternalError(lp.path + ": the interface is not one of the model's");
         for (auto& lip : lips) {
             if (!lp.onlyCells.empty() && !lp.onlyCells[size_t(lip.element.cell)]) continue;
-            applyLaw(lip.element, lip.element.cell);
+            if (lip.element.hasTip()) {  // Phi of this lip only (the lips' points, ~10^5 on a 3D front)
+                const IsotropicLaw& law = laws_.of(ModelElement{lip.element.cell, model.modelisation});
+                model.enrichment->tipFields(lip.element.cell, TipLaw(law.lambdaEff, law.mu), lip.element);
+            }
             const auto pres = valuesAt(lp.pressure, lip.xyz, inst);
             const auto shear = valuesAt(lp.shear, lip.xyz, inst);
             localDofs(space_.mesh(), space_.numbering(), lip.element, dofs_);
@@ -66,6 +69,7 @@ public:
                                         factor * pick(shear, p, lp.shear.value));
                 addAtPoint(lip.element, int(p), N.data(), lip.weight[p], t);
             }
+            std::vector<double>().swap(lip.element.tipPhi);
         }
     }
 

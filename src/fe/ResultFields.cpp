@@ -1,5 +1,8 @@
 #include "fe/ResultFields.hpp"
 
+#include <atomic>
+#include <mutex>
+
 #include "fe/ElasticityKernels.hpp"
 #include "fe/Parallel.hpp"
 
@@ -37,23 +40,61 @@ std::shared_ptr<GaussField> emptyPointField(const Discretisation& space, const s
         field->pointOffsets[e + 1] = field->pointOffsets[e] + static_cast<int>(space.pointCount(e));
     }
     const size_t points = size_t(field->pointOffsets.back());
-    field->pointCoords.resize(points);
-    field->pointWeights.resize(points);
-    field->pointSubcell.resize(points);
-    field->pointRefCoords.resize(points);
     field->values.resize(points * field->components.size());
     return field;
 }
 
+// The point geometry of the latest stress or strain field: the next field on the same points (the
+// next solve of the model: ssnv185c's three results, ~8e5 points each) shares its storage instead
+// of keeping its own copy (60 bytes a point). Watched, not owned: it lives as long as a field holds it.
+struct LatestGeometry {
+    std::mutex guard;
+    std::weak_ptr<const std::vector<std::array<double, 3>>> coords, refCoords;
+    std::weak_ptr<const std::vector<double>> weights;
+    std::weak_ptr<const std::vector<int>> subcells;
+};
+LatestGeometry& latestGeometry() {
+    static LatestGeometry latest;
+    return latest;
+}
+
+// The latest geometry when it has `points` points, taken as it is (pointField checks it point by
+// point); false leaves the field without geometry.
+bool adoptLatestGeometry(GaussField& field, size_t points) {
+    LatestGeometry& g = latestGeometry();
+    const std::lock_guard lock(g.guard);
+    GaussField candidate;
+    if (!candidate.pointCoords.adopt(g.coords) || !candidate.pointWeights.adopt(g.weights) ||
+        !candidate.pointSubcell.adopt(g.subcells) || !candidate.pointRefCoords.adopt(g.refCoords))
+        return false;
+    if (candidate.pointWeights.size() != points || candidate.pointCoords.size() != points ||
+        candidate.pointSubcell.size() != points || candidate.pointRefCoords.size() != points)
+        return false;
+    field.pointCoords = candidate.pointCoords, field.pointWeights = candidate.pointWeights;
+    field.pointSubcell = candidate.pointSubcell, field.pointRefCoords = candidate.pointRefCoords;
+    return true;
+}
+
+void watchGeometry(const GaussField& field) {
+    LatestGeometry& g = latestGeometry();
+    const std::lock_guard lock(g.guard);
+    g.coords = field.pointCoords.watch(), g.weights = field.pointWeights.watch();
+    g.subcells = field.pointSubcell.watch(), g.refCoords = field.pointRefCoords.watch();
+}
+
 using PointStore = void (*)(const double G[3][3], const IsotropicLaw& law, int dim, double* out);
 
-// A tensor at every integration point (X-FEM sub-cell points included) from the displacement
-// gradient there.
-std::shared_ptr<GaussField> pointField(const Discretisation& space, const std::vector<double>& u,
-                                       std::shared_ptr<GaussField> field, PointStore tensorAt) {
+// The values (and, unless `check`, the geometry) of every point of `field`; with `check`, the
+// geometry it holds is compared with the points' instead, `differs` set on the first difference.
+void fillPoints(const Discretisation& space, const std::vector<double>& u, GaussField& field, PointStore tensorAt,
+                bool check, std::atomic<bool>& differs) {
     const int dim = space.dim();
-    const size_t nc = field->components.size();
+    const size_t nc = field.components.size();
     const size_t nElements = space.elementCount();
+    std::array<double, 3>* coords = check ? nullptr : field.pointCoords.mut().data();
+    double* weights = check ? nullptr : field.pointWeights.mut().data();
+    int* subcells = check ? nullptr : field.pointSubcell.mut().data();
+    std::array<double, 3>* refCoords = check ? nullptr : field.pointRefCoords.mut().data();
     // Every element writes its own points (element ranges on the workers).
     parallelRanges(nElements, nElements >= 4096 ? workerCount() : 1, [&](size_t begin, size_t end, int) {
         GeneralElementScratch scratch;
@@ -62,14 +103,18 @@ std::shared_ptr<GaussField> pointField(const Discretisation& space, const std::v
         for (size_t e = begin; e < end; ++e) {
             const auto& element = space.model().elements[e];
             const IsotropicLaw& law = laws.of(element);
-            const size_t first = size_t(field->pointOffsets[e]);
+            const size_t first = size_t(field.pointOffsets[e]);
             auto store = [&](size_t p, const std::array<double, 3>& xyz, double weight, int subcell,
                              const std::array<double, 3>& ref, const double G[3][3]) {
-                field->pointCoords[first + p] = xyz;
-                field->pointWeights[first + p] = weight;
-                field->pointSubcell[first + p] = subcell;
-                field->pointRefCoords[first + p] = ref;
-                tensorAt(G, law, dim, field->values.data() + (first + p) * nc);
+                const size_t i = first + p;
+                if (check) {
+                    if (field.pointCoords[i] != xyz || field.pointWeights[i] != weight ||
+                        field.pointSubcell[i] != subcell || field.pointRefCoords[i] != ref)
+                        differs = true;
+                } else {
+                    coords[i] = xyz, weights[i] = weight, subcells[i] = subcell, refCoords[i] = ref;
+                }
+                tensorAt(G, law, dim, field.values.data() + i * nc);
             };
             space.visit(
                 e, scratch,
@@ -96,6 +141,29 @@ std::shared_ptr<GaussField> pointField(const Discretisation& space, const std::v
                 });
         }
     });
+}
+
+// A tensor at every integration point (X-FEM sub-cell points included) from the displacement
+// gradient there.
+std::shared_ptr<GaussField> pointField(const Discretisation& space, const std::vector<double>& u,
+                                       std::shared_ptr<GaussField> field, PointStore tensorAt) {
+    const size_t points = size_t(field->pointOffsets.back());
+    // The latest field's geometry when it is this field's: compared point by point, not copied.
+    const bool shared = adoptLatestGeometry(*field, points);
+    if (!shared) {
+        field->pointCoords.resize(points), field->pointWeights.resize(points);
+        field->pointSubcell.resize(points), field->pointRefCoords.resize(points);
+    }
+    std::atomic<bool> differs{false};
+    fillPoints(space, u, *field, tensorAt, shared, differs);
+    if (shared && differs) {  // another model's or rule's points: this field's own geometry
+        field->pointCoords = std::vector<std::array<double, 3>>(points);
+        field->pointWeights = std::vector<double>(points);
+        field->pointSubcell = std::vector<int>(points);
+        field->pointRefCoords = std::vector<std::array<double, 3>>(points);
+        fillPoints(space, u, *field, tensorAt, false, differs);
+    }
+    if (!shared || differs) watchGeometry(*field);
     return field;
 }
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/Concept.hpp"
+#include "core/SharedVector.hpp"
 #include "mesh/Mesh.hpp"
 
 namespace ma {
@@ -46,11 +47,12 @@ public:
     std::vector<std::string> components;  // e.g. {"SIXX","SIYY","SIZZ","SIXY"}
     std::vector<int> cells;               // mesh cell of each element
     std::vector<int> pointOffsets{0};     // element e has points [pointOffsets[e], pointOffsets[e+1])
-    std::vector<std::array<double, 3>> pointCoords;
-    std::vector<double> pointWeights;
-    std::vector<int> pointSubcell;                      // sub-cell index within the element (0 when not X-FEM)
-    std::vector<std::array<double, 3>> pointRefCoords;  // in the parent reference element (MED localisation)
-    std::vector<double> values;                         // pointCount * components.size()
+    // The point geometry, shared by the fields of the same points (core/SharedVector.hpp).
+    SharedVector<std::array<double, 3>> pointCoords;
+    SharedVector<double> pointWeights;
+    SharedVector<int> pointSubcell;                      // sub-cell index within the element (0 when not X-FEM)
+    SharedVector<std::array<double, 3>> pointRefCoords;  // in the parent reference element (MED localisation)
+    std::vector<double> values;                          // pointCount * components.size()
     // ELNO (SIGM_ELNO...): the points of an element are its cell's nodes in the mesh's local order
     // (pointRefCoords = the reference nodes), printed in MED on MED_NODE_ELEMENT.
     bool atNodes = false;

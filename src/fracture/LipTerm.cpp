@@ -70,7 +70,7 @@ void addLipPoints(const Discretisation& space, const std::vector<double>& u, Lip
     ElementIntegration& ei = lip.element;
     const int cell = ei.cell;
     const IsotropicLaw& law = laws.of(ModelElement{cell, space.model().modelisation});
-    applyTipLaw(ei, law.lambdaEff, law.mu);
+    if (ei.hasTip()) space.model().enrichment->tipFields(cell, TipLaw(law.lambdaEff, law.mu), ei);
     ei.refWeights.assign(ei.refPoints.size(), 1.0);  // only N and grad N are read
     PointGeometry geo;
     computePointGeometry(mesh, cell, dim, false, ei, geo);
@@ -143,6 +143,7 @@ std::vector<LipPoint> lipPoints(const Discretisation& space, const std::vector<d
                 const int cell = lip.element.cell;
                 if (!read(cell) || (!lp.onlyCells.empty() && !lp.onlyCells[size_t(cell)])) continue;
                 addLipPoints(space, u, lip, lp, factor, inst, laws, out);
+                std::vector<double>().swap(lip.element.tipPhi);  // one lip's Phi at a time
             }
         }
     }

@@ -162,9 +162,9 @@ public:
 
     // One LipIntegration for the cell: the points of the faces of both sides, each with its side's
     // psi; on a crack with a front only the part behind it (LST <= 0), and in an element with
-    // crack-tip nodes the tip fields of the point's side at each point (sqrtRule).
-    void integrate(const CellCut& cut, size_t j, const std::vector<LipFace>& faces,
-                   std::vector<LipIntegration>& out) const {
+    // crack-tip nodes the sqrt rule and the tip flags (Phi: Enrichment::tipFields, the point's
+    // sub-cell giving its side).
+    void integrate(const CellCut& cut, const std::vector<LipFace>& faces, std::vector<LipIntegration>& out) const {
         const auto nodes = mesh_.cellNodes(cut.cell);
         const int nn = int(nodes.size());
         xyz_.resize(size_t(nn));
@@ -181,7 +181,6 @@ public:
             ei.maxSlots = std::max(ei.maxSlots, ei.slots[size_t(a)]);
             tip = tip || (front_ && xm_.tipNode(nodes[size_t(a)]));
         }
-        std::vector<signed char> side;
         for (const auto& f : faces) {
             if (!front_) {
                 addCatalogueRule(cut, f, lip);
@@ -197,9 +196,9 @@ public:
             }
         }
         if (ei.refPoints.empty()) return;
-        if (tip) {
-            for (int s : ei.pointSubcell) side.push_back(cut.subcells[size_t(s)].heaviside[j] < 0 ? -1 : 1);
-            xm_.tipFieldsAt(cut.cell, side, ei);
+        if (tip) {  // flags only: the user of the lip fills Phi for its material (Enrichment::tipFields)
+            ei.tip.assign(size_t(nn), 0);
+            for (int a = 0; a < nn; ++a) ei.tip[size_t(a)] = xm_.tipNode(nodes[size_t(a)]) ? 1 : 0;
         }
         out.push_back(std::move(lip));
     }
@@ -319,7 +318,7 @@ bool XfemModel::lipIntegration(const Concept& crack, std::vector<LipIntegration>
         const auto local = std::find(cut.cracks.begin(), cut.cracks.end(), index);
         if (local == cut.cracks.end()) continue;
         const auto faces = builder.faces(cut, size_t(local - cut.cracks.begin()));
-        if (!faces.empty()) builder.integrate(cut, size_t(local - cut.cracks.begin()), faces, out);
+        if (!faces.empty()) builder.integrate(cut, faces, out);
     }
     return true;
 }

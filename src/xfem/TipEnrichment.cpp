@@ -182,19 +182,41 @@ void composePart(int dim, const double F[3][3], const double dF[3][3][2], const 
 
 void tipElementFields(const Mesh& mesh, int cell, int dim, const std::vector<FrontBasis>& basis,
                       const std::vector<unsigned char>& status, const std::vector<char>& tipNodes,
-                      const std::vector<signed char>& side, ElementIntegration& ei) {
+                      const std::vector<signed char>& side, ElementIntegration& ei, const TipLaw* law) {
     const CellType type = mesh.cellTypes[size_t(cell)];
     const auto nodes = mesh.cellNodes(cell);
     const size_t n = nodes.size();
     const size_t np = ei.refPoints.size();
     ei.tip.assign(n, 0);
     for (size_t a = 0; a < n; ++a) ei.tip[a] = tipNodes[size_t(nodes[a])];
-    ei.tipA.assign(np * ElementIntegration::kTipStride, 0.0);
-    ei.tipB.assign(np * ElementIntegration::kTipStride, 0.0);
+    constexpr size_t stride = ElementIntegration::kTipStride;
+    ei.tipA.assign(law ? 0 : np * stride, 0.0);
+    ei.tipB.assign(law ? 0 : np * stride, 0.0);
+    if (law) ei.tipPhi.resize(np * stride);
+    double A[stride], B[stride];
     std::vector<double> N(n), grad(n * 3);
     std::array<double, 24> dN{};
-    std::vector<std::array<double, 9>> FnA(n), FnB(n);
+    // The nodal fields depend on the point through its side of the crack only: [0] for theta < 0.
+    std::vector<std::array<double, 9>> FnA[2], FnB[2];
     auto X = [&](int a) -> const Vec3& { return mesh.coords[size_t(nodes[size_t(a)])]; };
+    auto nodalFields = [&](double sign) {
+        const size_t at = sign < 0 ? 0 : 1;
+        if (!FnA[at].empty()) return at;
+        FnA[at].resize(n), FnB[at].resize(n);
+        for (size_t b = 0; b < n; ++b) {  // nodal fields, in each node's own basis
+            const FrontBasis& fb = basis[size_t(nodes[b])];
+            LocalPoint nb = localPolar(X(int(b)), fb.origin, fb.e1, fb.e2);
+            const int st = status[size_t(nodes[b])];
+            if (st == 1 || st == 3) nb.theta = sign * std::abs(nb.theta);  // the point's side of the crack
+            const AsymptoticFields fn = asymptoticFields(nb.r, nb.theta, dim);
+            for (int m = 0; m < 3; ++m)
+                for (int k = 0; k < 3; ++k) {
+                    FnA[at][b][size_t(m * 3 + k)] = nb.r > 0 ? fn.A[m][k] : 0.0;
+                    FnB[at][b][size_t(m * 3 + k)] = nb.r > 0 ? fn.B[m][k] : 0.0;
+                }
+        }
+        return at;
+    };
     for (size_t p = 0; p < np; ++p) {
         shapeValues(type, ei.refPoints[p], N);
         shapeDerivatives(type, ei.refPoints[p], dN);
@@ -223,22 +245,12 @@ void tipElementFields(const Mesh& mesh, int cell, int dim, const std::vector<Fro
         // POST_CHAM_XFEM node at the tip does (u would jump to the standard part alone).
         const bool atFront = at.r < 1e-12;
         at.theta = side[p] * std::abs(at.theta);
-        const double sign = at.theta < 0 ? -1.0 : 1.0;
-        for (size_t b = 0; b < n; ++b) {  // nodal fields, in each node's own basis
-            const FrontBasis& fb = basis[size_t(nodes[b])];
-            LocalPoint nb = localPolar(X(int(b)), fb.origin, fb.e1, fb.e2);
-            const int st = status[size_t(nodes[b])];
-            if (st == 1 || st == 3) nb.theta = sign * std::abs(nb.theta);  // the point's side of the crack
-            const AsymptoticFields fn = asymptoticFields(nb.r, nb.theta, dim);
-            for (int m = 0; m < 3; ++m)
-                for (int k = 0; k < 3; ++k) {
-                    FnA[b][size_t(m * 3 + k)] = nb.r > 0 ? fn.A[m][k] : 0.0;
-                    FnB[b][size_t(m * 3 + k)] = nb.r > 0 ? fn.B[m][k] : 0.0;
-                }
-        }
+        const size_t nodal = nodalFields(at.theta < 0 ? -1.0 : 1.0);
         const AsymptoticFields f = atFront ? AsymptoticFields{} : asymptoticFields(at.r, at.theta, dim);
-        composePart(dim, f.A, f.dA, FnA, N, grad, e, &ei.tipA[p * ElementIntegration::kTipStride]);
-        composePart(dim, f.B, f.dB, FnB, N, grad, e, &ei.tipB[p * ElementIntegration::kTipStride]);
+        composePart(dim, f.A, f.dA, FnA[nodal], N, grad, e, law ? A : &ei.tipA[p * stride]);
+        composePart(dim, f.B, f.dB, FnB[nodal], N, grad, e, law ? B : &ei.tipB[p * stride]);
+        if (law)
+            for (size_t i = 0; i < stride; ++i) ei.tipPhi[p * stride + i] = law->scale * (law->kappa * A[i] + B[i]);
     }
 }
 

@@ -43,12 +43,13 @@ struct AsymptoticFields {
 };
 AsymptoticFields asymptoticFields(double r, double theta, int dim);
 
-// Fills ei.tip (from `tipNodes`, per local node), ei.tipA and ei.tipB at ei's points on `cell`.
-// `basis` and `status` are indexed by mesh node; `side[p]` is the Heaviside value (+-1) of the
-// crack at point p's sub-cell.
+// Fills ei.tip (from `tipNodes`, per local node), ei.tipA and ei.tipB at ei's points on `cell`;
+// with `law`, ei.tipPhi instead (applyTipLaw's values, without keeping A and B). `basis` and
+// `status` are indexed by mesh node; `side[p]` is the Heaviside value (+-1) of the crack at point
+// p's sub-cell.
 void tipElementFields(const Mesh& mesh, int cell, int dim, const std::vector<FrontBasis>& basis,
                       const std::vector<unsigned char>& status, const std::vector<char>& tipNodes,
-                      const std::vector<signed char>& side, ElementIntegration& ei);
+                      const std::vector<signed char>& side, ElementIntegration& ei, const TipLaw* law = nullptr);
 
 // Gauss-Legendre points and weights on [0, 1] (n >= 1, Newton on the Legendre polynomial).
 void gaussLegendre01(int n, std::vector<double>& x, std::vector<double>& w);

@@ -70,6 +70,7 @@ public:
                    std::vector<LinearRelation>& out) const override;
     int boundaryTipFields(int cell, const std::vector<std::array<double, 3>>& xyz,
                           ElementIntegration& ei) const override;
+    void tipFields(int cell, const TipLaw& law, ElementIntegration& ei) const override;
     // PRES_REP FISSURE: the faces of each side's sub-cells on the interface (xfem/LipFaces.cpp).
     bool lipIntegration(const Concept& crack, std::vector<LipIntegration>& out) const override;
 
@@ -130,9 +131,6 @@ public:
     // sub-cell (POST_K1_K2_K3: the jump of the tip terms across the lips, code_aster's pjxfem).
     bool tipMatrixOnSide(int cell, const std::array<double, 3>& ref, int side, double lambdaEff, double mu,
                          TipPoint& out) const;
-    // The crack-tip fields (ei.tip, tipA, tipB) at ei.refPoints of volume cell `cell`, each point on
-    // the side side[p] (+1, -1) of the crack (lip loads: the fields on either lip).
-    void tipFieldsAt(int cell, const std::vector<signed char>& side, ElementIntegration& ei) const;
     // Gauss-Legendre points per direction of the collapsed rules of crack-tip elements (2D).
     static constexpr int kTipGaussPoints = 12;
     // 3D fanned rules (TipEnrichment's fannedTetrahedronRule): points along the two radii and the
@@ -148,7 +146,8 @@ public:
 
 private:
     void buildTip();
-    void addTipFields(const CellCut& cut, ElementIntegration& out) const;
+    // ei.tipA, tipB; with `law`, ei.tipPhi instead (tipElementFields).
+    void addTipFields(const CellCut& cut, ElementIntegration& out, const TipLaw* law = nullptr) const;
     // Points and weights of a crack-tip element's sub-cell s (2D, catalogue rules): collapsed
     // Gauss rules, fanned from the front point when the sub-cell contains it.
     void tipSubcellRule(const CellCut& cut, int s, std::vector<std::array<double, 3>>& points,

@@ -221,11 +221,6 @@ bool XfemModel::tipMatrixOnSide(int cell, const std::array<double, 3>& ref, int 
     return true;
 }
 
-void XfemModel::tipFieldsAt(int cell, const std::vector<signed char>& side, ElementIntegration& ei) const {
-    if (tipNodes_.empty()) return;
-    tipElementFields(*mesh_, cell, dim_, bases_, cracks_[size_t(tipCrack_)]->nodeStatus, tipNodes_, side, ei);
-}
-
 int XfemModel::boundaryTipFields(int cell, const std::vector<std::array<double, 3>>& xyz,
                                  ElementIntegration& ei) const {
     if (tipNodes_.empty()) return -1;
@@ -269,7 +264,13 @@ int XfemModel::boundaryTipFields(int cell, const std::vector<std::array<double, 
     return volume;
 }
 
-void XfemModel::addTipFields(const CellCut& cut, ElementIntegration& out) const {
+void XfemModel::tipFields(int cell, const TipLaw& law, ElementIntegration& ei) const {
+    if (tipNodes_.empty() || !isEnriched(cell) || !ei.hasTip()) return;
+    const CellCut& cut = cuts_[size_t(cellIndex_[size_t(cell)])];
+    if (!cut.skin) addTipFields(cut, ei, &law);
+}
+
+void XfemModel::addTipFields(const CellCut& cut, ElementIntegration& out, const TipLaw* law) const {
     const auto at = std::find(cut.cracks.begin(), cut.cracks.end(), tipCrack_);
     std::vector<signed char> side(out.refPoints.size(), 1);
     if (at != cut.cracks.end())
@@ -277,7 +278,8 @@ void XfemModel::addTipFields(const CellCut& cut, ElementIntegration& out) const 
             const signed char h = cut.subcells[size_t(out.pointSubcell[p])].heaviside[size_t(at - cut.cracks.begin())];
             side[p] = h < 0 ? -1 : 1;
         }
-    tipElementFields(*mesh_, cut.cell, cut.dim, bases_, cracks_[size_t(tipCrack_)]->nodeStatus, tipNodes_, side, out);
+    tipElementFields(*mesh_, cut.cell, cut.dim, bases_, cracks_[size_t(tipCrack_)]->nodeStatus, tipNodes_, side, out,
+                     law);
 }
 
 }  // namespace ma::xfem
