@@ -9,6 +9,23 @@
 
 namespace ma::fracture {
 
+namespace {
+
+// Integration point p of an element with its weight, position, material and displacement gradient;
+// the theta parts and the side are the caller's.
+DomainPoint pointOf(const ElementIntegration& ei, const PointGeometry& geo, const std::vector<int>& dofs,
+                    const std::vector<double>& u, const Material& material, size_t p, int dim) {
+    DomainPoint q;
+    q.weight = geo.weight[p];
+    q.xyz = geo.xyz[p];
+    q.E = material.E;
+    q.nu = material.nu;
+    displacementGradient(ei, geo, dofs, u, p, dim, q.gradU);
+    return q;
+}
+
+}  // namespace
+
 bool thetaVaries(const Mesh& mesh, int cell, const std::vector<Vec3>& theta) {
     const auto nodes = mesh.cellNodes(cell);
     for (int n : nodes)
@@ -41,12 +58,7 @@ std::vector<DomainPoint> domainPoints(const Discretisation& space, const std::ve
         const auto nodes = mesh.cellNodes(cell);
         const size_t n = nodes.size();
         for (size_t p = 0; p < ei.refPoints.size(); ++p) {
-            DomainPoint q;
-            q.weight = geo.weight[p];
-            q.xyz = geo.xyz[p];
-            q.E = material.E;
-            q.nu = material.nu;
-            displacementGradient(ei, geo, dofs, u, p, dim, q.gradU);
+            DomainPoint q = pointOf(ei, geo, dofs, u, material, p, dim);
             double levelSet = 0.0;
             for (size_t a = 0; a < n; ++a) {
                 const size_t node = size_t(nodes[a]);
@@ -138,12 +150,7 @@ void domainPoints3D(const Discretisation& space, const std::vector<double>& u,
         const size_t n = nodes.size();
         points.clear(), frames.clear();
         for (size_t p = 0; p < ei.refPoints.size(); ++p) {
-            DomainPoint q;
-            q.weight = geo.weight[p];
-            q.xyz = geo.xyz[p];
-            q.E = material.E;
-            q.nu = material.nu;
-            displacementGradient(ei, geo, dofs, u, p, 3, q.gradU);
+            DomainPoint q = pointOf(ei, geo, dofs, u, material, p, 3);
             const std::span<const double> N(&geo.N[p * n], n);
             double levelSet = 0.0;
             for (size_t a = 0; a < n; ++a) levelSet += N[a] * lsn[size_t(nodes[a])];
