@@ -4,6 +4,7 @@
 // same bits with 1, 2 and 3 threads.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -240,4 +241,51 @@ TEST(FeClassical, ThreadedLoopsReportTheFirstBadElement) {
         }
     }
     setWorkerCount(0);
+}
+
+// Successive stress fields of the same points share one copy of their point geometry (ssnv185c's
+// three results); a field with as many points elsewhere keeps its own, and the first is untouched.
+TEST(FeClassical, StressFieldsShareThePointGeometryOfTheSamePointsOnly) {
+    using namespace fetest;
+    msg().setEcho(false);
+    auto solvedStress = [](double L) {
+        auto model = affeModele(planeMesh(6, 6, false, L), "D_PLAN", {"ALL", "RIGHT"});
+        auto mat = material(model, 2.0e5, 0.3);
+        KeywordSet kw;
+        set(kw, "MODELE", model);
+        auto& d = kw.addOccurrence("DDL_IMPO");
+        setTexts(d, "GROUP_MA", {"LEFT"});
+        const auto zero = ConceptPtr(std::make_shared<LambdaFunction>([](double, double, double) { return 0.0; }));
+        set(d, "DX", zero);
+        set(d, "DY", zero);
+        auto& p = kw.addOccurrence("PRES_REP");
+        setTexts(p, "GROUP_MA", {"RIGHT"});
+        set(p, "PRES", ConceptPtr(std::make_shared<LambdaFunction>([](double, double y, double) { return y; })));
+        auto load = std::dynamic_pointer_cast<MechanicalLoad>(run("AFFE_CHAR_MECA_F", kw, "CHAR"));
+        SolverOptions eigen;
+        eigen.method = "LDLT";
+        MechanicalProblem problem(model, mat, {{load, nullptr}}, eigen);
+        ConvergenceOptions conv;
+        conv.maxIterations = 0;
+        conv.resiGlobRela = -1.0;
+        problem.solveIncrement(0.0, conv);
+        return problem.stressField();
+    };
+    auto area = [](const GaussField& f) {
+        double a = 0.0;
+        for (double w : f.pointWeights) a += w;
+        return a;
+    };
+    const auto first = solvedStress(2.0);
+    const auto again = solvedStress(2.0);
+    EXPECT_EQ(first->pointCoords.watch().lock(), again->pointCoords.watch().lock());
+    EXPECT_EQ(first->pointWeights.watch().lock(), again->pointWeights.watch().lock());
+    const auto elsewhere = solvedStress(3.0);
+    ASSERT_EQ(elsewhere->pointCount(), first->pointCount());
+    EXPECT_NE(elsewhere->pointCoords.watch().lock(), first->pointCoords.watch().lock());
+    EXPECT_NEAR(area(*elsewhere), 9.0, 1e-12);
+    EXPECT_NEAR(area(*first), 4.0, 1e-12);
+    double xmax = 0.0;
+    for (const auto& x : elsewhere->pointCoords) xmax = std::max(xmax, x[0]);
+    EXPECT_GT(xmax, 2.5);
 }
