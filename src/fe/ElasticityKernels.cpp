@@ -172,38 +172,76 @@ void tipStiffness(const ElementIntegration& ei, const PointGeometry& geo, const 
 
 }  // namespace
 
+namespace {
+
+// The classical node-pair blocks of the points [p0, p1) (one sub-cell, where psi is constant):
+// C[(a n + b) 9 + 3 ci + di] = sum_p w (lambda ga_ci gb_di + mu ga_di gb_ci + [ci = di] mu ga.gb).
+void subcellBlocks(const PointGeometry& geo, const IsotropicLaw& law, int n, int dim, size_t p0, size_t p1,
+                   std::vector<double>& C) {
+    C.assign(size_t(n) * size_t(n) * 9, 0.0);
+    for (size_t p = p0; p < p1; ++p) {
+        const double w = geo.weight[p];
+        for (int a = 0; a < n; ++a) {
+            const double* ga = &geo.gradN[(p * size_t(n) + size_t(a)) * 3];
+            for (int b = a; b < n; ++b) {
+                const double* gb = &geo.gradN[(p * size_t(n) + size_t(b)) * 3];
+                const double dot = ga[0] * gb[0] + ga[1] * gb[1] + ga[2] * gb[2];
+                double* c = &C[size_t(a * n + b) * 9];
+                for (int ci = 0; ci < dim; ++ci)
+                    for (int di = 0; di < dim; ++di)
+                        c[ci * 3 + di] += w * (law.lambdaEff * ga[ci] * gb[di] + law.mu * ga[di] * gb[ci] +
+                                               (ci == di ? law.mu * dot : 0.0));
+            }
+        }
+    }
+    for (int a = 1; a < n; ++a)  // the lower blocks are the transposed upper ones
+        for (int b = 0; b < a; ++b)
+            for (int ci = 0; ci < 3; ++ci)
+                for (int di = 0; di < 3; ++di)
+                    C[size_t(a * n + b) * 9 + size_t(ci * 3 + di)] = C[size_t(b * n + a) * 9 + size_t(di * 3 + ci)];
+}
+
+// Ke += psi_ak psi_bl C_ab for every pair of slots of the sub-cell of point p0.
+void scatterSubcell(const ElementIntegration& ei, int p0, const std::vector<int>& base, int dim, int nd,
+                    const std::vector<double>& C, std::vector<double>& Ke) {
+    const int n = ei.nodeCount;
+    for (int a = 0; a < n; ++a)
+        for (int k = 0; k < ei.slots[size_t(a)]; ++k) {
+            const double pa = ei.multiplier(p0, a, k);
+            if (pa == 0.0) continue;
+            const int ia = base[size_t(a)] + k * dim;
+            for (int b = 0; b < n; ++b)
+                for (int l = 0; l < ei.slots[size_t(b)]; ++l) {
+                    const double pb = ei.multiplier(p0, b, l);
+                    if (pb == 0.0) continue;
+                    const double s = pa * pb;
+                    const int ib = base[size_t(b)] + l * dim;
+                    const double* c = &C[size_t(a * n + b) * 9];
+                    for (int ci = 0; ci < dim; ++ci)
+                        for (int di = 0; di < dim; ++di)
+                            Ke[size_t(ia + ci) * size_t(nd) + size_t(ib + di)] += s * c[ci * 3 + di];
+                }
+        }
+}
+
+}  // namespace
+
+// psi is constant on a sub-cell, so the enriched blocks of a sub-cell are its classical node-pair
+// blocks times psi_ak psi_bl: the point loop runs over node pairs only, not over pairs of slots.
 void generalStiffness(const ElementIntegration& ei, const PointGeometry& geo, const IsotropicLaw& law, int dim, int nd,
                       std::vector<double>& Ke) {
     if (ei.hasTip()) return tipStiffness(ei, geo, law, dim, nd, Ke);
     const int n = ei.nodeCount;
-    std::vector<int> base(n + 1, 0);  // local index of (a, slot 0)
-    for (int a = 0; a < n; ++a) base[a + 1] = base[a] + ei.slots[a] * dim;
-    Ke.assign(size_t(nd) * nd, 0.0);
-    for (size_t p = 0; p < ei.refPoints.size(); ++p) {
-        const double w = geo.weight[p];
-        for (int a = 0; a < n; ++a) {
-            const double* ga = &geo.gradN[(p * n + a) * 3];
-            for (int k = 0; k < ei.slots[a]; ++k) {
-                const double pa = ei.multiplier(int(p), a, k);
-                if (pa == 0.0) continue;
-                const int ia = base[a] + k * dim;
-                for (int b = 0; b < n; ++b) {
-                    const double* gb = &geo.gradN[(p * n + b) * 3];
-                    const double dot = ga[0] * gb[0] + ga[1] * gb[1] + ga[2] * gb[2];
-                    for (int l = 0; l < ei.slots[b]; ++l) {
-                        const double pb = ei.multiplier(int(p), b, l);
-                        if (pb == 0.0) continue;
-                        const double s = w * pa * pb;
-                        const int ib = base[b] + l * dim;
-                        for (int ci = 0; ci < dim; ++ci)
-                            for (int di = 0; di < dim; ++di)
-                                Ke[size_t(ia + ci) * nd + ib + di] +=
-                                    s * (law.lambdaEff * ga[ci] * gb[di] + law.mu * ga[di] * gb[ci] +
-                                         (ci == di ? law.mu * dot : 0.0));
-                    }
-                }
-            }
-        }
+    std::vector<int> base(size_t(n) + 1, 0);  // local index of (a, slot 0)
+    for (int a = 0; a < n; ++a) base[size_t(a) + 1] = base[size_t(a)] + ei.slots[size_t(a)] * dim;
+    Ke.assign(size_t(nd) * size_t(nd), 0.0);
+    thread_local std::vector<double> C;
+    const size_t points = ei.refPoints.size();
+    auto subcell = [&](size_t p) { return ei.pointSubcell.empty() ? 0 : ei.pointSubcell[p]; };
+    for (size_t p0 = 0, p1 = 0; p0 < points; p0 = p1) {
+        for (p1 = p0 + 1; p1 < points && subcell(p1) == subcell(p0);) ++p1;
+        subcellBlocks(geo, law, n, dim, p0, p1, C);
+        scatterSubcell(ei, int(p0), base, dim, nd, C, Ke);
     }
 }
 
