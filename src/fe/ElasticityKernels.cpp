@@ -1,8 +1,11 @@
 #include "fe/ElasticityKernels.hpp"
 
+#include <Eigen/Dense>
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "core/Error.hpp"
@@ -67,34 +70,45 @@ void localDofs(const Mesh& mesh, const DofNumbering& numbering, const ElementInt
     }
 }
 
-void dofGradients(const ElementIntegration& ei, const PointGeometry& geo, size_t p, int dim, std::vector<double>& B) {
+namespace {
+
+// visit(i, b) for each local dof i in order, b its displacement gradient at point p (b[3 c + j] =
+// du_c/dx_j of the dof's shape function, 3 x 3 whatever the dimension).
+template <class Visit>
+void forEachDofGradient(const ElementIntegration& ei, const PointGeometry& geo, size_t p, int dim, Visit&& visit) {
     const int n = ei.nodeCount;
     size_t i = 0;
-    auto next = [&]() -> double* {
-        if (B.size() < (i + 1) * 9) B.resize((i + 1) * 9);
-        double* b = &B[i++ * 9];
-        std::fill(b, b + 9, 0.0);
-        return b;
-    };
+    double b[9];
     for (int a = 0; a < n; ++a) {
-        const double* ga = &geo.gradN[(p * n + a) * 3];
-        for (int k = 0; k < ei.slots[a]; ++k) {
+        const double* ga = &geo.gradN[(p * size_t(n) + size_t(a)) * 3];
+        for (int k = 0; k < ei.slots[size_t(a)]; ++k) {
             const double pa = ei.multiplier(int(p), a, k);
             for (int c = 0; c < dim; ++c) {
-                double* b = next();
+                std::fill(b, b + 9, 0.0);
                 for (int j = 0; j < dim; ++j) b[c * 3 + j] = pa * ga[j];
+                visit(i++, b);
             }
         }
         if (!ei.tipAt(a)) continue;
-        const double Na = geo.N[p * n + a];
+        const double Na = geo.N[p * size_t(n) + size_t(a)];
         const double* phi = ei.tipValue(p);
         const double* dphi = ei.tipGradient(p);
         for (int m = 0; m < dim; ++m) {  // mode m: u_c = N_a Phi[c][m]
-            double* b = next();
+            std::fill(b, b + 9, 0.0);
             for (int c = 0; c < dim; ++c)
                 for (int j = 0; j < dim; ++j) b[c * 3 + j] = ga[j] * phi[c * 3 + m] + Na * dphi[(c * 3 + m) * 3 + j];
+            visit(i++, b);
         }
     }
+}
+
+}  // namespace
+
+void dofGradients(const ElementIntegration& ei, const PointGeometry& geo, size_t p, int dim, std::vector<double>& B) {
+    forEachDofGradient(ei, geo, p, dim, [&](size_t i, const double* b) {
+        if (B.size() < (i + 1) * 9) B.resize((i + 1) * 9);
+        std::copy(b, b + 9, &B[i * 9]);
+    });
 }
 
 void displacementGradient(const ElementIntegration& ei, const PointGeometry& geo, const std::vector<int>& dofs,
@@ -102,11 +116,10 @@ void displacementGradient(const ElementIntegration& ei, const PointGeometry& geo
     for (int c = 0; c < 3; ++c)
         for (int j = 0; j < 3; ++j) G[c][j] = 0.0;
     if (ei.hasTip()) {
-        thread_local std::vector<double> B;
-        dofGradients(ei, geo, p, dim, B);
-        for (size_t i = 0; i < dofs.size(); ++i)
+        forEachDofGradient(ei, geo, p, dim, [&](size_t i, const double* b) {
             for (int c = 0; c < dim; ++c)
-                for (int j = 0; j < dim; ++j) G[c][j] += u[dofs[i]] * B[i * 9 + c * 3 + j];
+                for (int j = 0; j < dim; ++j) G[c][j] += u[size_t(dofs[i])] * b[c * 3 + j];
+        });
         return;
     }
     const int n = ei.nodeCount;
@@ -146,27 +159,49 @@ void storeStrain(const double G[3][3], const IsotropicLaw& law, int dim, double*
 
 namespace {
 
+// The symmetric part of a displacement gradient g (row-major 3 x 3) in Mandel's form (off-diagonal
+// terms times sqrt 2, so that e . e' = sym g : sym g'), then its trace: 3 + 1 terms in 2D, 6 + 1 in 3D.
+void mandelStrain(const double* g, int dim, double* e) {
+    const double r2 = std::numbers::sqrt2;
+    if (dim == 2) {
+        e[0] = g[0], e[1] = g[4], e[2] = (g[1] + g[3]) / r2, e[3] = g[0] + g[4];
+        return;
+    }
+    e[0] = g[0], e[1] = g[4], e[2] = g[8];
+    e[3] = (g[1] + g[3]) / r2, e[4] = (g[2] + g[6]) / r2, e[5] = (g[5] + g[7]) / r2;
+    e[6] = g[0] + g[4] + g[8];
+}
+
 // Stiffness of an element with crack-tip slots: every local dof's displacement gradient at each
-// point (dofGradients), then w * eps_i : C : eps_j.
+// point (dofGradients), then w eps_i : C : eps_l = w (2 mu e_i . e_l + lambda tr_i tr_l). Tip
+// elements have thousands of points, so the points go in chunks as columns of two matrices and each
+// chunk is one matrix product: Ke += L R^T with L = [2 mu w e, lambda w tr] and R = [e, tr].
 void tipStiffness(const ElementIntegration& ei, const PointGeometry& geo, const IsotropicLaw& law, int dim, int nd,
                   std::vector<double>& Ke) {
-    Ke.assign(size_t(nd) * nd, 0.0);
+    using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    constexpr int kChunk = 256;
+    const int terms = dim == 3 ? 7 : 4;
     thread_local std::vector<double> B;
-    for (size_t p = 0; p < ei.refPoints.size(); ++p) {
-        dofGradients(ei, geo, p, dim, B);
-        const double w = geo.weight[p];
-        for (int i = 0; i < nd; ++i) {
-            double S[3][3], G[3][3];
-            for (int c = 0; c < 3; ++c)
-                for (int j = 0; j < 3; ++j) G[c][j] = B[size_t(i) * 9 + c * 3 + j];
-            stressOf(G, law, dim, S);
-            for (int l = 0; l < nd; ++l) {
-                double sum = 0.0;
-                for (int c = 0; c < dim; ++c)
-                    for (int j = 0; j < dim; ++j) sum += S[c][j] * B[size_t(l) * 9 + c * 3 + j];
-                Ke[size_t(i) * nd + l] += w * sum;
+    thread_local Eigen::MatrixXd L, R;
+    L.resize(nd, terms * kChunk), R.resize(nd, terms * kChunk);
+    Ke.assign(size_t(nd) * size_t(nd), 0.0);
+    Eigen::Map<RowMajor> K(Ke.data(), nd, nd);
+    const size_t points = ei.refPoints.size();
+    for (size_t p0 = 0; p0 < points; p0 += kChunk) {
+        const int count = int(std::min<size_t>(kChunk, points - p0));
+        for (int q = 0; q < count; ++q) {
+            dofGradients(ei, geo, p0 + size_t(q), dim, B);
+            const double w = geo.weight[p0 + size_t(q)];
+            for (int i = 0; i < nd; ++i) {
+                double e[7];
+                mandelStrain(&B[size_t(i) * 9], dim, e);
+                for (int t = 0; t < terms; ++t) {
+                    L(i, q * terms + t) = (t + 1 < terms ? 2 * law.mu : law.lambdaEff) * w * e[t];
+                    R(i, q * terms + t) = e[t];
+                }
             }
         }
+        K.noalias() += L.leftCols(count * terms) * R.leftCols(count * terms).transpose();
     }
 }
 
