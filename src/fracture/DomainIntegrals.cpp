@@ -79,18 +79,21 @@ using Tensor3 = double[3][3][3];
 void auxiliaryGradientDerivative(const LocalField& local, const FrontFrame& f, Tensor3& t) {
     const Vec3* e[3] = {&f.e1, &f.e2, &f.e3};
     const auto& D = f.basisGradient;
-    for (auto& m : t)
-        for (auto& n : m)
-            for (double& v : n) v = 0.0;
+    // h_a = u_k,a e_k and q_k = u_k,a e_a: the three terms are sums over a or k of these times D.
+    double h[2][3] = {}, q[3][3] = {};
     for (size_t k = 0; k < 3; ++k)
         for (size_t a = 0; a < 2; ++a) {
             const double g = local.grad[k][a];
-            if (g == 0.0) continue;
-            for (size_t m = 0; m < 3; ++m)
-                for (size_t n = 0; n < 3; ++n)
-                    for (size_t j = 0; j < 3; ++j)
-                        t[m][n][j] += g * (D[a][n][j] * (*e[k])[m] + (*e[a])[n] * D[k][m][j] + (*e[a])[j] * D[k][m][n]);
+            for (size_t m = 0; m < 3; ++m) h[a][m] += g * (*e[k])[m], q[k][m] += g * (*e[a])[m];
         }
+    for (size_t m = 0; m < 3; ++m)
+        for (size_t n = 0; n < 3; ++n)
+            for (size_t j = 0; j < 3; ++j) {
+                double v = 0.0;
+                for (size_t a = 0; a < 2; ++a) v += h[a][m] * D[a][n][j];
+                for (size_t k = 0; k < 3; ++k) v += q[k][n] * D[k][m][j] + q[k][j] * D[k][m][n];
+                t[m][n][j] = v;
+            }
 }
 
 // The volume term of the interaction integral on a curved front (docs/cracks.md, the penny section):
