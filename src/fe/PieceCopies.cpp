@@ -80,8 +80,7 @@ struct Builder {
         const Vec3& x = space.mesh().coords[size_t(node)];
         for (int copy = firstCopy; copy < out.copies; ++copy)
             for (int comp = 0; comp < dim; ++comp)
-                for (int mode = 0; mode < modes; ++mode)
-                    out.modes.push_back(rigidModeValue(mode, comp, dim, x));
+                for (int mode = 0; mode < modes; ++mode) out.modes.push_back(rigidModeValue(mode, comp, dim, x));
     }
 };
 
@@ -104,8 +103,7 @@ void assembleT(Builder& b) {
     std::vector<double> byVector(size_t(modes) * size_t(n), 0.0);
     for (size_t k = 0; k < size_t(n); ++k)
         if (!b.out.padding[k])
-            for (size_t m = 0; m < size_t(modes); ++m)
-                byVector[m * size_t(n) + k] = b.out.modes[k * size_t(modes) + m];
+            for (size_t m = 0; m < size_t(modes); ++m) byVector[m * size_t(n) + k] = b.out.modes[k * size_t(modes) + m];
     b.out.modes = std::move(byVector);
 }
 
@@ -131,16 +129,18 @@ PieceBasis pieceBasisOf(const Discretisation& space, const DirichletConstraints&
         const int firstCopy = b.out.copies;
         for (int comp = 0; comp < numbering.dim(); ++comp)
             if (!b.addComponent(node, comp, psi)) {
-                none.refusal = fmt::format("the pieces of node {} do not determine its free slots", space.mesh().nodeNames[size_t(node)]);
+                none.refusal = fmt::format("the pieces of node {} do not determine its free slots",
+                                           space.mesh().nodeNames[size_t(node)]);
                 return none;
             }
         b.addModes(node, firstCopy);
     }
     for (int i = 0; i < rows; ++i)
         if (b.tRows[size_t(i)].empty()) {
-            none.refusal = fmt::format("equation {} is not a displacement of a node's piece (a crack-tip, contact or "
-                                       "additional unknown)",
-                                       i + 1);
+            none.refusal = fmt::format(
+                "equation {} is not a displacement of a node's piece (a crack-tip, contact or "
+                "additional unknown)",
+                i + 1);
             return none;
         }
     assembleT(b);

@@ -65,8 +65,8 @@ struct RowBuilder {
 
 CsrMatrix pieceBasisMatrix(const CsrMatrix& A, const PieceBasis& basis, double dropTolerance) {
     const int n = basis.size();
-    RowBuilder rows{A, basis.T, transposed(basis.T, n), std::vector<double>(size_t(n), 0.0),
-                    std::vector<char>(size_t(n), 0), {}};
+    RowBuilder rows{
+        A, basis.T, transposed(basis.T, n), std::vector<double>(size_t(n), 0.0), std::vector<char>(size_t(n), 0), {}};
     // The diagonal first (the drop test compares with it), then the rows.
     std::vector<double> diagonal(size_t(n), 1.0);
     for (int k = 0; k < n; ++k) {

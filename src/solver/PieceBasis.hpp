@@ -14,10 +14,10 @@
 namespace ma {
 
 struct PieceBasis {
-    int copies = 0;     // v has blockSize * copies unknowns, copy after copy
-    int blockSize = 3;  // the dimension: the unknowns of one copy
-    int blocks = 0;     // blocks of the model (for the .mess)
-    CsrMatrix T;        // free equations x v unknowns: u_i = sum_k T_ik v_k
+    int copies = 0;             // v has blockSize * copies unknowns, copy after copy
+    int blockSize = 3;          // the dimension: the unknowns of one copy
+    int blocks = 0;             // blocks of the model (for the .mess)
+    CsrMatrix T;                // free equations x v unknowns: u_i = sum_k T_ik v_k
     std::vector<char> padding;  // per v unknown: no free equation depends on it
     std::vector<double> modes;  // the rigid modes on v, vector after vector (0 on padding)
     std::string refusal;        // why there is no piece basis (copies == 0)

@@ -15,8 +15,8 @@
 #include "fe/NearNullSpace.hpp"
 #include "fe/PieceCopies.hpp"
 #include "fe/SparsityPattern.hpp"
-#include "solver/LinearSolver.hpp"
 #include "fe_test_support.hpp"
+#include "solver/LinearSolver.hpp"
 #include "xfem_test_meshes.hpp"
 
 using namespace ma;
@@ -46,7 +46,8 @@ FreeModel junctionModel(const std::shared_ptr<Mesh>& mesh, double x0, double y0)
     for (size_t i = 0; i < interfaces.size(); ++i) {
         xfem::JunctionInput junction;
         if (i > 0) junction.masters = {first}, junction.point = interfaces[i].second;
-        auto crack = xfem::buildCrack(mesh, xfemtest::levelSet(*mesh, interfaces[i].first), i > 0 ? &junction : nullptr);
+        auto crack =
+            xfem::buildCrack(mesh, xfemtest::levelSet(*mesh, interfaces[i].first), i > 0 ? &junction : nullptr);
         crack->name = "FISS" + std::to_string(i + 1);
         if (i == 0) first = crack;
         cracks.push_back(crack);
@@ -110,7 +111,8 @@ void checkPieceModes(const FreeModel& f) {
                 for (int c = 0; c < dim; ++c) {
                     const int e = f.constraints.eq[size_t(numbering.dof(node, k, c))];
                     if (e < 0) continue;
-                    const double expected = k == 0 ? rigidModeValue(m, c, dim, f.space->mesh().coords[size_t(node)]) : 0.0;
+                    const double expected =
+                        k == 0 ? rigidModeValue(m, c, dim, f.space->mesh().coords[size_t(node)]) : 0.0;
                     gap = std::max(gap, std::abs(u[size_t(e)] - expected));
                 }
     }
@@ -136,8 +138,7 @@ TEST(PieceBasis, RigidModesAtTheCopiesAreNullModes2D) {
 TEST(PieceBasis, SolveThroughThePiecesIsTheDirectOne) {
     const FreeModel f = junctionModel(xfemtest::slab(6, CellType::HEXA8), 0.3, -0.4);
     CsrMatrix A = f.K;
-    for (int i = 0; i < A.rows; ++i)
-        A.values[size_t(A.find(i, i))] *= 1.0 + 1e-2;
+    for (int i = 0; i < A.rows; ++i) A.values[size_t(A.find(i, i))] *= 1.0 + 1e-2;
     std::vector<double> b(size_t(A.rows));
     for (int i = 0; i < A.rows; ++i) b[size_t(i)] = std::sin(0.37 * i) + 0.5;
     std::vector<double> direct = b;
