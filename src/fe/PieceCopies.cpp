@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 
 #include "fe/NearNullSpace.hpp"
@@ -137,10 +138,17 @@ PieceBasis pieceBasisOf(const Discretisation& space, const DirichletConstraints&
     }
     for (int i = 0; i < rows; ++i)
         if (b.tRows[size_t(i)].empty()) {
-            none.refusal = fmt::format(
-                "equation {} is not a displacement of a node's piece (a crack-tip, contact or "
-                "additional unknown)",
-                i + 1);
+            none.refusal =
+                "some equations are not displacements of a node's pieces (crack-tip, contact or "
+                "additional unknowns)";
+            const auto dof = std::find(constraints.eq.begin(), constraints.eq.end(), i);
+            if (dof != constraints.eq.end()) {
+                const int d = int(dof - constraints.eq.begin());
+                none.refusal = fmt::format(
+                    "the unknown {} of node {} is not a displacement of a piece of its support "
+                    "(a crack-tip, contact or additional unknown)",
+                    numbering.componentOf(d), space.mesh().nodeNames[size_t(numbering.nodeOf(d))]);
+            }
             return none;
         }
     assembleT(b);
