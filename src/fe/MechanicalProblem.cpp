@@ -15,6 +15,7 @@
 #include "fe/ExternalForces.hpp"
 #include "fe/InternalForces.hpp"
 #include "fe/NearNullSpace.hpp"
+#include "fe/PieceCopies.hpp"
 #include "fe/ResultFields.hpp"
 #include "fe/SparsityPattern.hpp"
 
@@ -45,6 +46,8 @@ MechanicalProblem::MechanicalProblem(std::shared_ptr<const Model> model, std::sh
                         space.blocks, space.colours, space.perBlock);
         return std::move(space.modes);
     };
+    if (model->enrichment)
+        solverOptions_.pieceBasis = [this] { return pieceBasisOf(*space_, *constraints_, matrix_.rows); };
     solver_ = makeLinearSolver(solverOptions_);
     int nodesWithUnknowns = 0;
     for (int node = 0; node < numbering.nodeCount(); ++node) nodesWithUnknowns += numbering.hasNode(node);

@@ -64,14 +64,14 @@ void walkElement(const Discretisation& space, size_t e, PieceTable& table, Eleme
         if (p == 0 || ei.pointSubcell[p] != ei.pointSubcell[p - 1]) visitPoint(&ei, static_cast<int>(p));
 }
 
+}  // namespace
+
 // Rotation values per component: about z (2D and 3D), then about x and y (3D).
-double rigidValue(int mode, int comp, int dim, const Vec3& x) {
+double rigidModeValue(int mode, int comp, int dim, const Vec3& x) {
     if (mode < dim) return mode == comp ? 1.0 : 0.0;
     const double rotations[3][3] = {{-x[1], x[0], 0.0}, {0.0, -x[2], x[1]}, {x[2], 0.0, -x[0]}};
     return rotations[mode - dim][comp];
 }
-
-}  // namespace
 
 ModelBlocks findBlocks(const Discretisation& space) {
     const DofNumbering& numbering = space.numbering();
@@ -156,7 +156,7 @@ std::vector<double> groupRigidModes(const Discretisation& space, const ModelBloc
                     if (e < 0 || e >= rows || slotValues(k) == 0.0) continue;
                     for (int m = 0; m < modes; ++m)
                         v[static_cast<size_t>(g * modes + m) * n + static_cast<size_t>(e)] =
-                            slotValues(k) * rigidValue(m, comp, dim, coords[static_cast<size_t>(node)]);
+                            slotValues(k) * rigidModeValue(m, comp, dim, coords[static_cast<size_t>(node)]);
                 }
         }
     }

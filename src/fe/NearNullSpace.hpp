@@ -29,6 +29,10 @@ struct ModelBlocks {
     std::vector<int> size;  // pieces of each block
 };
 
+// Component comp of rigid motion `mode` at x (2D: 2 translations, the rotation about z; 3D: 3
+// translations, the rotations about z, x and y).
+double rigidModeValue(int mode, int comp, int dim, const Vec3& x);
+
 // The blocks of the model (one for a classical connected model; one per connected part otherwise).
 ModelBlocks findBlocks(const Discretisation& space);
 

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "solver/PieceBasis.hpp"
 #include "solver/SparseMatrix.hpp"
 
 namespace ma {
@@ -74,6 +75,9 @@ struct SolverOptions {
     // `rows` values each; empty when unknown), asked by the multigrid preconditioners GAMG and ML
     // (docs/solver.md).
     std::function<std::vector<double>()> nearNullSpace;
+    // X-FEM models: the piece basis (solver/PieceBasis.hpp) GAMG, ML and BOOMER iterate in, with its
+    // rigid modes; empty (copies == 0, with the reason) when the model has none.
+    std::function<PieceBasis()> pieceBasis;
     // Appended to the "singular system" message: what the caller knows about likely causes.
     std::string singularHint = "a missing boundary condition (rigid body motion) or an unattached enriched dof";
 };

@@ -43,13 +43,17 @@ void initialisePetsc() {
 // y = S A S x without storing S A S. Distributed (MATR_DISTRIBUEE on several processes): A is
 // this process's part, the products are summed over the processes (rank 0's sum broadcast, so that
 // every process holds the same y and their Krylov iterations stay identical).
+// With a piece basis (multigrid on an X-FEM model), y = S T^T A T S x on the copies, and x itself on
+// the padding unknowns.
 struct ScaledOperator {
     const CsrMatrix* A = nullptr;
     const std::vector<double>* scale = nullptr;
+    const PieceBasis* basis = nullptr;
     bool distributed = false;
-    std::vector<double> work;
+    std::vector<double> work, equations, product;
 
     void apply(const double* x, double* y) {
+        if (basis) return applyInPieces(x, y);
         const std::vector<double>& s = *scale;
         const size_t n = s.size();
         work.resize(n);
@@ -58,6 +62,16 @@ struct ScaledOperator {
         A->multiply(work, out);
         if (distributed) mpi::sum(out);
         for (size_t i = 0; i < n; ++i) y[i] *= s[i];
+    }
+    void applyInPieces(const double* x, double* y) {
+        const std::vector<double>& s = *scale;
+        const size_t n = s.size(), rows = size_t(A->rows);
+        work.resize(n), equations.resize(rows), product.resize(rows);
+        for (size_t i = 0; i < n; ++i) work[i] = s[i] * x[i];
+        toEquations(*basis, work.data(), equations.data());
+        A->multiply(equations, product);
+        toPieces(*basis, product.data(), y);
+        for (size_t i = 0; i < n; ++i) y[i] = basis->padding[i] ? x[i] : y[i] * s[i];
     }
 };
 
@@ -142,30 +156,33 @@ public:
         A_ = &A;
         kind_ = kind;
         rowPoints_.assign(rowPoints.begin(), rowPoints.end());
-        scale_ = diagonalScalingOf(A, options_);
-        operator_.A = A_, operator_.scale = &scale_, operator_.distributed = options_.distributed;
         destroyOperator();
-        if (usesFactors(options_)) {
-            scaled_ = CsrMatrix{}, rowStart_.clear();
-            checkPetsc(MatCreateShell(PETSC_COMM_SELF, A.rows, A.rows, A.rows, A.rows, &operator_, &matrix_),
-                       "MatCreateShell");
-            checkPetsc(MatShellSetOperation(matrix_, MATOP_MULT, reinterpret_cast<void (*)(void)>(multiplyScaled)),
-                       "MatShellSetOperation");
+        choosePieceBasis(kind);
+        if (piece_.copies > 0) {
+            factorizeInPieces(A);
         } else {
-            scaled_ = scaledCopy(A, scale_, options_);
-            rowStart_.assign(scaled_.rowStart.begin(), scaled_.rowStart.end());
-            checkPetsc(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, A.rows, A.rows, rowStart_.data(), scaled_.cols.data(),
-                                                 scaled_.values.data(), &matrix_),
-                       "MatCreateSeqAIJWithArrays");
+            scale_ = diagonalScalingOf(A, options_);
+            operator_.A = A_, operator_.scale = &scale_, operator_.basis = nullptr;
+            operator_.distributed = options_.distributed;
+            if (usesFactors(options_)) {
+                scaled_ = CsrMatrix{}, rowStart_.clear();
+                createShell(A.rows);
+            } else {
+                scaled_ = scaledCopy(A, scale_, options_);
+                createAssembled(matrix_);
+            }
+            checkPetsc(MatSetOption(matrix_, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+            if (options_.preconditioner == "GAMG" || options_.preconditioner == "ML") {
+                std::vector<double> modes = options_.nearNullSpace ? options_.nearNullSpace() : std::vector<double>{};
+                attachNearNullSpace(modes, matrix_);
+            }
         }
-        checkPetsc(MatSetOption(matrix_, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
-        if (options_.preconditioner == "GAMG" || options_.preconditioner == "ML") attachNearNullSpace();
         if (keep) {
             msg().infof(
                 "    {}: preconditioner kept from the previous matrix (its last solve took {} iterations, "
                 "REAC_PRECOND={})",
                 name(), lastIterations_, options_.reacPrecond);
-            checkPetsc(KSPSetOperators(ksp_, matrix_, matrix_), "KSPSetOperators");
+            checkPetsc(KSPSetOperators(ksp_, matrix_, preconditionerMatrix()), "KSPSetOperators");
             stale_ = true;
             return;
         }
@@ -199,7 +216,7 @@ private:
         MemoryPhase phase;
         destroySolver();
         checkPetsc(KSPCreate(PETSC_COMM_SELF, &ksp_), "KSPCreate");
-        checkPetsc(KSPSetOperators(ksp_, matrix_, matrix_), "KSPSetOperators");
+        checkPetsc(KSPSetOperators(ksp_, matrix_, preconditionerMatrix()), "KSPSetOperators");
         configureKrylov(ksp_, options_);
         PC pc = nullptr;
         checkPetsc(KSPGetPC(ksp_, &pc), "KSPGetPC");
@@ -218,17 +235,111 @@ private:
         }
         setUpWithOptionPetsc(ksp_, options_);
         stale_ = false;
-        msg().infof("    {}: preconditioner built in {:.3f} s, resident peak {:.0f} MB (from {:.0f} MB){}", name(),
+        msg().infof("    {}: preconditioner built in {:.3f} s, resident peak {:.0f} MB (from {:.0f} MB){}{}", name(),
                     secondsSince(t0), phase.peakMb(), phase.startMb(),
                     nearNullModes_ ? fmt::format("; near null space: {} rigid body modes", nearNullModes_)
-                                   : std::string());
+                                   : std::string(),
+                    hierarchyOf(pc));
     }
+
+    // GAMG's and ML's levels: their count and the operator complexity (the non-zeros of all levels'
+    // matrices over the finest one's), deterministic measures of the hierarchy's cost.
+    static std::string hierarchyOf(PC pc) {
+        PetscBool multigrid = PETSC_FALSE;
+        PetscObjectTypeCompareAny(reinterpret_cast<PetscObject>(pc), &multigrid, PCGAMG, PCML, "");
+        PetscInt levels = 0;
+        if (!multigrid || PCMGGetLevels(pc, &levels) != 0 || levels < 1) return {};
+        double total = 0.0, finest = 0.0;
+        std::string rows;
+        for (PetscInt l = levels - 1; l >= 0; --l) {
+            KSP smoother = nullptr;
+            Mat a = nullptr, p = nullptr;
+            MatInfo info;
+            PetscInt m = 0;
+            if (PCMGGetSmoother(pc, l, &smoother) != 0 || KSPGetOperators(smoother, &a, &p) != 0 ||
+                MatGetInfo(p, MAT_LOCAL, &info) != 0 || MatGetSize(p, &m, nullptr) != 0)
+                return {};
+            total += info.nz_used;
+            if (l == levels - 1) finest = info.nz_used;
+            rows += fmt::format("{}{}", rows.empty() ? "" : " / ", m);
+        }
+        return fmt::format("; {} levels (rows {}), operator complexity {:.2f}", levels, rows,
+                           finest > 0.0 ? total / finest : 0.0);
+    }
+
+    // X-FEM models with GAMG, ML or BOOMER on a positive definite system (one process): the piece
+    // basis (SolverOptions::pieceBasis), or the reason it is not used.
+    void choosePieceBasis(MatrixKind kind) {
+        piece_ = PieceBasis{};
+        const std::string& p = options_.preconditioner;
+        if (!options_.pieceBasis || kind != MatrixKind::SymmetricPositiveDefinite ||
+            (p != "GAMG" && p != "ML" && p != "BOOMER"))
+            return;
+        if (options_.distributed) {
+            msg().infof("    {}: piece basis not used on several processes (the blocks' rigid modes instead)", name());
+            return;
+        }
+        piece_ = options_.pieceBasis();
+        if (piece_.copies == 0)
+            msg().infof("    {}: piece basis not used: {} (the blocks' rigid modes instead)", name(), piece_.refusal);
+    }
+
+    // PETSc iterates on S T^T A T S (S: the unit diagonal scaling of T^T A T) through a shell; the
+    // preconditioner is built from its assembled copy without the round-off couplings of disjoint
+    // pieces, with one block per node copy and the rigid modes at the copies.
+    void factorizeInPieces(const CsrMatrix& A) {
+        const auto t0 = std::chrono::steady_clock::now();
+        scaled_ = pieceBasisMatrix(A, piece_, kPieceRoundOff);
+        const size_t n = size_t(piece_.size());
+        scale_.assign(n, 1.0);
+        for (size_t k = 0; k < n; ++k)
+            for (long long a = scaled_.rowStart[k]; a < scaled_.rowStart[k + 1]; ++a)
+                if (size_t(scaled_.cols[size_t(a)]) == k) {
+                    const double d = scaled_.values[size_t(a)];
+                    if (!(d > 0.0))
+                        throw NumericalError(fmt::format(
+                            "{}: the piece basis has a non-positive diagonal {:g} (a piece without stiffness)", name(),
+                            d));
+                    scale_[k] = 1.0 / std::sqrt(d);
+                }
+        for (size_t k = 0; k < n; ++k)
+            for (long long a = scaled_.rowStart[k]; a < scaled_.rowStart[k + 1]; ++a)
+                scaled_.values[size_t(a)] *= scale_[k] * scale_[size_t(scaled_.cols[size_t(a)])];
+        operator_.A = A_, operator_.scale = &scale_, operator_.basis = &piece_, operator_.distributed = false;
+        createShell(int(n));
+        createAssembled(pmat_);
+        checkPetsc(MatSetBlockSize(pmat_, piece_.blockSize), "MatSetBlockSize");
+        checkPetsc(MatSetOption(matrix_, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+        checkPetsc(MatSetOption(pmat_, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+        long long padding = 0;
+        for (char c : piece_.padding) padding += c;
+        msg().infof(
+            "    {}: piece basis of the X-FEM model ({} block(s)): {} node copies, {} unknowns ({} of them eliminated "
+            "components kept as identity rows) for {} equations; preconditioner matrix {} non-zeros (the "
+            "equations' {}), block size {}, built in {:.3f} s",
+            name(), piece_.blocks, piece_.copies, n, padding, A.rows, scaled_.nonZeros(), A.nonZeros(),
+            piece_.blockSize, secondsSince(t0));
+        if (options_.preconditioner != "BOOMER") attachNearNullSpace(piece_.modes, pmat_);
+        std::vector<double>().swap(piece_.modes);
+    }
+
+    void createShell(int n) {
+        checkPetsc(MatCreateShell(PETSC_COMM_SELF, n, n, n, n, &operator_, &matrix_), "MatCreateShell");
+        checkPetsc(MatShellSetOperation(matrix_, MATOP_MULT, reinterpret_cast<void (*)(void)>(multiplyScaled)),
+                   "MatShellSetOperation");
+    }
+    void createAssembled(Mat& target) {
+        rowStart_.assign(scaled_.rowStart.begin(), scaled_.rowStart.end());
+        checkPetsc(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, scaled_.rows, scaled_.rows, rowStart_.data(),
+                                             scaled_.cols.data(), scaled_.values.data(), &target),
+                   "MatCreateSeqAIJWithArrays");
+    }
+    Mat preconditionerMatrix() const { return pmat_ ? pmat_ : matrix_; }
 
     // The rigid modes of the model's blocks (SolverOptions::nearNullSpace) as the near null space of
     // S A S (y = S^-1 x: each mode divided by S), orthonormalised, for GAMG's and ML's coarse spaces:
     // without them aggregation sees only constants, and the iterations grow with N (docs/solver.md).
-    void attachNearNullSpace() {
-        std::vector<double> modes = options_.nearNullSpace ? options_.nearNullSpace() : std::vector<double>{};
+    void attachNearNullSpace(std::vector<double>& modes, Mat target) {
         const size_t n = scale_.size();
         if (n == 0 || modes.size() < n || modes.size() % n != 0) return;
         const size_t k = modes.size() / n;
@@ -258,7 +369,7 @@ private:
         MatNullSpace space = nullptr;
         const PetscErrorCode code =
             MatNullSpaceCreate(PETSC_COMM_SELF, PETSC_FALSE, PetscInt(vecs.size()), vecs.data(), &space);
-        if (code == 0) MatSetNearNullSpace(matrix_, space), MatNullSpaceDestroy(&space);
+        if (code == 0) MatSetNearNullSpace(target, space), MatNullSpaceDestroy(&space);
         for (Vec& v : vecs) VecDestroy(&v);
         checkPetsc(code, "MatNullSpaceCreate");
         nearNullModes_ = int(vecs.size());
@@ -268,9 +379,11 @@ private:
     // relative residual ||S b - S A S y|| / ||S b||, whatever norm the method iterated on.
     int iterate(const std::vector<double>& b, std::span<double> x) {
         const auto t0 = std::chrono::steady_clock::now();
-        const size_t n = size_t(A_->rows);
+        const size_t n = scale_.size();
         std::vector<double> sb(n), y(n, 0.0), r(n);
-        for (size_t i = 0; i < n; ++i) sb[i] = scale_[i] * b[i];
+        if (piece_.copies > 0) toPieces(piece_, b.data(), sb.data());
+        else std::copy(b.begin(), b.end(), sb.begin());
+        for (size_t i = 0; i < n; ++i) sb[i] *= scale_[i];
         Vec vb = nullptr, vy = nullptr;
         checkPetsc(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, PetscInt(n), sb.data(), &vb), "VecCreateSeqWithArray");
         checkPetsc(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, PetscInt(n), y.data(), &vy), "VecCreateSeqWithArray");
@@ -290,7 +403,9 @@ private:
         for (size_t i = 0; i < n; ++i) num += (sb[i] - r[i]) * (sb[i] - r[i]), den += sb[i] * sb[i];
         lastIterations_ = int(iterations);
         lastResidual_ = double(den > 0.0L ? std::sqrt(num / den) : std::sqrt(num));
-        for (size_t i = 0; i < n; ++i) x[i] = scale_[i] * y[i];
+        for (size_t i = 0; i < n; ++i) y[i] *= scale_[i];
+        if (piece_.copies > 0) toEquations(piece_, y.data(), x.data());
+        else std::copy(y.begin(), y.end(), x.begin());
         msg().infof(
             "    {} solve {:.3f} s: {} iterations, {}, relative residual of the scaled system {:.3e} (the method's "
             "own estimate {:.3e}; RESI_RELA={:g}){}",
@@ -324,6 +439,7 @@ private:
 
     void destroyOperator() {
         if (matrix_) MatDestroy(&matrix_);
+        if (pmat_) MatDestroy(&pmat_);
     }
     void destroySolver() {
         if (ksp_) KSPDestroy(&ksp_);
@@ -338,6 +454,9 @@ private:
     // (the recursive residual of a converged Krylov method drifts from the true one by a few units).
     static constexpr int kInaccurate = -1000;
     static constexpr double kTrueResidualSlack = 10.0;
+    // Couplings of T^T A T below this fraction of sqrt(a_kk a_ll) are the round-off of pieces that do
+    // not meet (their exact value is 0); the preconditioner leaves them out, the operator keeps them.
+    static constexpr double kPieceRoundOff = 1e-10;
 
     SolverOptions options_;
     const CsrMatrix* A_ = nullptr;
@@ -348,6 +467,8 @@ private:
     CsrMatrix scaled_;  // S A S for PETSc's own preconditioners (empty with factors)
     std::vector<PetscInt> rowStart_;
     Mat matrix_ = nullptr;
+    Mat pmat_ = nullptr;  // the preconditioner's matrix when it is not matrix_ (piece basis)
+    PieceBasis piece_;    // copies == 0: PETSc iterates on the equations
     KSP ksp_ = nullptr;
     FactorPreconditioner factors_;
     int nearNullModes_ = 0;
