@@ -114,7 +114,7 @@ CsrMatrix scaledCopy(const CsrMatrix& A, const std::vector<double>& s, const Sol
 struct FactorPreconditioner {
     std::unique_ptr<ScaledDirectSolver> factors;
     int applications = 0;
-    double seconds = 0.0;
+    double seconds = 0.0, cpuSeconds = 0.0;  // wall, and CPU of the calling thread
 };
 
 PetscErrorCode applyFactors(PC pc, Vec x, Vec y) {
@@ -122,6 +122,7 @@ PetscErrorCode applyFactors(PC pc, Vec x, Vec y) {
     PetscCall(PCShellGetContext(pc, &context));
     auto* p = static_cast<FactorPreconditioner*>(context);
     const auto t0 = std::chrono::steady_clock::now();
+    const double cpu0 = threadCpuSeconds();
     PetscCall(VecCopy(x, y));
     PetscInt n = 0;
     PetscCall(VecGetLocalSize(y, &n));
@@ -136,6 +137,7 @@ PetscErrorCode applyFactors(PC pc, Vec x, Vec y) {
     PetscCall(VecRestoreArray(y, &v));
     ++p->applications;
     p->seconds += secondsSince(t0);
+    p->cpuSeconds += threadCpuSeconds() - cpu0;
     return 0;
 }
 
@@ -388,7 +390,7 @@ private:
         checkPetsc(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, PetscInt(n), sb.data(), &vb), "VecCreateSeqWithArray");
         checkPetsc(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, PetscInt(n), y.data(), &vy), "VecCreateSeqWithArray");
         const int appliedBefore = factors_.applications;
-        const double applyBefore = factors_.seconds;
+        const double applyBefore = factors_.seconds, applyCpuBefore = factors_.cpuSeconds;
         const PetscErrorCode code = KSPSolve(ksp_, vb, vy);
         KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
         PetscInt iterations = 0;
@@ -411,10 +413,10 @@ private:
             "own estimate {:.3e}; RESI_RELA={:g}){}",
             name(), secondsSince(t0), lastIterations_, KSPConvergedReasons[reason], lastResidual_,
             den > 0.0L ? double(estimate) / double(std::sqrt(den)) : double(estimate), options_.resiRela,
-            factors_.factors
-                ? fmt::format("; {} applications of the {} factors, {:.3f} s", factors_.applications - appliedBefore,
-                              options_.preconditioner, factors_.seconds - applyBefore)
-                : std::string());
+            factors_.factors ? fmt::format("; {} applications of the {} factors, {:.3f} s (cpu {:.3f} s)",
+                                           factors_.applications - appliedBefore, options_.preconditioner,
+                                           factors_.seconds - applyBefore, factors_.cpuSeconds - applyCpuBefore)
+                             : std::string());
         // Converged by its own estimate but not in truth (GMRES right-preconditioned by single-precision
         // factors rebuilds x with a preconditioner that is not exactly linear): not an answer either.
         if (reason > 0 && lastResidual_ > kTrueResidualSlack * options_.resiRela) return kInaccurate;
