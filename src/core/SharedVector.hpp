@@ -48,7 +48,18 @@ public:
     void push_back(const T& value) { mut().push_back(value); }
     void reserve(size_type n) { mut().reserve(n); }
     void resize(size_type n) { mut().resize(n); }
-    void assign(size_type n, const T& value) { mut().assign(n, value); }
+    // The storage to overwrite whole, this owner's alone and empty (a shared one is left to the
+    // others, not copied): a reused scratch keeps its capacity.
+    std::vector<T>& overwrite() {
+        if (!data_ || data_.use_count() > 1) data_ = std::make_shared<std::vector<T>>();
+        else data_->clear();
+        return *data_;
+    }
+    void assign(size_type n, const T& value) { overwrite().assign(n, value); }
+    template <class It>
+    void assign(It first, It last) {
+        overwrite().assign(first, last);
+    }
     void clear() { data_.reset(); }
     template <class It>
     void insert(const_iterator at, It first, It last) {

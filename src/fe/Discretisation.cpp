@@ -71,7 +71,7 @@ const ElementIntegration& Discretisation::integrationOf(size_t e, ElementIntegra
     if (isEnriched(e)) {
         const ElementIntegration& stored = enrichedIntegrations_[size_t(enrichedIndex_[e])];
         if (!stored.hasTip()) return stored;
-        scratch = stored;
+        scratch.describeAs(stored);
         model_->enrichment->tipFields(stored.cell, tipLaws_[size_t(enrichedIndex_[e])], scratch);
         return scratch;
     }

@@ -33,7 +33,8 @@ public:
 
     bool isEnriched(size_t e) const { return !enrichedIndex_.empty() && enrichedIndex_[e] != -1; }
     // The X-FEM description of element e when it is enriched, else its classical one (in scratch).
-    // A crack-tip element's is copied into scratch with its tip fields computed again (not kept).
+    // A crack-tip element's is handed out in scratch, its points shared with the stored description
+    // (not copied) and its tip fields computed again (not kept).
     const ElementIntegration& integrationOf(size_t e, ElementIntegration& scratch) const;
     // Integration points of element e.
     size_t pointCount(size_t e) const;

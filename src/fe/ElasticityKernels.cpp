@@ -115,14 +115,29 @@ void displacementGradient(const ElementIntegration& ei, const PointGeometry& geo
                           const std::vector<double>& u, size_t p, int dim, double G[3][3]) {
     for (int c = 0; c < 3; ++c)
         for (int j = 0; j < 3; ++j) G[c][j] = 0.0;
+    const int n = ei.nodeCount;
     if (ei.hasTip()) {
-        forEachDofGradient(ei, geo, p, dim, [&](size_t i, const double* b) {
-            for (int c = 0; c < dim; ++c)
-                for (int j = 0; j < dim; ++j) G[c][j] += u[size_t(dofs[i])] * b[c * 3 + j];
-        });
+        // dofGradients' B contracted with u without building it: its zero entries left out, the
+        // others added in the same order (a sum from +0 is unchanged by a zero term: the same bits).
+        size_t i = 0;
+        for (int a = 0; a < n; ++a) {
+            const double* ga = &geo.gradN[(p * size_t(n) + size_t(a)) * 3];
+            for (int k = 0; k < ei.slots[size_t(a)]; ++k) {
+                const double pa = ei.multiplier(int(p), a, k);
+                for (int c = 0; c < dim; ++c, ++i)
+                    for (int j = 0; j < dim; ++j) G[c][j] += u[size_t(dofs[i])] * (pa * ga[j]);
+            }
+            if (!ei.tipAt(a)) continue;
+            const double Na = geo.N[p * size_t(n) + size_t(a)];
+            const double* phi = ei.tipValue(p);
+            const double* dphi = ei.tipGradient(p);
+            for (int m = 0; m < dim; ++m, ++i)
+                for (int c = 0; c < dim; ++c)
+                    for (int j = 0; j < dim; ++j)
+                        G[c][j] += u[size_t(dofs[i])] * (ga[j] * phi[c * 3 + m] + Na * dphi[(c * 3 + m) * 3 + j]);
+        }
         return;
     }
-    const int n = ei.nodeCount;
     int i = 0;
     for (int a = 0; a < n; ++a) {
         const double* ga = &geo.gradN[(p * n + a) * 3];

@@ -22,6 +22,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "core/SharedVector.hpp"
+
 namespace ma {
 
 struct ElementIntegration {
@@ -29,9 +31,10 @@ struct ElementIntegration {
     int nodeCount = 0;  // nodes of the parent cell
     // Integration points in the parent reference element; the physical weight of point p is
     // refWeights[p] * |det J(refPoints[p])| (sub-cell volume ratio already in refWeights).
-    std::vector<std::array<double, 3>> refPoints;
-    std::vector<double> refWeights;
-    std::vector<int> pointSubcell;  // sub-cell of each point (0 for a classical element)
+    // The point arrays and psi are shared by the copies describeAs makes (core/SharedVector.hpp).
+    SharedVector<std::array<double, 3>> refPoints;
+    SharedVector<double> refWeights;
+    SharedVector<int> pointSubcell;  // sub-cell of each point (0 for a classical element)
 
     // slots[a] = number of slots of local node a in this element (1 = standard only).
     std::vector<int> slots;
@@ -39,7 +42,7 @@ struct ElementIntegration {
     // sub-cell: stored once per sub-cell, not per point, for the ~10^4 points of a 3D tip element);
     // only read for k < slots[a]. Empty means psi = 1 for k = 0 (a classical element).
     int maxSlots = 1;
-    std::vector<double> psi;
+    SharedVector<double> psi;
 
     // Per local node: 1 when it carries the tip slot in this element; empty when none does.
     std::vector<char> tip;
@@ -47,6 +50,16 @@ struct ElementIntegration {
     static constexpr int kTipStride = 36;
     std::vector<double> tipA, tipB;  // from the enrichment (material-free parts)
     std::vector<double> tipPhi;      // (kappa * A + B) / (2 mu), set by applyTipLaw
+
+    // This element as `other` without its tip fields (to fill: Enrichment::tipFields), sharing
+    // its points and psi instead of copying them: a crack-tip element holds ~10^4 points.
+    void describeAs(const ElementIntegration& other) {
+        cell = other.cell, nodeCount = other.nodeCount;
+        refPoints = other.refPoints, refWeights = other.refWeights, pointSubcell = other.pointSubcell;
+        slots = other.slots, maxSlots = other.maxSlots, psi = other.psi;
+        tip = other.tip;
+        tipA.clear(), tipB.clear();  // tipPhi is overwritten whole (its capacity kept)
+    }
 
     bool hasTip() const { return !tip.empty(); }
     bool tipAt(int a) const { return !tip.empty() && tip[std::size_t(a)] != 0; }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/Concept.hpp"
+#include "fields/PointGeometryCache.hpp"
 #include "mesh/Mesh.hpp"
 
 namespace ma {
@@ -34,6 +35,9 @@ public:
 
     int dim = 2;                                       // displacement components: 2 (D_PLAN, C_PLAN) or 3
     Modelisation modelisation = Modelisation::D_PLAN;  // the (single) modelisation of the model
+
+    // The point geometry its stress and strain fields share (fe/ResultFields; a copy starts empty).
+    PointGeometryCache pointGeometry;
 };
 
 }  // namespace ma

@@ -1,7 +1,6 @@
 #include "fe/ResultFields.hpp"
 
 #include <atomic>
-#include <mutex>
 
 #include "fe/ElasticityKernels.hpp"
 #include "fe/Parallel.hpp"
@@ -42,44 +41,6 @@ std::shared_ptr<GaussField> emptyPointField(const Discretisation& space, const s
     const size_t points = size_t(field->pointOffsets.back());
     field->values.resize(points * field->components.size());
     return field;
-}
-
-// The point geometry of the latest stress or strain field: the next field on the same points (the
-// next solve of the model: ssnv185c's three results, ~8e5 points each) shares its storage instead
-// of keeping its own copy (60 bytes a point). Watched, not owned: it lives as long as a field holds it.
-struct LatestGeometry {
-    std::mutex guard;
-    std::weak_ptr<const std::vector<std::array<double, 3>>> coords, refCoords;
-    std::weak_ptr<const std::vector<double>> weights;
-    std::weak_ptr<const std::vector<int>> subcells;
-};
-LatestGeometry& latestGeometry() {
-    static LatestGeometry latest;
-    return latest;
-}
-
-// The latest geometry when it has `points` points, taken as it is (pointField checks it point by
-// point); false leaves the field without geometry.
-bool adoptLatestGeometry(GaussField& field, size_t points) {
-    LatestGeometry& g = latestGeometry();
-    const std::lock_guard lock(g.guard);
-    GaussField candidate;
-    if (!candidate.pointCoords.adopt(g.coords) || !candidate.pointWeights.adopt(g.weights) ||
-        !candidate.pointSubcell.adopt(g.subcells) || !candidate.pointRefCoords.adopt(g.refCoords))
-        return false;
-    if (candidate.pointWeights.size() != points || candidate.pointCoords.size() != points ||
-        candidate.pointSubcell.size() != points || candidate.pointRefCoords.size() != points)
-        return false;
-    field.pointCoords = candidate.pointCoords, field.pointWeights = candidate.pointWeights;
-    field.pointSubcell = candidate.pointSubcell, field.pointRefCoords = candidate.pointRefCoords;
-    return true;
-}
-
-void watchGeometry(const GaussField& field) {
-    LatestGeometry& g = latestGeometry();
-    const std::lock_guard lock(g.guard);
-    g.coords = field.pointCoords.watch(), g.weights = field.pointWeights.watch();
-    g.subcells = field.pointSubcell.watch(), g.refCoords = field.pointRefCoords.watch();
 }
 
 using PointStore = void (*)(const double G[3][3], const IsotropicLaw& law, int dim, double* out);
@@ -148,8 +109,9 @@ void fillPoints(const Discretisation& space, const std::vector<double>& u, Gauss
 std::shared_ptr<GaussField> pointField(const Discretisation& space, const std::vector<double>& u,
                                        std::shared_ptr<GaussField> field, PointStore tensorAt) {
     const size_t points = size_t(field->pointOffsets.back());
-    // The latest field's geometry when it is this field's: compared point by point, not copied.
-    const bool shared = adoptLatestGeometry(*field, points);
+    // The model's latest field's geometry when it is this field's: compared point by point, not copied.
+    const PointGeometryCache& latest = space.model().pointGeometry;
+    const bool shared = latest.adopt(*field, points);
     if (!shared) {
         field->pointCoords.resize(points), field->pointWeights.resize(points);
         field->pointSubcell.resize(points), field->pointRefCoords.resize(points);
@@ -163,7 +125,7 @@ std::shared_ptr<GaussField> pointField(const Discretisation& space, const std::v
         field->pointRefCoords = std::vector<std::array<double, 3>>(points);
         fillPoints(space, u, *field, tensorAt, false, differs);
     }
-    if (!shared || differs) watchGeometry(*field);
+    if (!shared || differs) latest.watch(*field);
     return field;
 }
 

@@ -284,13 +284,14 @@ private:
         ei.pointSubcell.push_back(f.subcell);
         const auto nodes = mesh_.cellNodes(cut.cell);
         const size_t s = size_t(f.subcell);  // psi is stored per sub-cell (ElementIntegration)
-        if (ei.psi.size() < (s + 1) * size_t(nn) * size_t(ei.maxSlots))
-            ei.psi.resize((s + 1) * size_t(nn) * size_t(ei.maxSlots), 0.0);
+        std::vector<double>& psi = ei.psi.mut();
+        if (psi.size() < (s + 1) * size_t(nn) * size_t(ei.maxSlots))
+            psi.resize((s + 1) * size_t(nn) * size_t(ei.maxSlots), 0.0);
         for (int a = 0; a < nn; ++a) {
             const size_t base = (s * size_t(nn) + size_t(a)) * size_t(ei.maxSlots);
-            ei.psi[base] = 1.0;
+            psi[base] = 1.0;
             for (int k = 1; k < ei.slots[size_t(a)]; ++k)
-                ei.psi[base + size_t(k)] = xm_.psi(nodes[size_t(a)], k, cut, f.subcell);
+                psi[base + size_t(k)] = xm_.psi(nodes[size_t(a)], k, cut, f.subcell);
         }
         lip.xyz.push_back(x);
         lip.weight.push_back(w * measure);

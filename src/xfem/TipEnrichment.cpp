@@ -156,27 +156,29 @@ LocalPoint localPolar(const Vec3& x, const Vec3& origin, const Vec3& e1, const V
 }
 
 // Phi and dPhi of one part (A or B) at a point: P [F - sum_b N_b F_b] and its gradient. The shifted
-// field and the gradient of its shift do not depend on the global component c: computed once.
+// field and its gradient depend on the mode and the local component only: computed once for the
+// three global components (the same operations, in the same order, as per component).
 void composePart(int dim, const double F[3][3], const double dF[3][3][2], const std::vector<std::array<double, 9>>& Fn,
                  std::span<const double> N, std::span<const double> gradN, const Vec3 e[3], double* out) {
-    double shifted[3][3], local[3][3][3];  // [m][k] and its gradient [m][k][j]
+    double shifted[3][3], slope[3][3][3];  // [m][k], [m][k][j]
     for (int m = 0; m < 3; ++m)
         for (int k = 0; k < dim; ++k) {
-            shifted[m][k] = F[m][k];
+            double value = F[m][k];
             double gradShift[3] = {0, 0, 0};
             for (size_t b = 0; b < Fn.size(); ++b) {
-                shifted[m][k] -= N[b] * Fn[b][size_t(m * 3 + k)];
+                value -= N[b] * Fn[b][size_t(m * 3 + k)];
                 for (int j = 0; j < 3; ++j) gradShift[j] += Fn[b][size_t(m * 3 + k)] * gradN[b * 3 + size_t(j)];
             }
+            shifted[m][k] = value;
             for (int j = 0; j < 3; ++j)
-                local[m][k][j] = dF[m][k][0] * e[0][size_t(j)] + dF[m][k][1] * e[1][size_t(j)] - gradShift[j];
+                slope[m][k][j] = dF[m][k][0] * e[0][size_t(j)] + dF[m][k][1] * e[1][size_t(j)] - gradShift[j];
         }
     for (int c = 0; c < 3; ++c)
         for (int m = 0; m < 3; ++m) {
             double v = 0.0, d[3] = {0, 0, 0};
             for (int k = 0; k < dim; ++k) {
                 v += e[k][size_t(c)] * shifted[m][k];
-                for (int j = 0; j < 3; ++j) d[j] += e[k][size_t(c)] * local[m][k][j];
+                for (int j = 0; j < 3; ++j) d[j] += e[k][size_t(c)] * slope[m][k][j];
             }
             out[c * 3 + m] = v;
             for (int j = 0; j < 3; ++j) out[9 + (c * 3 + m) * 3 + j] = d[j];

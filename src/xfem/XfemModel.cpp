@@ -417,8 +417,8 @@ void XfemModel::integration(int cell, ElementIntegration& out) const {
         out.psi.insert(out.psi.end(), subPsi.begin(), subPsi.end());
         if (tipRule) {
             const size_t before = out.refPoints.size();
-            if (cut.dim == 3) tipSubcellRule3(cut, s, out.refPoints, out.refWeights);
-            else tipSubcellRule(cut, s, out.refPoints, out.refWeights);
+            if (cut.dim == 3) tipSubcellRule3(cut, s, out.refPoints.mut(), out.refWeights.mut());
+            else tipSubcellRule(cut, s, out.refPoints.mut(), out.refWeights.mut());
             for (size_t q = before; q < out.refPoints.size(); ++q, ++p) out.pointSubcell.push_back(s);
             continue;
         }
@@ -433,9 +433,9 @@ void XfemModel::integration(int cell, ElementIntegration& out) const {
         }
     }
     if (tipRule) {  // the tip rules' point counts are not known beforehand: drop the growth slack
-        out.refPoints.shrink_to_fit();
-        out.refWeights.shrink_to_fit();
-        out.pointSubcell.shrink_to_fit();
+        out.refPoints.mut().shrink_to_fit();
+        out.refWeights.mut().shrink_to_fit();
+        out.pointSubcell.mut().shrink_to_fit();
     }
     if (hasTip) addTipFields(cut, out);
     if (cut.skin && !tipNodes_.empty()) {  // flags only: loads on such cells are refused (fe/ExternalForces)

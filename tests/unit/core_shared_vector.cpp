@@ -59,3 +59,23 @@ TEST(SharedVector, GaussFieldCopiesKeepTheirOwnValues) {
     EXPECT_EQ(f.pointCoords.watch().lock(), g.pointCoords.watch().lock());
     EXPECT_EQ(g.pointCount(), 2);
 }
+
+// Overwriting a shared storage whole leaves it to its other owners (no copy first); an owner's
+// own storage is overwritten in place (a reused scratch keeps its capacity).
+TEST(SharedVector, AssignLeavesASharedStorageToTheOthers) {
+    SharedVector<int> stored = std::vector<int>{1, 2, 3, 4};
+    SharedVector<int> scratch = stored;
+    const std::vector<int> four{5, 6, 7, 8};
+    scratch.assign(four.begin(), four.end());
+    EXPECT_EQ(stored.get(), (std::vector<int>{1, 2, 3, 4}));
+    EXPECT_EQ(scratch.get(), four);
+    EXPECT_NE(stored.watch().lock(), scratch.watch().lock());
+    const int* own = scratch.data();
+    scratch.assign(size_t(3), 9);
+    EXPECT_EQ(scratch.data(), own);  // its own storage, reused
+    EXPECT_EQ(scratch.get(), (std::vector<int>{9, 9, 9}));
+    scratch = stored;
+    scratch.assign(size_t(2), 0);
+    EXPECT_EQ(stored.get(), (std::vector<int>{1, 2, 3, 4}));
+    EXPECT_EQ(scratch.get(), (std::vector<int>{0, 0}));
+}

@@ -243,49 +243,96 @@ TEST(FeClassical, ThreadedLoopsReportTheFirstBadElement) {
     setWorkerCount(0);
 }
 
-// Successive stress fields of the same points share one copy of their point geometry (ssnv185c's
-// three results); a field with as many points elsewhere keeps its own, and the first is untouched.
+namespace {
+
+// A 2 x 2 plate clamped on its left, pressed on its right: the stress field of one solve of `model`.
+std::shared_ptr<GaussField> solvedStress(const std::shared_ptr<Model>& model) {
+    using namespace fetest;
+    auto mat = material(model, 2.0e5, 0.3);
+    KeywordSet kw;
+    set(kw, "MODELE", model);
+    auto& d = kw.addOccurrence("DDL_IMPO");
+    setTexts(d, "GROUP_MA", {"LEFT"});
+    const auto zero = ConceptPtr(std::make_shared<LambdaFunction>([](double, double, double) { return 0.0; }));
+    set(d, "DX", zero);
+    set(d, "DY", zero);
+    auto& p = kw.addOccurrence("PRES_REP");
+    setTexts(p, "GROUP_MA", {"RIGHT"});
+    set(p, "PRES", ConceptPtr(std::make_shared<LambdaFunction>([](double, double y, double) { return y; })));
+    auto load = std::dynamic_pointer_cast<MechanicalLoad>(run("AFFE_CHAR_MECA_F", kw, "CHAR"));
+    SolverOptions eigen;
+    eigen.method = "LDLT";
+    MechanicalProblem problem(model, mat, {{load, nullptr}}, eigen);
+    ConvergenceOptions conv;
+    conv.maxIterations = 0;
+    conv.resiGlobRela = -1.0;
+    problem.solveIncrement(0.0, conv);
+    return problem.stressField();
+}
+
+double pointArea(const GaussField& f) {
+    double a = 0.0;
+    for (double w : f.pointWeights) a += w;
+    return a;
+}
+
+bool sameGeometryStorage(const GaussField& a, const GaussField& b) {
+    return a.pointCoords.watch().lock() == b.pointCoords.watch().lock() &&
+           a.pointWeights.watch().lock() == b.pointWeights.watch().lock() &&
+           a.pointSubcell.watch().lock() == b.pointSubcell.watch().lock() &&
+           a.pointRefCoords.watch().lock() == b.pointRefCoords.watch().lock();
+}
+
+}  // namespace
+
+// Successive stress fields of a model on the same points share one copy of their point geometry
+// (ssnv185c's three results); after its mesh moved (as many points elsewhere) a field keeps its
+// own, and the first is untouched.
 TEST(FeClassical, StressFieldsShareThePointGeometryOfTheSamePointsOnly) {
     using namespace fetest;
     msg().setEcho(false);
-    auto solvedStress = [](double L) {
-        auto model = affeModele(planeMesh(6, 6, false, L), "D_PLAN", {"ALL", "RIGHT"});
-        auto mat = material(model, 2.0e5, 0.3);
-        KeywordSet kw;
-        set(kw, "MODELE", model);
-        auto& d = kw.addOccurrence("DDL_IMPO");
-        setTexts(d, "GROUP_MA", {"LEFT"});
-        const auto zero = ConceptPtr(std::make_shared<LambdaFunction>([](double, double, double) { return 0.0; }));
-        set(d, "DX", zero);
-        set(d, "DY", zero);
-        auto& p = kw.addOccurrence("PRES_REP");
-        setTexts(p, "GROUP_MA", {"RIGHT"});
-        set(p, "PRES", ConceptPtr(std::make_shared<LambdaFunction>([](double, double y, double) { return y; })));
-        auto load = std::dynamic_pointer_cast<MechanicalLoad>(run("AFFE_CHAR_MECA_F", kw, "CHAR"));
-        SolverOptions eigen;
-        eigen.method = "LDLT";
-        MechanicalProblem problem(model, mat, {{load, nullptr}}, eigen);
-        ConvergenceOptions conv;
-        conv.maxIterations = 0;
-        conv.resiGlobRela = -1.0;
-        problem.solveIncrement(0.0, conv);
-        return problem.stressField();
-    };
-    auto area = [](const GaussField& f) {
-        double a = 0.0;
-        for (double w : f.pointWeights) a += w;
-        return a;
-    };
-    const auto first = solvedStress(2.0);
-    const auto again = solvedStress(2.0);
-    EXPECT_EQ(first->pointCoords.watch().lock(), again->pointCoords.watch().lock());
-    EXPECT_EQ(first->pointWeights.watch().lock(), again->pointWeights.watch().lock());
-    const auto elsewhere = solvedStress(3.0);
+    auto mesh = planeMesh(6, 6, false, 2.0);
+    auto model = affeModele(mesh, "D_PLAN", {"ALL", "RIGHT"});
+    const auto first = solvedStress(model);
+    const auto again = solvedStress(model);
+    EXPECT_TRUE(sameGeometryStorage(*first, *again));
+    for (auto& x : mesh->coords) x = {1.5 * x[0], 1.5 * x[1], x[2]};
+    const auto elsewhere = solvedStress(model);
     ASSERT_EQ(elsewhere->pointCount(), first->pointCount());
     EXPECT_NE(elsewhere->pointCoords.watch().lock(), first->pointCoords.watch().lock());
-    EXPECT_NEAR(area(*elsewhere), 9.0, 1e-12);
-    EXPECT_NEAR(area(*first), 4.0, 1e-12);
+    EXPECT_NEAR(pointArea(*elsewhere), 9.0, 1e-12);
+    EXPECT_NEAR(pointArea(*first), 4.0, 1e-12);
+    EXPECT_NEAR(pointArea(*again), 4.0, 1e-12);
     double xmax = 0.0;
     for (const auto& x : elsewhere->pointCoords) xmax = std::max(xmax, x[0]);
     EXPECT_GT(xmax, 2.5);
+    const auto moved = solvedStress(model);  // the moved points are now the model's latest
+    EXPECT_TRUE(sameGeometryStorage(*moved, *elsewhere));
+}
+
+// Two models of the same mesh (identical points) never share a geometry: each shares with its own
+// earlier fields only, whatever the other solved in between; a model's copy (MODI_MODELE_XFEM's
+// start) begins with nothing of the original's.
+TEST(FeClassical, StressFieldsOfTwoModelsKeepTheirOwnPointGeometry) {
+    using namespace fetest;
+    msg().setEcho(false);
+    auto mesh = planeMesh(6, 6, false, 2.0);
+    auto one = affeModele(mesh, "D_PLAN", {"ALL", "RIGHT"});
+    auto other = affeModele(mesh, "D_PLAN", {"ALL", "RIGHT"});
+    const auto oneFirst = solvedStress(one);
+    const auto otherFirst = solvedStress(other);
+    const auto oneAgain = solvedStress(one);
+    const auto otherAgain = solvedStress(other);
+    EXPECT_EQ(oneFirst->pointCoords.get(), otherFirst->pointCoords.get());  // the same points, by value
+    EXPECT_EQ(oneFirst->pointWeights.get(), otherFirst->pointWeights.get());
+    EXPECT_FALSE(oneFirst->pointCoords.watch().lock() == otherFirst->pointCoords.watch().lock());
+    EXPECT_FALSE(oneFirst->pointWeights.watch().lock() == otherFirst->pointWeights.watch().lock());
+    EXPECT_TRUE(sameGeometryStorage(*oneFirst, *oneAgain));
+    EXPECT_TRUE(sameGeometryStorage(*otherFirst, *otherAgain));
+    auto copy = std::make_shared<Model>(*one);
+    const auto ofCopy = solvedStress(copy);
+    EXPECT_EQ(ofCopy->pointCoords.get(), oneFirst->pointCoords.get());
+    EXPECT_NE(ofCopy->pointCoords.watch().lock(), oneFirst->pointCoords.watch().lock());
+    EXPECT_TRUE(sameGeometryStorage(*solvedStress(copy), *ofCopy));
+    EXPECT_NEAR(pointArea(*otherAgain), 4.0, 1e-12);
 }

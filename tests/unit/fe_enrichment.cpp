@@ -31,7 +31,7 @@ public:
         out.maxSlots = 2;
         out.slots.assign(out.nodeCount, 2);
         out.psi.assign(size_t(out.nodeCount) * 2, 0.0);  // one sub-cell (pointSubcell 0 at every point)
-        for (int a = 0; a < out.nodeCount; ++a) out.psi[size_t(a) * 2] = 1.0;  // slot 0: psi = 1
+        for (int a = 0; a < out.nodeCount; ++a) out.psi.mut()[size_t(a) * 2] = 1.0;  // slot 0: psi = 1
     }
 
 private:

@@ -15,6 +15,7 @@
 #include <numbers>
 
 #include "fe/Discretisation.hpp"
+#include "fe/ElementKinematics.hpp"
 #include "fe/ExternalForces.hpp"
 #include "fe_test_support.hpp"
 #include "xfem/TipEnrichment.hpp"
@@ -228,6 +229,39 @@ TEST(XfemLipLoads, VolumeForceOnTipElementsWorksOnTheExactField) {
         const double exact = volumeWorkReference(k, {f[0], f[1], plane ? 0.0 : f[2]});
         const double got = work(s, load, k);
         EXPECT_NEAR(got / exact, 1.0, plane ? 1e-9 : 1e-5) << cellTypeName(type) << ": " << got << " vs " << exact;
+    }
+}
+
+// A crack-tip element handed out by the Discretisation shares the stored points and psi (no copy
+// per pass) and carries the Phi of the complete description (applyTipLaw on its A and B), to the
+// bit, whatever the scratch held before (another tip element, a classical cell).
+TEST(XfemTipElements, HandedOutWithTheStoredPointsAndTheirPhi) {
+    const double lambda = kE * kNu / ((1 + kNu) * (1 - 2 * kNu));
+    for (CellType type : {CellType::QUAD4, CellType::HEXA8}) {
+        const auto s = scene(type == CellType::QUAD4 ? xfemtest::square(5, type) : xfemtest::slab(5, type));
+        ElementIntegration scratch, other, full;
+        int tipElements = 0;
+        for (size_t e = 0; e < s.space->elementCount(); ++e) {
+            if (!s.space->isEnriched(e)) continue;
+            const ElementIntegration& ei = s.space->integrationOf(e, scratch);
+            if (!ei.hasTip()) continue;
+            ++tipElements;
+            const ElementIntegration& again = s.space->integrationOf(e, other);
+            EXPECT_EQ(ei.refPoints.watch().lock(), again.refPoints.watch().lock()) << e;
+            EXPECT_EQ(ei.refWeights.watch().lock(), again.refWeights.watch().lock()) << e;
+            EXPECT_EQ(ei.psi.watch().lock(), again.psi.watch().lock()) << e;
+            s.model->enrichment->integration(ei.cell, full);
+            applyTipLaw(full, lambda, kMu);
+            ASSERT_EQ(ei.refPoints.get(), full.refPoints.get()) << e;
+            EXPECT_EQ(ei.refWeights.get(), full.refWeights.get()) << e;
+            EXPECT_EQ(ei.pointSubcell.get(), full.pointSubcell.get()) << e;
+            EXPECT_EQ(ei.psi.get(), full.psi.get()) << e;
+            EXPECT_EQ(ei.tip, full.tip) << e;
+            EXPECT_EQ(ei.tipPhi, full.tipPhi) << e;
+            classicalIntegration(*s.mesh, ei.cell, false, other);  // the scratch reused: the stored kept
+            EXPECT_EQ(s.space->integrationOf(e, scratch).refPoints.get(), full.refPoints.get()) << e;
+        }
+        EXPECT_GT(tipElements, 4) << cellTypeName(type);
     }
 }
 
