@@ -15,60 +15,15 @@
 #include "fe/NearNullSpace.hpp"
 #include "fe/SparsityPattern.hpp"
 #include "fe_test_support.hpp"
+#include "xfem_free_model.hpp"
 #include "xfem_test_meshes.hpp"
 
 using namespace ma;
 
 namespace {
 
-using LevelSet = std::function<double(double, double, double)>;
-
-// A free X-FEM model of `mesh` cut by interfaces (level sets), each optionally joined (JONCTION)
-// to the first one at `point`, its matrix and its blocks.
-struct FreeModel {
-    std::shared_ptr<Model> model;
-    std::unique_ptr<Discretisation> space;
-    DirichletConstraints constraints;
-    CsrMatrix K;
-    ModelBlocks blocks;
-};
-
-struct Interface {
-    LevelSet lsn;
-    bool joined = false;            // JONCTION on the first interface
-    std::array<double, 3> point{};  // its POINT
-};
-
-FreeModel freeModel(const std::shared_ptr<Mesh>& mesh, const std::vector<Interface>& interfaces) {
-    msg().setEcho(false);
-    FreeModel f;
-    std::vector<std::shared_ptr<const xfem::Crack>> cracks;
-    std::shared_ptr<xfem::Crack> first;
-    for (size_t i = 0; i < interfaces.size(); ++i) {
-        xfem::JunctionInput junction;
-        if (interfaces[i].joined) junction.masters = {first}, junction.point = interfaces[i].point;
-        auto crack = xfem::buildCrack(mesh, xfemtest::levelSet(*mesh, interfaces[i].lsn),
-                                      interfaces[i].joined ? &junction : nullptr);
-        crack->name = "FISS" + std::to_string(i + 1);
-        if (i == 0) first = crack;
-        cracks.push_back(crack);
-    }
-    f.model = std::make_shared<Model>(xfemtest::model(mesh));
-    f.model->name = "MODELEK";
-    f.model->enrichment = std::make_shared<xfem::XfemModel>(*f.model, cracks, xfem::XfemContact::None, 1e-15);
-    f.space = std::make_unique<Discretisation>(f.model, fetest::material(f.model, 2.0e5, 0.3), ExtraUnknowns{});
-    f.constraints = buildDirichletConstraints(*f.space, {}, 0.0, 0);
-    f.K = buildSparsityPattern(*f.space, f.constraints, nullptr);
-    assembleSystemMatrix(*f.space, f.constraints, nullptr, std::vector<double>(f.space->numbering().size(), 0.0), f.K);
-    f.blocks = findBlocks(*f.space);
-    return f;
-}
-
-double maxAbs(std::span<const double> v) {
-    double m = 0.0;
-    for (double x : v) m = std::max(m, std::abs(x));
-    return m;
-}
+using xfemtest::freeModel, xfemtest::FreeModel, xfemtest::Interface, xfemtest::junction, xfemtest::maxAbs,
+    xfemtest::plane;
 
 // max |K v| / (max |K_ij| max |v|) over the vectors of `modes` (count of them).
 double worstResidual(const CsrMatrix& K, const std::vector<double>& modes, int count) {
@@ -105,18 +60,6 @@ std::vector<double> checkBlockModes(const FreeModel& f, int expectedBlocks) {
         }
     EXPECT_LT(gap, 1e-13);
     return modes;
-}
-
-LevelSet plane(double a, double b, double c, double d) {
-    return [=](double x, double y, double z) { return a * x + b * y + c * z + d; };
-}
-
-// ssnv511's interfaces (y = y0; x = x0 above and below, joined to the first), the junction at
-// (x0, y0).
-std::vector<Interface> junction(double x0, double y0, bool threeD) {
-    return {{plane(0, 1, 0, -y0)},
-            {plane(1, 0, 0, -x0), true, {x0, 5, threeD ? 0.5 : 0.0}},
-            {plane(1, 0, 0, -x0), true, {x0, -5, threeD ? 0.5 : 0.0}}};
 }
 
 }  // namespace

@@ -17,56 +17,18 @@
 #include "fe/SparsityPattern.hpp"
 #include "fe_test_support.hpp"
 #include "solver/LinearSolver.hpp"
+#include "xfem_free_model.hpp"
 #include "xfem_test_meshes.hpp"
 
 using namespace ma;
 
 namespace {
 
-using LevelSet = std::function<double(double, double, double)>;
+using xfemtest::FreeModel, xfemtest::maxAbs;
 
-struct FreeModel {
-    std::shared_ptr<Model> model;
-    std::unique_ptr<Discretisation> space;
-    DirichletConstraints constraints;
-    CsrMatrix K;
-};
-
-// ssnv511's interfaces: y = y0, and x = x0 above and below, joined (JONCTION) to the first at
-// (x0, y0).
+// ssnv511's interfaces joined at (x0, y0).
 FreeModel junctionModel(const std::shared_ptr<Mesh>& mesh, double x0, double y0) {
-    msg().setEcho(false);
-    const double z = mesh->dim == 3 ? 0.5 : 0.0;
-    const std::vector<std::pair<LevelSet, std::array<double, 3>>> interfaces = {
-        {[=](double, double y, double) { return y - y0; }, {}},
-        {[=](double x, double, double) { return x - x0; }, {x0, 5, z}},
-        {[=](double x, double, double) { return x - x0; }, {x0, -5, z}}};
-    std::vector<std::shared_ptr<const xfem::Crack>> cracks;
-    std::shared_ptr<xfem::Crack> first;
-    for (size_t i = 0; i < interfaces.size(); ++i) {
-        xfem::JunctionInput junction;
-        if (i > 0) junction.masters = {first}, junction.point = interfaces[i].second;
-        auto crack =
-            xfem::buildCrack(mesh, xfemtest::levelSet(*mesh, interfaces[i].first), i > 0 ? &junction : nullptr);
-        crack->name = "FISS" + std::to_string(i + 1);
-        if (i == 0) first = crack;
-        cracks.push_back(crack);
-    }
-    FreeModel f;
-    f.model = std::make_shared<Model>(xfemtest::model(mesh));
-    f.model->name = "MODELEK";
-    f.model->enrichment = std::make_shared<xfem::XfemModel>(*f.model, cracks, xfem::XfemContact::None, 1e-15);
-    f.space = std::make_unique<Discretisation>(f.model, fetest::material(f.model, 2.0e5, 0.3), ExtraUnknowns{});
-    f.constraints = buildDirichletConstraints(*f.space, {}, 0.0, 0);
-    f.K = buildSparsityPattern(*f.space, f.constraints, nullptr);
-    assembleSystemMatrix(*f.space, f.constraints, nullptr, std::vector<double>(f.space->numbering().size(), 0.0), f.K);
-    return f;
-}
-
-double maxAbs(std::span<const double> v) {
-    double m = 0.0;
-    for (double x : v) m = std::max(m, std::abs(x));
-    return m;
+    return xfemtest::freeModel(mesh, xfemtest::junction(x0, y0, mesh->dim == 3));
 }
 
 // max over the modes of |B v| / (max |B_ij| max |v|).
