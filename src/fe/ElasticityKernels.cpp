@@ -72,8 +72,9 @@ void localDofs(const Mesh& mesh, const DofNumbering& numbering, const ElementInt
 
 namespace {
 
-// visit(i, b) for each local dof i in order, b its displacement gradient at point p (b[3 c + j] =
-// du_c/dx_j of the dof's shape function, 3 x 3 whatever the dimension).
+// visit(i, c0, c1, b) for each local dof i in order, b its displacement gradient at point p (b[3 c +
+// j] = du_c/dx_j of the dof's shape function, 3 x 3); only rows c0 <= c < c1 are written, the others
+// are zero (a standard or Heaviside dof moves one component, a crack-tip dof all of them).
 template <class Visit>
 void forEachDofGradient(const ElementIntegration& ei, const PointGeometry& geo, size_t p, int dim, Visit&& visit) {
     const int n = ei.nodeCount;
@@ -84,9 +85,8 @@ void forEachDofGradient(const ElementIntegration& ei, const PointGeometry& geo, 
         for (int k = 0; k < ei.slots[size_t(a)]; ++k) {
             const double pa = ei.multiplier(int(p), a, k);
             for (int c = 0; c < dim; ++c) {
-                std::fill(b, b + 9, 0.0);
                 for (int j = 0; j < dim; ++j) b[c * 3 + j] = pa * ga[j];
-                visit(i++, b);
+                visit(i++, c, c + 1, b);
             }
         }
         if (!ei.tipAt(a)) continue;
@@ -94,10 +94,9 @@ void forEachDofGradient(const ElementIntegration& ei, const PointGeometry& geo, 
         const double* phi = ei.tipValue(p);
         const double* dphi = ei.tipGradient(p);
         for (int m = 0; m < dim; ++m) {  // mode m: u_c = N_a Phi[c][m]
-            std::fill(b, b + 9, 0.0);
             for (int c = 0; c < dim; ++c)
                 for (int j = 0; j < dim; ++j) b[c * 3 + j] = ga[j] * phi[c * 3 + m] + Na * dphi[(c * 3 + m) * 3 + j];
-            visit(i++, b);
+            visit(i++, 0, dim, b);
         }
     }
 }
@@ -105,9 +104,12 @@ void forEachDofGradient(const ElementIntegration& ei, const PointGeometry& geo, 
 }  // namespace
 
 void dofGradients(const ElementIntegration& ei, const PointGeometry& geo, size_t p, int dim, std::vector<double>& B) {
-    forEachDofGradient(ei, geo, p, dim, [&](size_t i, const double* b) {
+    forEachDofGradient(ei, geo, p, dim, [&](size_t i, int c0, int c1, const double* b) {
         if (B.size() < (i + 1) * 9) B.resize((i + 1) * 9);
-        std::copy(b, b + 9, &B[i * 9]);
+        double* out = &B[i * 9];
+        std::fill(out, out + 9, 0.0);
+        for (int c = c0; c < c1; ++c)
+            for (int j = 0; j < dim; ++j) out[c * 3 + j] = b[c * 3 + j];
     });
 }
 
@@ -119,23 +121,10 @@ void displacementGradient(const ElementIntegration& ei, const PointGeometry& geo
     if (ei.hasTip()) {
         // dofGradients' B contracted with u without building it: its zero entries left out, the
         // others added in the same order (a sum from +0 is unchanged by a zero term: the same bits).
-        size_t i = 0;
-        for (int a = 0; a < n; ++a) {
-            const double* ga = &geo.gradN[(p * size_t(n) + size_t(a)) * 3];
-            for (int k = 0; k < ei.slots[size_t(a)]; ++k) {
-                const double pa = ei.multiplier(int(p), a, k);
-                for (int c = 0; c < dim; ++c, ++i)
-                    for (int j = 0; j < dim; ++j) G[c][j] += u[size_t(dofs[i])] * (pa * ga[j]);
-            }
-            if (!ei.tipAt(a)) continue;
-            const double Na = geo.N[p * size_t(n) + size_t(a)];
-            const double* phi = ei.tipValue(p);
-            const double* dphi = ei.tipGradient(p);
-            for (int m = 0; m < dim; ++m, ++i)
-                for (int c = 0; c < dim; ++c)
-                    for (int j = 0; j < dim; ++j)
-                        G[c][j] += u[size_t(dofs[i])] * (ga[j] * phi[c * 3 + m] + Na * dphi[(c * 3 + m) * 3 + j]);
-        }
+        forEachDofGradient(ei, geo, p, dim, [&](size_t i, int c0, int c1, const double* b) {
+            for (int c = c0; c < c1; ++c)
+                for (int j = 0; j < dim; ++j) G[c][j] += u[size_t(dofs[i])] * b[c * 3 + j];
+        });
         return;
     }
     int i = 0;
