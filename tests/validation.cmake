@@ -55,12 +55,11 @@ set(MINIASTER_ORIGINALS_INEXACT_VALE_CALC ssnv511e ssnv511f ssnv511g ssnv511h ss
 # DEPZON_4 DX-DX MAX, which the converged solution itself exceeds (0.0629 at N = 81, the refinement
 # study of docs/family.md). Its DEPZON_1 DX-DX MAX line is OK (0.044) and is not excused.
 set(_ssnv513e_allowed --allow-reference-nook "TEST_TABLE (ssnv513e.comm line 332) DEPZON_4 DX-DX MAX")
-# ssnp138a's POST_K1_K2_K3 K1 at 60 degrees (+3.01 % / +2.03 % against 3 % / 2 %): the file's grid
-# integrated without quadrature error gives that; the refined solution is +1.2 to +1.3 %, inside both
-# tolerances, and code_aster's +2.79 / +1.76 % come from its quadrature of the tip cells (reproduced
-# with its rule and split: docs/cracks.md, docs/study/ssnp138a_refinement.md). Every other check is OK.
-set(_ssnp138a_allowed --allow-reference-nook "TEST_TABLE (ssnp138a.comm line 313) PK1_4 K1"
-    --allow-reference-nook "TEST_TABLE (ssnp138a.comm line 346) PK2_4 K1")
+# ssnp138a's POST_K1_K2_K3 K1 at 60 degrees, tip 2 (+2.12 % against 2 %; tip 1 is OK against its 3 %):
+# the file's grid gives that to both tips (the discrete problem is symmetric under the half-turn); the
+# refined solution is +1.2 to +1.3 %, inside both tolerances, and code_aster's +2.79 / +1.76 % are an
+# asymmetric discretisation (docs/cracks.md, docs/study/ssnp138a_refinement.md). Every other check is OK.
+set(_ssnp138a_allowed --allow-reference-nook "TEST_TABLE (ssnp138a.comm line 346) PK2_4 K1")
 foreach(_name ${MINIASTER_ORIGINALS} ${MINIASTER_FAMILY} ${MINIASTER_BEYOND} ${MINIASTER_CRACKS})
   set(_opt "")
   if(_name IN_LIST MINIASTER_ORIGINALS_INEXACT_VALE_CALC)

@@ -65,11 +65,11 @@ FrontBasis orthonormalBasis(const Vec3& origin, const Vec3& gn, const Vec3& gt) 
 }
 
 // 2D (code_aster's xptfon / intfac then xbaslo): the basis of each front point from the nodal
-// gradients interpolated at the point, given to every node by its nearest front point. A node's own
-// averaged gradient would not do: LST = |s.(x - M)| - a of a SEGMENT crack has none on the
-// perpendicular bisector, which the front's point never lies on.
-std::vector<FrontBasis> frontBases2D(const Mesh& mesh, const Crack& crack, const std::vector<char>& nodes,
-                                     const std::vector<Vec3>& gn, const std::vector<Vec3>& gt) {
+// gradients interpolated at the point. A node's own averaged gradient would not do: LST =
+// |s.(x - M)| - a of a SEGMENT crack has none on the perpendicular bisector, which the front's
+// point never lies on.
+std::vector<FrontBasis> frontPointBases2D(const Mesh& mesh, const Crack& crack, const std::vector<Vec3>& gn,
+                                          const std::vector<Vec3>& gt) {
     std::vector<FrontBasis> tips;
     std::vector<double> component(gn.size());
     auto interpolate = [&](const std::vector<Vec3>& g, const PointInCell& at) {
@@ -90,25 +90,34 @@ std::vector<FrontBasis> frontBases2D(const Mesh& mesh, const Crack& crack, const
                                 ": the level sets have no gradient at a front point, so the local front basis "
                                 "(BASLOC) is undefined there");
         }
-    std::vector<FrontBasis> out(size_t(mesh.nodeCount()));
-    for (int n = 0; n < mesh.nodeCount(); ++n) {
-        if (!nodes[size_t(n)] || tips.empty()) continue;
-        const Vec3& x = mesh.coords[size_t(n)];
-        const FrontBasis* best = &tips[0];
-        for (const FrontBasis& t : tips)
-            if (distance(t.origin, x) < distance(best->origin, x)) best = &t;
-        out[size_t(n)] = *best;
-    }
-    return out;
+    return tips;
 }
 
 }  // namespace
 
+std::vector<FrontBasis> frontPointBases(const Mesh& mesh, const Crack& crack) {
+    return frontPointBases2D(mesh, crack, nodalLevelSetGradient(mesh, crack.lsn),
+                             nodalLevelSetGradient(mesh, crack.lst));
+}
+
+size_t nearestFrontPoint(const std::vector<FrontBasis>& points, const Vec3& x) {
+    size_t best = 0;
+    for (size_t t = 1; t < points.size(); ++t)
+        if (distance(points[t].origin, x) < distance(points[best].origin, x)) best = t;
+    return best;
+}
+
 std::vector<FrontBasis> frontBases(const Mesh& mesh, const Crack& crack, const std::vector<char>& nodes) {
+    std::vector<FrontBasis> out(size_t(mesh.nodeCount()));
+    if (mesh.maxCellDimension() == 2) {  // the basis of the nearest front point
+        const auto points = frontPointBases(mesh, crack);
+        for (int n = 0; n < mesh.nodeCount(); ++n)
+            if (nodes[size_t(n)] && !points.empty())
+                out[size_t(n)] = points[nearestFrontPoint(points, mesh.coords[size_t(n)])];
+        return out;
+    }
     const auto gn = nodalLevelSetGradient(mesh, crack.lsn);
     const auto gt = nodalLevelSetGradient(mesh, crack.lst);
-    if (mesh.maxCellDimension() == 2) return frontBases2D(mesh, crack, nodes, gn, gt);
-    std::vector<FrontBasis> out(size_t(mesh.nodeCount()));
     for (int n = 0; n < mesh.nodeCount(); ++n) {
         if (!nodes[size_t(n)]) continue;
         FrontBasis& b = out[size_t(n)];
@@ -188,8 +197,9 @@ void composePart(int dim, const double F[3][3], const double dF[3][3][2], const 
 }  // namespace
 
 void tipElementFields(const Mesh& mesh, int cell, int dim, const std::vector<FrontBasis>& basis,
-                      const std::vector<unsigned char>& status, const std::vector<char>& tipNodes,
-                      const std::vector<signed char>& side, ElementIntegration& ei, const TipLaw* law) {
+                      const FrontBasis* frame, const std::vector<unsigned char>& status,
+                      const std::vector<char>& tipNodes, const std::vector<signed char>& side, ElementIntegration& ei,
+                      const TipLaw* law) {
     const CellType type = mesh.cellTypes[size_t(cell)];
     const auto nodes = mesh.cellNodes(cell);
     const size_t n = nodes.size();
@@ -205,13 +215,14 @@ void tipElementFields(const Mesh& mesh, int cell, int dim, const std::vector<Fro
     std::array<double, 24> dN{};
     // The nodal fields depend on the point through its side of the crack only: [0] for theta < 0.
     std::vector<std::array<double, 9>> FnA[2], FnB[2];
+    auto basisOf = [&](size_t a) -> const FrontBasis& { return frame ? *frame : basis[size_t(nodes[a])]; };
     auto X = [&](int a) -> const Vec3& { return mesh.coords[size_t(nodes[size_t(a)])]; };
     auto nodalFields = [&](double sign) {
         const size_t at = sign < 0 ? 0 : 1;
         if (!FnA[at].empty()) return at;
         FnA[at].resize(n), FnB[at].resize(n);
         for (size_t b = 0; b < n; ++b) {  // nodal fields, in each node's own basis
-            const FrontBasis& fb = basis[size_t(nodes[b])];
+            const FrontBasis& fb = basisOf(b);
             LocalPoint nb = localPolar(X(int(b)), fb.origin, fb.e1, fb.e2);
             const int st = status[size_t(nodes[b])];
             if (st == 1 || st == 3) nb.theta = sign * std::abs(nb.theta);  // the point's side of the crack
@@ -237,7 +248,7 @@ void tipElementFields(const Mesh& mesh, int cell, int dim, const std::vector<Fro
                 dim, inv, [&](int j) { return dN[3 * a + size_t(j)]; }, &grad[3 * a]);
         Vec3 x{}, origin{}, e1{}, e2{};
         for (size_t a = 0; a < n; ++a) {
-            const FrontBasis& b = basis[size_t(nodes[a])];
+            const FrontBasis& b = basisOf(a);
             for (int j = 0; j < 3; ++j) {
                 x[size_t(j)] += N[a] * X(int(a))[size_t(j)];
                 origin[size_t(j)] += N[a] * b.origin[size_t(j)];

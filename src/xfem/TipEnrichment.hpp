@@ -34,6 +34,11 @@ struct FrontBasis {
 // the front polylines, e2 and e1 from the node's own GRLNNO, GRLTNO.
 std::vector<FrontBasis> frontBases(const Mesh& mesh, const Crack& crack, const std::vector<char>& nodes);
 
+// 2D: the basis of each front point, in the order of the crack's fronts; the index of the one
+// nearest to x (the first of equals), which gives a node its BASLOC.
+std::vector<FrontBasis> frontPointBases(const Mesh& mesh, const Crack& crack);
+size_t nearestFrontPoint(const std::vector<FrontBasis>& points, const Vec3& x);
+
 // The Williams fields split as F = (kappa A + B) / (2 mu): A[m][k], B[m][k] for mode m (0: I,
 // 1: II, 2: III) and local component k (along e1, e2, e3), and their derivatives along the local
 // axes x1, x2: dA[m][k][l] (code_aster's xdeffk and xderfk).
@@ -46,10 +51,12 @@ AsymptoticFields asymptoticFields(double r, double theta, int dim);
 // Fills ei.tip (from `tipNodes`, per local node), ei.tipA and ei.tipB at ei's points on `cell`;
 // with `law`, ei.tipPhi instead (applyTipLaw's values, without keeping A and B). `basis` and
 // `status` are indexed by mesh node; `side[p]` is the Heaviside value (+-1) of the crack at point
-// p's sub-cell.
+// p's sub-cell. With `frame`, the element's fields are those of that one front point (the nodal
+// fields and the point's polar coordinates alike); without, of the nodal bases interpolated.
 void tipElementFields(const Mesh& mesh, int cell, int dim, const std::vector<FrontBasis>& basis,
-                      const std::vector<unsigned char>& status, const std::vector<char>& tipNodes,
-                      const std::vector<signed char>& side, ElementIntegration& ei, const TipLaw* law = nullptr);
+                      const FrontBasis* frame, const std::vector<unsigned char>& status,
+                      const std::vector<char>& tipNodes, const std::vector<signed char>& side, ElementIntegration& ei,
+                      const TipLaw* law = nullptr);
 
 // Gauss-Legendre points and weights on [0, 1] (n >= 1, Newton on the Legendre polynomial).
 void gaussLegendre01(int n, std::vector<double>& x, std::vector<double>& w);

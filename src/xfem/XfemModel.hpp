@@ -156,6 +156,10 @@ private:
     void tipSubcellRule3(const CellCut& cut, int s, std::vector<std::array<double, 3>>& points,
                          std::vector<double>& weights) const;
     void buildFrontLines(const Crack& crack);
+    void chooseTipFrames(const Crack& crack);
+    bool edgesAgree(size_t i, const std::vector<int>& front) const;
+    // 2D: the one front point whose basis the cell's tip fields use, or null (the nodal bases).
+    const FrontBasis* tipFrame(int cell) const;
     void buildCells(const Model& model);
     void buildNodes();
     void supportDomains(int node, const std::vector<int>& active, std::vector<std::vector<signed char>>& keys,
@@ -183,6 +187,8 @@ private:
     std::vector<FrontBasis> bases_;                               // per mesh node (tip nodes)
     std::vector<std::optional<std::array<double, 3>>> tipPoint_;  // per cuts_ entry: front point (reference)
     std::vector<Vec3> frontPoints_;                               // 2D front points (physical)
+    std::vector<FrontBasis> pointBases_;                          // 2D: per front point
+    std::vector<int> tipFrame_;  // 2D, per cuts_ entry: index in pointBases_, or -1 (the nodal bases)
     // 3D, per cuts_ entry: the line of the front segment nearest the cell, in its reference
     // coordinates: its first point, its unit direction and (first component) its length.
     std::vector<std::optional<std::array<Vec3, 3>>> frontLine_;
