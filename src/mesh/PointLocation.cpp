@@ -47,13 +47,9 @@ PointInCell locatePoint(const Mesh& mesh, const Vec3& x) {
         nodes.clear();
         for (int n : mesh.cellNodes(c)) nodes.push_back(mesh.coords[size_t(n)]);
         if (!inBox(nodes, x, dim)) continue;
-        // Relative to the cell's first node: Newton's residual is then round-off of the cell's
-        // size, not of the coordinates' (a small cell far from the origin never met its test).
-        const Vec3 origin = nodes[0];
-        for (auto& p : nodes) p = difference(p, origin);
-        const Vec3 target = difference({x[0], x[1], mesh.dim == 3 ? x[2] : 0.0}, origin);
         std::array<double, 3> xi{};
-        if (mapToReference(type, nodes, target, xi) && insideReference(type, xi, dim)) return {c, xi};
+        if (mapToReference(type, nodes, {x[0], x[1], mesh.dim == 3 ? x[2] : 0.0}, xi) && insideReference(type, xi, dim))
+            return {c, xi};
     }
     return {};
 }
@@ -94,6 +90,8 @@ PointInCell locateNearPoint(const Mesh& mesh, const Vec3& x, double maxDistance)
             near = near && x[j] >= lo - maxDistance && x[j] <= hi + maxDistance;
         }
         if (!near) continue;
+        // Relative to the cell's first node, as mapToReference works: the distance below is then
+        // round-off of the cell's size, not of the coordinates'.
         const Vec3 origin = nodes[0];
         for (auto& p : nodes) p = difference(p, origin);
         const Vec3 target = difference({x[0], x[1], mesh.dim == 3 ? x[2] : 0.0}, origin);

@@ -127,21 +127,29 @@ bool mapToReference(CellType type, std::span<const std::array<double, 3>> nodes,
     const int d = referenceDimension(type);
     if (d < 2) unsupported(type);
     const int n = nodeCount(type);
-    // Characteristic size for the stopping test.
+    // Coordinates from the first node: the stopping test is relative to the cell's size, which the
+    // round-off of coordinates far from the origin (a cell of 1e-2 at 0.25) would not let it reach.
+    std::array<std::array<double, 3>, 27> local{};
     double size = 0.0;
-    for (int a = 1; a < n; ++a)
-        for (int j = 0; j < 3; ++j) size = std::max(size, std::abs(nodes[a][j] - nodes[0][j]));
+    for (int a = 0; a < n; ++a)
+        for (int j = 0; j < 3; ++j) {
+            local[size_t(a)][size_t(j)] = nodes[size_t(a)][size_t(j)] - nodes[0][size_t(j)];
+            size = std::max(size, std::abs(local[size_t(a)][size_t(j)]));
+        }
+    const std::span<const std::array<double, 3>> corners(local.data(), size_t(n));
+    const std::array<double, 3> target{x[0] - nodes[0][0], x[1] - nodes[0][1], x[2] - nodes[0][2]};
     xi = {0, 0, 0};
     if (type == CellType::TRIA3) xi = {1.0 / 3, 1.0 / 3, 0};
     if (type == CellType::TETRA4) xi = {0.25, 0.25, 0.25};
     std::array<double, 24> dN{};
     for (int it = 0; it < 50; ++it) {
-        const auto cur = mapToPhysical(type, nodes, xi);
+        const auto cur = mapToPhysical(type, corners, xi);
         shapeDerivatives(type, xi, dN);
         double J[3][3] = {}, inv[3][3] = {};
         jacobian(
-            d, d, n, [&](int a) -> const Vec3& { return nodes[a]; }, [&](int a, int j) { return dN[3 * a + j]; }, J);
-        const Vec3 r{x[0] - cur[0], x[1] - cur[1], d == 3 ? x[2] - cur[2] : 0.0};
+            d, d, n, [&](int a) -> const Vec3& { return corners[size_t(a)]; },
+            [&](int a, int j) { return dN[3 * a + j]; }, J);
+        const Vec3 r{target[0] - cur[0], target[1] - cur[1], d == 3 ? target[2] - cur[2] : 0.0};
         if (norm(r) <= 1e-15 * size) return true;
         if (invertJacobian(d, J, inv) == 0.0) return false;
         Vec3 step{};  // J^-1 r

@@ -300,15 +300,11 @@ int XfemModel::boundaryTipFields(int cell, const std::vector<std::array<double, 
     ElementIntegration vol;
     vol.cell = volume;
     std::vector<signed char> side;
-    // Coordinates from the cell's first node: mapToReference's stopping test is relative to the
-    // cell's size, which round-off on coordinates far from the origin does not reach.
-    const Vec3 origin = mesh_->coords[size_t(vn[0])];
     std::vector<Vec3> corners;
-    for (int n : vn) corners.push_back(difference(mesh_->coords[size_t(n)], origin));
+    for (int n : vn) corners.push_back(mesh_->coords[size_t(n)]);
     for (const auto& x : xyz) {
         std::array<double, 3> ref{};
-        if (!mapToReference(mesh_->cellTypes[size_t(volume)], corners, difference(Vec3{x[0], x[1], x[2]}, origin), ref))
-            return -1;
+        if (!mapToReference(mesh_->cellTypes[size_t(volume)], corners, x, ref)) return -1;
         std::array<double, 8> N{};
         shapeValues(mesh_->cellTypes[size_t(volume)], ref, std::span<double>(N.data(), vn.size()));
         double lsn = 0.0;

@@ -214,3 +214,22 @@ TEST(FeShapeFunctions, InverseMapOfADistortedQuadAndHexa) {
     ASSERT_TRUE(mapToReference(CellType::HEXA8, hexa, x, back));
     for (int j = 0; j < 3; ++j) EXPECT_NEAR(back[j], eta[j], 1e-13);
 }
+
+// A small cell far from the origin: the round-off of its coordinates (5.6e-17 at 0.25) is above the
+// stopping test's 1e-15 of the cell's size unless the map works from the cell's own first node
+// (a 2D crack's tip cell was not found: CALC_G's internal error).
+TEST(FeShapeFunctions, InverseMapOfASmallCellFarFromTheOrigin) {
+    // The tip cell of the Griffith study at N = 160 (its front point at (-0.245375, 0.003625)), then
+    // the same cell and point moved further out.
+    for (const double shift : {0.0, 17.0, -1.0e3}) {
+        std::vector<std::array<double, 3>> quad{{shift - 0.25, 0, 0},
+                                                {shift - 0.2375, 0, 0},
+                                                {shift - 0.2375, 0.025, 0},
+                                                {shift - 0.25, 0.025, 0}};
+        const std::array<double, 3> x{shift - 0.245375, 0.003625, 0};
+        std::array<double, 3> back{};
+        ASSERT_TRUE(mapToReference(CellType::QUAD4, quad, x, back)) << shift;
+        EXPECT_NEAR(back[0], 2 * 0.37 - 1, 1e-12 * std::max(1.0, std::abs(shift) / 0.0125)) << shift;
+        EXPECT_NEAR(back[1], 2 * 0.145 - 1, 1e-12) << shift;
+    }
+}
