@@ -220,8 +220,7 @@ def main(argv=None):
             rows.append(run(args.build, n, 0.0, (0.37, 0.29), work))
         for beta in (30, 45):  # inclined
             rows.append(run(args.build, sizes[-1], math.radians(beta), (0.37, 0.29), work))
-        # (0, 0) would put the crack's middle on a node, where LST has no gradient (refused by
-        # MODI_MODELE_XFEM: no BASLOC there)
+        # (0, 0) puts the crack's middle on a node: docs/cracks.md, "Closed forms"
         for offset in ((0.5, 0.5), (0.11, 0.83), (0.93, 0.07)):  # mesh independence
             rows.append(run(args.build, sizes[-2], 0.0, offset, work))
         for r in rows:
