@@ -109,8 +109,8 @@ bool XfemModel::edgesAgree(size_t i, const std::vector<int>& front) const {
 }
 
 const FrontBasis* XfemModel::tipFrame(int cell) const {
-    if (dim_ != 2 || tipFrame_.empty()) return nullptr;
-    const int f = tipFrame_[size_t(cellIndex_[size_t(cell)])];
+    const int i = dim_ == 2 && !tipFrame_.empty() ? cellIndex_[size_t(cell)] : -1;
+    const int f = i < 0 ? -1 : tipFrame_[size_t(i)];
     return f < 0 ? nullptr : &pointBases_[size_t(f)];
 }
 
