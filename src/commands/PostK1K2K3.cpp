@@ -55,7 +55,8 @@ double segmentLength(const KeywordSet& kw, const Mesh& mesh, const xfem::Crack& 
 }
 
 // The jump of the crack-tip terms at a lip point, as code_aster's pjxfem adds it to H1:
-// sum_a N_a (Phi(+) - Phi(-)) K_a over the tip nodes of the point's cell, Phi on either side.
+// sum_a N_a (Phi_a(+) - Phi_a(-)) K_a over the tip nodes a of the point's cell, each node's Phi (its
+// own tip's, 2D) on either side.
 fracture::TipJump tipJumpOf(const Result& result, const xfem::Crack& crack, const NodalField& depl) {
     const auto* xm = dynamic_cast<const xfem::XfemModel*>(result.model->enrichment.get());
     const int kColumn[3] = {depl.componentIndex("K1"), depl.componentIndex("K2"), depl.componentIndex("K3")};
@@ -77,7 +78,8 @@ fracture::TipJump tipJumpOf(const Result& result, const xfem::Crack& crack, cons
             for (int m = 0; m < 3; ++m) {
                 if (kColumn[m] < 0 || !depl.has(nodes[a], kColumn[m])) continue;
                 const double K = depl.at(nodes[a], kColumn[m]);
-                for (int c = 0; c < 3; ++c) jump[size_t(c)] += N[a] * (upper.Phi[c * 3 + m] - lower.Phi[c * 3 + m]) * K;
+                for (int c = 0; c < 3; ++c)
+                    jump[size_t(c)] += N[a] * (upper.Phi[a][c * 3 + m] - lower.Phi[a][c * 3 + m]) * K;
             }
         return jump;
     };

@@ -91,8 +91,9 @@ void forEachDofGradient(const ElementIntegration& ei, const PointGeometry& geo, 
         }
         if (!ei.tipAt(a)) continue;
         const double Na = geo.N[p * size_t(n) + size_t(a)];
-        const double* phi = ei.tipValue(p);
-        const double* dphi = ei.tipGradient(p);
+        const int g = ei.tipGroupOf(a);
+        const double* phi = ei.tipValue(p, g);
+        const double* dphi = ei.tipGradient(p, g);
         for (int m = 0; m < dim; ++m) {  // mode m: u_c = N_a Phi[c][m]
             for (int c = 0; c < dim; ++c)
                 for (int j = 0; j < dim; ++j) b[c * 3 + j] = ga[j] * phi[c * 3 + m] + Na * dphi[(c * 3 + m) * 3 + j];

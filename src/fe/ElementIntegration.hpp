@@ -14,10 +14,12 @@
 //
 //   u(x) += N_a(x) * Phi(x) * K_a,   Phi[c][m] = component c of the asymptotic field of mode m
 //
-// the same dim x dim matrix for every tip node of the element (code_aster's xcalfev: the Williams
-// fields in the local front basis minus their interpolation at the element's nodes). Phi depends
-// on the material through kappa and mu only, linearly: Phi = (kappa * A + B) / (2 mu); the
-// enrichment gives A and B with their gradients, applyTipLaw the material's Phi.
+// a dim x dim matrix per group of tip nodes (the Williams fields in a local front basis minus their
+// interpolation at the element's nodes, code_aster's xcalfev): 3D, one group (the nodal bases
+// interpolated); 2D, one per front point of the element's tip nodes (each tip node's own tip: two
+// where both tips of a short crack reach the element). Phi depends on the material through kappa
+// and mu only, linearly: Phi = (kappa * A + B) / (2 mu); the enrichment gives A and B with their
+// gradients, applyTipLaw the material's Phi.
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -46,7 +48,10 @@ struct ElementIntegration {
 
     // Per local node: 1 when it carries the tip slot in this element; empty when none does.
     std::vector<char> tip;
-    // Per point, kTipStride values: the 3x3 matrix [c][m] (9) then its gradient [c][m][j] (27).
+    // Per local node: the group whose Phi its tip slot takes (0 for other nodes); the groups' count.
+    std::vector<unsigned char> tipGroup;
+    int tipGroups = 1;
+    // Per point and group, kTipStride values: the 3x3 matrix [c][m] (9) then its gradient [c][m][j] (27).
     static constexpr int kTipStride = 36;
     std::vector<double> tipA, tipB;  // from the enrichment (material-free parts)
     std::vector<double> tipPhi;      // (kappa * A + B) / (2 mu), set by applyTipLaw
@@ -57,15 +62,18 @@ struct ElementIntegration {
         cell = other.cell, nodeCount = other.nodeCount;
         refPoints = other.refPoints, refWeights = other.refWeights, pointSubcell = other.pointSubcell;
         slots = other.slots, maxSlots = other.maxSlots, psi = other.psi;
-        tip = other.tip;
+        tip = other.tip, tipGroup = other.tipGroup, tipGroups = other.tipGroups;
         tipA.clear(), tipB.clear();  // tipPhi is overwritten whole (its capacity kept)
     }
 
     bool hasTip() const { return !tip.empty(); }
     bool tipAt(int a) const { return !tip.empty() && tip[std::size_t(a)] != 0; }
-    // Phi[c][m] and dPhi[c][m][j] at point p (applyTipLaw must have run).
-    const double* tipValue(std::size_t p) const { return &tipPhi[p * kTipStride]; }
-    const double* tipGradient(std::size_t p) const { return &tipPhi[p * kTipStride + 9]; }
+    int tipGroupOf(int a) const { return tipGroup.empty() ? 0 : tipGroup[std::size_t(a)]; }
+    // Phi[c][m] and dPhi[c][m][j] of group g at point p (applyTipLaw must have run).
+    const double* tipValue(std::size_t p, int g = 0) const {
+        return &tipPhi[(p * std::size_t(tipGroups) + std::size_t(g)) * kTipStride];
+    }
+    const double* tipGradient(std::size_t p, int g = 0) const { return tipValue(p, g) + 9; }
 
     double multiplier(int p, int a, int k) const {
         if (psi.empty()) return k == 0 ? 1.0 : 0.0;

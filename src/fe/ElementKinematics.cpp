@@ -26,6 +26,8 @@ void classicalIntegration(const Mesh& mesh, int cell, bool boundary, ElementInte
     out.psi.clear();
     // A reused ElementIntegration (the load loops) must not keep the previous cell's tip terms.
     out.tip.clear();
+    out.tipGroup.clear();
+    out.tipGroups = 1;
     out.tipA.clear();
     out.tipB.clear();
     out.tipPhi.clear();

@@ -126,7 +126,7 @@ private:
                 for (int c = 0; c < dim; ++c, ++i) f_[size_t(dofs_[size_t(i)])] += w * pa * N[a] * t[size_t(c)];
             }
             if (!ei.tipAt(a)) continue;
-            const double* Phi = ei.tipValue(size_t(p));
+            const double* Phi = ei.tipValue(size_t(p), ei.tipGroupOf(a));
             for (int m = 0; m < dim; ++m, ++i) {
                 double work = 0.0;
                 for (int c = 0; c < dim; ++c) work += Phi[c * 3 + m] * t[size_t(c)];

@@ -96,7 +96,7 @@ void appendDisplacementSamples(const Model& model, const NodalField& depl, const
                     for (int a = 0; a < n; ++a) {
                         for (int k = 0; k < ei.slots[a]; ++k)
                             add(s, nodes[a], k, geo.N[p * n + a] * ei.multiplier(int(p), a, k));
-                        if (ei.tipAt(a)) addTip(s, ei.tipValue(p), nodes[a], geo.N[p * n + a]);
+                        if (ei.tipAt(a)) addTip(s, ei.tipValue(p, ei.tipGroupOf(a)), nodes[a], geo.N[p * n + a]);
                     }
                     out.push_back(s);
                 }

@@ -55,7 +55,7 @@ Vec3 lipDisplacement(const ElementIntegration& ei, size_t p, const std::vector<d
             for (int c = 0; c < dim; ++c, ++i) out[size_t(c)] += m * Na * u[size_t(dofs[i])];
         }
         if (!ei.tipAt(a)) continue;
-        const double* Phi = ei.tipValue(p);
+        const double* Phi = ei.tipValue(p, ei.tipGroupOf(a));
         for (int m = 0; m < dim; ++m, ++i)
             for (int c = 0; c < dim; ++c) out[size_t(c)] += Na * Phi[c * 3 + m] * u[size_t(dofs[i])];
     }

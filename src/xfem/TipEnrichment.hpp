@@ -7,8 +7,9 @@
 //
 // (the fields minus their interpolation at the element's nodes, so that the enrichment vanishes at
 // every node). F = sqrt(r / 2 pi) (kappa a(theta) + b(theta)) / (2 mu); r, theta are the polar
-// coordinates of x in the plane (e1, e2) of the interpolated nodal front bases (BASLOC), theta
-// taking the sign of the point's side of the crack (the sub-cell's Heaviside value). docs/cracks.md.
+// coordinates of x in the plane (e1, e2) of node a's front point (2D) or of the interpolated nodal
+// front bases (BASLOC, 3D), theta taking the sign of the point's side of the crack (the sub-cell's
+// Heaviside value). docs/cracks.md.
 #include <array>
 #include <functional>
 #include <optional>
@@ -48,15 +49,25 @@ struct AsymptoticFields {
 };
 AsymptoticFields asymptoticFields(double r, double theta, int dim);
 
-// Fills ei.tip (from `tipNodes`, per local node), ei.tipA and ei.tipB at ei's points on `cell`;
-// with `law`, ei.tipPhi instead (applyTipLaw's values, without keeping A and B). `basis` and
-// `status` are indexed by mesh node; `side[p]` is the Heaviside value (+-1) of the crack at point
-// p's sub-cell. With `frame`, the element's fields are those of that one front point (the nodal
-// fields and the point's polar coordinates alike); without, of the nodal bases interpolated.
-void tipElementFields(const Mesh& mesh, int cell, int dim, const std::vector<FrontBasis>& basis,
-                      const FrontBasis* frame, const std::vector<unsigned char>& status,
-                      const std::vector<char>& tipNodes, const std::vector<signed char>& side, ElementIntegration& ei,
-                      const TipLaw* law = nullptr);
+// Where the tip fields' bases come from. 3D: `nodal`, every node's BASLOC (indexed by mesh node),
+// interpolated at the point: one group per element. 2D: `points`, the basis of each front point,
+// and `front`, each mesh node's nearest front point (its BASLOC): a tip node's enrichment is its
+// own front point's field in every element of its support, that basis taken for the point's polar
+// coordinates and for every node's shifted value alike; an element has one group per distinct
+// front point of its tip nodes (two where both tips of a short crack reach it).
+struct TipBases {
+    const std::vector<FrontBasis>* nodal = nullptr;
+    const std::vector<FrontBasis>* points = nullptr;
+    const std::vector<int>* front = nullptr;
+};
+
+// Fills ei.tip (from `tipNodes`, per local node), ei.tipGroup, ei.tipGroups, ei.tipA and ei.tipB at
+// ei's points on `cell`; with `law`, ei.tipPhi instead (applyTipLaw's values, without keeping A and
+// B). `status` is indexed by mesh node; `side[p]` is the Heaviside value (+-1) of the crack at point
+// p's sub-cell.
+void tipElementFields(const Mesh& mesh, int cell, int dim, const TipBases& bases,
+                      const std::vector<unsigned char>& status, const std::vector<char>& tipNodes,
+                      const std::vector<signed char>& side, ElementIntegration& ei, const TipLaw* law = nullptr);
 
 // Gauss-Legendre points and weights on [0, 1] (n >= 1, Newton on the Legendre polynomial).
 void gaussLegendre01(int n, std::vector<double>& x, std::vector<double>& w);

@@ -297,7 +297,7 @@ std::shared_ptr<NodalField> visualisationDisplacement(const XfemModel* xm, const
             for (int m = 0; m < dim; ++m) {
                 const int col = tipColumn[size_t(m)];
                 const double K = col >= 0 && depl->has(cn[a], col) ? depl->at(cn[a], col) : 0.0;
-                for (int j = 0; j < dim; ++j) u[size_t(j)] += Na[a] * at.Phi[j * 3 + m] * K;
+                for (int j = 0; j < dim; ++j) u[size_t(j)] += Na[a] * at.Phi[a][j * 3 + m] * K;
             }
         }
     };

@@ -116,14 +116,15 @@ public:
     // The crack with a front in the mesh (crack-tip enrichment), or -1; its tip-enriched nodes.
     int tipCrack() const { return tipCrack_; }
     int tipNodeCount() const { return static_cast<int>(std::count(tipNodes_.begin(), tipNodes_.end(), 1)); }
-    // The crack-tip matrix Phi[c * 3 + m] at reference point `ref` of sub-cell `subcell` of an X-FEM
-    // cell, for Hooke coefficients (lambdaEff, mu); a skin cell's point is evaluated in the volume
-    // element it bounds (2D). `cell`, `ref`: where Phi was evaluated (its tip nodes multiply it).
-    // False when no node there carries the tip unknowns (POST_CHAM_XFEM's displacement at new nodes).
+    // The crack-tip matrices Phi[a][c * 3 + m] of the tip nodes a (local) at reference point `ref` of
+    // sub-cell `subcell` of an X-FEM cell, for Hooke coefficients (lambdaEff, mu); a skin cell's point
+    // is evaluated in the volume element it bounds (2D). `cell`, `ref`: where Phi was evaluated (its
+    // node a multiplies Phi[a]; zero for other nodes). False when no node there carries the tip
+    // unknowns (POST_CHAM_XFEM's displacement at new nodes).
     struct TipPoint {
         int cell = -1;
         std::array<double, 3> ref{};
-        double Phi[9] = {};
+        double Phi[8][9] = {};
     };
     bool tipMatrix(int cell, int subcell, const std::array<double, 3>& ref, double lambdaEff, double mu,
                    TipPoint& out) const;
@@ -156,10 +157,8 @@ private:
     void tipSubcellRule3(const CellCut& cut, int s, std::vector<std::array<double, 3>>& points,
                          std::vector<double>& weights) const;
     void buildFrontLines(const Crack& crack);
-    void chooseTipFrames(const Crack& crack);
-    bool edgesAgree(size_t i, const std::vector<int>& front) const;
-    // 2D: the one front point whose basis the cell's tip fields use, or null (the nodal bases).
-    const FrontBasis* tipFrame(int cell) const;
+    // Where tipElementFields takes the bases (nodal in 3D, front points in 2D).
+    TipBases tipBases() const;
     void buildCells(const Model& model);
     void buildNodes();
     void supportDomains(int node, const std::vector<int>& active, std::vector<std::vector<signed char>>& keys,
@@ -184,11 +183,11 @@ private:
     int droppedSlots_ = 0;
     int tipCrack_ = -1;
     std::vector<char> tipNodes_;                                  // per mesh node
-    std::vector<FrontBasis> bases_;                               // per mesh node (tip nodes)
+    std::vector<FrontBasis> bases_;                               // 3D, per mesh node (tip elements' nodes)
     std::vector<std::optional<std::array<double, 3>>> tipPoint_;  // per cuts_ entry: front point (reference)
     std::vector<Vec3> frontPoints_;                               // 2D front points (physical)
     std::vector<FrontBasis> pointBases_;                          // 2D: per front point
-    std::vector<int> tipFrame_;  // 2D, per cuts_ entry: index in pointBases_, or -1 (the nodal bases)
+    std::vector<int> nodeFront_;                                  // 2D, per mesh node: its front point
     // 3D, per cuts_ entry: the line of the front segment nearest the cell, in its reference
     // coordinates: its first point, its unit direction and (first component) its length.
     std::vector<std::optional<std::array<Vec3, 3>>> frontLine_;

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <set>
 #include <span>
 
 #include "core/Error.hpp"
@@ -44,10 +43,16 @@ void XfemModel::buildTip() {
         if (std::any_of(cn.begin(), cn.end(), [&](int n) { return tipNodes_[size_t(n)] != 0; }))
             for (int n : cn) basisNodes[size_t(n)] = 1;
     }
-    bases_ = frontBases(mesh, crack, basisNodes);
     tipPoint_.assign(cuts_.size(), std::nullopt);
-    if (dim_ == 3) return buildFrontLines(crack);
-    chooseTipFrames(crack);
+    if (dim_ == 3) {
+        bases_ = frontBases(mesh, crack, basisNodes);
+        return buildFrontLines(crack);
+    }
+    pointBases_ = frontPointBases(mesh, crack);
+    if (pointBases_.empty()) throw InternalError("crack " + crack.name + ": tip-enriched nodes but no front point");
+    nodeFront_.assign(size_t(mesh.nodeCount()), 0);
+    for (int n = 0; n < mesh.nodeCount(); ++n)
+        if (basisNodes[size_t(n)]) nodeFront_[size_t(n)] = int(nearestFrontPoint(pointBases_, mesh.coords[size_t(n)]));
     for (const auto& f : crack.fronts) frontPoints_.push_back(f.points[0]);
     for (size_t i = 0; i < cuts_.size(); ++i) {
         if (cuts_[i].skin) continue;
@@ -56,62 +61,9 @@ void XfemModel::buildTip() {
     }
 }
 
-// 2D: an element whose nodes lie nearer to different front points (the middle of a crack) takes
-// the front point of its tip nodes for its whole tip fields, not the nodal bases interpolated
-// (code_aster's coor_cyl there puts the origin between the tips and shrinks e1 to a difference of
-// opposite vectors: fields of no tip, and a discrete problem without the crack's symmetries). A tip
-// node's enrichment must stay one continuous function over its cells: where the two tips' nodes meet
-// (a crack shorter than about twice the enrichment radius) the element keeps the interpolation, and
-// so does a neighbour whose edge with it carries a tip node unless that edge's nodes are of its
-// front point (the interpolation is that front point's basis there), until no edge disagrees.
-void XfemModel::chooseTipFrames(const Crack& crack) {
-    const Mesh& mesh = *mesh_;
-    pointBases_ = frontPointBases(mesh, crack);
-    tipFrame_.assign(cuts_.size(), -1);
-    std::vector<int> front(size_t(mesh.nodeCount()), -1);
-    for (int n = 0; n < mesh.nodeCount(); ++n)
-        front[size_t(n)] = int(nearestFrontPoint(pointBases_, mesh.coords[size_t(n)]));
-    for (size_t i = 0; i < cuts_.size(); ++i) {  // nodes of several front points, tip nodes of one
-        const auto cn = mesh.cellNodes(cuts_[i].cell);
-        const CellType type = mesh.cellTypes[size_t(cuts_[i].cell)];
-        if (cuts_[i].skin || (type != CellType::TRIA3 && type != CellType::QUAD4)) continue;
-        std::set<int> fronts, tipFronts;
-        for (int n : cn) {
-            fronts.insert(front[size_t(n)]);
-            if (tipNodes_[size_t(n)]) tipFronts.insert(front[size_t(n)]);
-        }
-        if (fronts.size() > 1 && tipFronts.size() == 1) tipFrame_[i] = *tipFronts.begin();
-    }
-    for (bool changed = true; changed;) {
-        changed = false;
-        for (size_t i = 0; i < cuts_.size(); ++i)
-            if (tipFrame_[i] >= 0 && !edgesAgree(i, front)) tipFrame_[i] = -1, changed = true;
-    }
-}
-
-// Whether every edge of cuts_[i] that carries a tip node borders a cell with the same fields on
-// it: a cell of the same front point, or one interpolating nodal bases that are all that point's.
-bool XfemModel::edgesAgree(size_t i, const std::vector<int>& front) const {
-    const auto cn = mesh_->cellNodes(cuts_[i].cell);
-    const int t = tipFrame_[i];
-    for (size_t e = 0; e < cn.size(); ++e) {
-        const int a = cn[e], b = cn[(e + 1) % cn.size()];
-        if (!tipNodes_[size_t(a)] && !tipNodes_[size_t(b)]) continue;
-        for (int c : cellsOfNode(a)) {
-            const auto other = mesh_->cellNodes(c);
-            if (c == cuts_[i].cell || std::find(other.begin(), other.end(), b) == other.end()) continue;
-            const int j = cellIndex_[size_t(c)];
-            if (j < 0 || cuts_[size_t(j)].skin || tipFrame_[size_t(j)] == t) continue;
-            if (front[size_t(a)] != t || front[size_t(b)] != t) return false;
-        }
-    }
-    return true;
-}
-
-const FrontBasis* XfemModel::tipFrame(int cell) const {
-    const int i = dim_ == 2 && !tipFrame_.empty() ? cellIndex_[size_t(cell)] : -1;
-    const int f = i < 0 ? -1 : tipFrame_[size_t(i)];
-    return f < 0 ? nullptr : &pointBases_[size_t(f)];
+TipBases XfemModel::tipBases() const {
+    if (dim_ == 3) return {&bases_, nullptr, nullptr};
+    return {nullptr, &pointBases_, &nodeFront_};
 }
 
 void XfemModel::buildFrontLines(const Crack& crack) {
@@ -273,11 +225,12 @@ bool XfemModel::tipMatrixOnSide(int cell, const std::array<double, 3>& ref, int 
     ElementIntegration one;
     one.cell = cell;
     one.refPoints = {ref};
-    tipElementFields(*mesh_, cell, dim_, bases_, tipFrame(cell), cracks_[size_t(tipCrack_)]->nodeStatus, tipNodes_,
+    tipElementFields(*mesh_, cell, dim_, tipBases(), cracks_[size_t(tipCrack_)]->nodeStatus, tipNodes_,
                      {static_cast<signed char>(side < 0 ? -1 : 1)}, one);
     if (std::count(one.tip.begin(), one.tip.end(), 1) == 0) return false;
     applyTipLaw(one, lambdaEff, mu);
-    std::copy(one.tipPhi.begin(), one.tipPhi.begin() + 9, out.Phi);
+    for (size_t a = 0; a < one.tip.size() && a < 8; ++a)
+        if (one.tip[a]) std::copy_n(one.tipValue(0, one.tipGroupOf(int(a))), 9, out.Phi[a]);
     return true;
 }
 
@@ -312,9 +265,15 @@ int XfemModel::boundaryTipFields(int cell, const std::vector<std::array<double, 
         vol.refPoints.push_back(ref);
         side.push_back(lsn < 0 ? -1 : 1);
     }
-    tipElementFields(*mesh_, volume, dim_, bases_, tipFrame(volume), crack.nodeStatus, tipNodes_, side, vol);
+    tipElementFields(*mesh_, volume, dim_, tipBases(), crack.nodeStatus, tipNodes_, side, vol);
     ei.tip.assign(faceNodes.size(), 0);
-    for (size_t a = 0; a < faceNodes.size(); ++a) ei.tip[a] = tipNodes_[size_t(faceNodes[a])];
+    ei.tipGroup.assign(faceNodes.size(), 0);
+    ei.tipGroups = vol.tipGroups;
+    for (size_t a = 0; a < faceNodes.size(); ++a) {
+        ei.tip[a] = tipNodes_[size_t(faceNodes[a])];
+        const auto at = std::find(vn.begin(), vn.end(), faceNodes[a]);  // a face node is a volume node
+        if (at != vn.end()) ei.tipGroup[a] = vol.tipGroup[size_t(at - vn.begin())];
+    }
     ei.tipA = std::move(vol.tipA);
     ei.tipB = std::move(vol.tipB);
     return volume;
@@ -334,8 +293,8 @@ void XfemModel::addTipFields(const CellCut& cut, ElementIntegration& out, const 
             const signed char h = cut.subcells[size_t(out.pointSubcell[p])].heaviside[size_t(at - cut.cracks.begin())];
             side[p] = h < 0 ? -1 : 1;
         }
-    tipElementFields(*mesh_, cut.cell, cut.dim, bases_, tipFrame(cut.cell), cracks_[size_t(tipCrack_)]->nodeStatus,
-                     tipNodes_, side, out, law);
+    tipElementFields(*mesh_, cut.cell, cut.dim, tipBases(), cracks_[size_t(tipCrack_)]->nodeStatus, tipNodes_, side,
+                     out, law);
 }
 
 }  // namespace ma::xfem

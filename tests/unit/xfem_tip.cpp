@@ -1,11 +1,15 @@
 // Crack-tip enrichment pieces (src/xfem/TipEnrichment): the Williams fields and their gradients,
-// the Gauss-Legendre and collapsed triangle rules that integrate the tip elements.
+// the Gauss-Legendre and collapsed triangle rules that integrate the tip elements, the fields of an
+// element's tip nodes (each its own tip's, 2D).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
 
+#include "mesh/ShapeFunctions.hpp"
+#include "scenes/Ssnv511Mesh.hpp"
 #include "xfem/TipEnrichment.hpp"
 
 namespace ma::xfem {
@@ -139,6 +143,98 @@ TEST(XfemTip, FannedRuleIsExactAlongTheRaysOfFacesParallelToTheLine) {
         return sum;
     };
     EXPECT_NEAR(integral(6), integral(12), 1e-14);
+}
+
+// A centre crack y = 0.1, |x| < 0.3, on a 4 x 4 grid of [-1, 1]^2 whose every node is a tip node:
+// the nodes with x <= 0 take tip 1's basis, the others tip 2's. A cell holding both has two groups;
+// each group's Phi is its tip's field minus its interpolation at all the cell's nodes, and a node's
+// enrichment is the same seen from either cell of a shared edge.
+TEST(XfemTip, EachTipNodeTakesItsOwnTipsFieldsInEveryCell) {
+    Ssnv511MeshOptions o;
+    o.divisions = 4;
+    o.xmin = o.ymin = -1, o.xmax = o.ymax = 1;
+    const auto mesh = buildSsnv511Mesh(o);
+    const std::vector<FrontBasis> points = {{{-0.3, 0.1, 0}, {-1, 0, 0}, {0, 1, 0}},
+                                            {{0.3, 0.1, 0}, {1, 0, 0}, {0, 1, 0}}};
+    std::vector<int> front(size_t(mesh->nodeCount()));
+    for (int n = 0; n < mesh->nodeCount(); ++n) front[size_t(n)] = mesh->coords[size_t(n)][0] <= 0 ? 0 : 1;
+    const std::vector<unsigned char> status(size_t(mesh->nodeCount()), 2);
+    const std::vector<char> tipNodes(size_t(mesh->nodeCount()), 1);
+    const TipBases bases{nullptr, &points, &front};
+    auto cellAt = [&](double x, double y) {  // the QUAD4 whose centre is (x, y)
+        for (int c = 0; c < mesh->cellCount(); ++c) {
+            if (mesh->cellTypes[size_t(c)] != CellType::QUAD4) continue;
+            Vec3 m{};
+            for (int n : mesh->cellNodes(c))
+                for (int j = 0; j < 3; ++j) m[size_t(j)] += 0.25 * mesh->coords[size_t(n)][size_t(j)];
+            if (distance(m, {x, y, 0}) < 1e-12) return c;
+        }
+        return -1;
+    };
+    // Phi of local node a (A part, [c][m]) at x in `cell`, and the cell's group count.
+    auto phiAt = [&](int cell, int node, const Vec3& x, int& groups) {
+        ElementIntegration ei;
+        ei.cell = cell;
+        ei.refPoints = {referenceCoordinates(*mesh, cell, x)};
+        tipElementFields(*mesh, cell, 2, bases, status, tipNodes, {1}, ei);
+        groups = ei.tipGroups;
+        const auto nodes = mesh->cellNodes(cell);
+        const size_t a = size_t(std::find(nodes.begin(), nodes.end(), node) - nodes.begin());
+        EXPECT_LT(a, nodes.size());
+        return std::vector<double>(ei.tipA.begin() + long(size_t(ei.tipGroupOf(int(a))) * 36),
+                                   ei.tipA.begin() + long(size_t(ei.tipGroupOf(int(a))) * 36 + 9));
+    };
+    const int left = cellAt(-0.25, 0.25), right = cellAt(0.25, 0.25), far = cellAt(-0.75, 0.25);
+    ASSERT_GE(left, 0);
+    ASSERT_GE(right, 0);
+    ASSERT_GE(far, 0);
+    int node0 = -1;  // (0, 0.5): tip 1's, shared by both cells
+    for (int n = 0; n < mesh->nodeCount(); ++n)
+        if (distance(mesh->coords[size_t(n)], {0, 0.5, 0}) < 1e-12) node0 = n;
+    ASSERT_GE(node0, 0);
+    const Vec3 onEdge{0.0, 0.3, 0.0};
+    int gl = 0, gr = 0, gf = 0;
+    const auto fromLeft = phiAt(left, node0, onEdge, gl), fromRight = phiAt(right, node0, onEdge, gr);
+    phiAt(far, mesh->cellNodes(far)[0], {-0.7, 0.3, 0}, gf);
+    EXPECT_EQ(gl, 1);  // nodes x <= 0 only
+    EXPECT_EQ(gr, 2);  // x = 0 and x = 0.5
+    EXPECT_EQ(gf, 1);
+    double largest = 0.0;
+    for (int i = 0; i < 9; ++i) {
+        EXPECT_NEAR(fromLeft[size_t(i)], fromRight[size_t(i)], 1e-14) << i;
+        largest = std::max(largest, std::abs(fromLeft[size_t(i)]));
+    }
+    EXPECT_GT(largest, 1e-3);  // not zero on the edge: the nodal shift does not cancel the field there
+
+    // Against the definition in the right cell: tip 2's node (0.5, 0.5) takes tip 2's field.
+    int node1 = -1;
+    for (int n = 0; n < mesh->nodeCount(); ++n)
+        if (distance(mesh->coords[size_t(n)], {0.5, 0.5, 0}) < 1e-12) node1 = n;
+    const Vec3 x{0.2, 0.35, 0.0};
+    const auto phi1 = phiAt(right, node1, x, gr), phi0 = phiAt(right, node0, x, gr);
+    const auto nodes = mesh->cellNodes(right);
+    std::vector<double> N(4);
+    shapeValues(CellType::QUAD4, referenceCoordinates(*mesh, right, x), N);
+    for (int t = 0; t < 2; ++t) {
+        const FrontBasis& b = points[size_t(t)];
+        auto local = [&](const Vec3& y) {  // the A part of the fields in t's basis, [m][k]
+            const Vec3 d = difference(y, b.origin);
+            const double x1 = dot(d, b.e1), x2 = dot(d, b.e2);
+            return asymptoticFields(std::hypot(x1, x2), std::atan2(x2, x1), 2);
+        };
+        const AsymptoticFields f = local(x);
+        for (int m = 0; m < 2; ++m)
+            for (int c = 0; c < 2; ++c) {
+                double expected = 0.0;
+                for (int k = 0; k < 2; ++k) {
+                    double shifted = f.A[m][k];
+                    for (size_t n = 0; n < 4; ++n)
+                        shifted -= N[n] * local(mesh->coords[size_t(nodes[n])]).A[m][size_t(k)];
+                    expected += (k == 0 ? b.e1 : b.e2)[size_t(c)] * shifted;
+                }
+                EXPECT_NEAR((t == 0 ? phi0 : phi1)[size_t(c * 3 + m)], expected, 1e-13) << t << " " << c << m;
+            }
+    }
 }
 }  // namespace
 }  // namespace ma::xfem
