@@ -96,7 +96,7 @@ void configureKrylov(KSP ksp, const SolverOptions& options) {
                "KSPSetTolerances");
 }
 
-void configurePreconditioner(PC pc, const SolverOptions& options) {
+void configurePreconditioner(PC pc, const SolverOptions& options, bool inPieces) {
     const std::string& p = options.preconditioner;
     if (p == "SANS") checkPetsc(PCSetType(pc, PCNONE), "PCSetType");
     else if (p == "JACOBI") checkPetsc(PCSetType(pc, PCJACOBI), "PCSetType");
@@ -112,19 +112,26 @@ void configurePreconditioner(PC pc, const SolverOptions& options) {
     } else {
         throw InternalError("SOLVEUR/PRE_COND='" + p + "' reached the PETSc setup");
     }
+    // In the piece basis GAMG's and ML's smoothers and residuals multiply by the assembled S T^T K T S
+    // instead of the shell (a product with K, twice as many non-zeros, and with T): the preconditioner
+    // stays a fixed symmetric positive definite operator; only the Krylov method needs the true one.
+    // OPTION_PETSC='-pc_use_amat true' asks for the shell.
+    if (inPieces && (p == "GAMG" || p == "ML")) checkPetsc(PCSetUseAmat(pc, PETSC_FALSE), "PCSetUseAmat");
 }
 
 namespace {
 
 // miniaster's defaults for PETSc's multigrid preconditioners, in the options database before
 // OPTION_PETSC (which overrides them). ML: code_aster's aggregation (Uncoupled, also PETSc's) and
-// Chebyshev over 4 SOR sweeps per level instead of Richardson over 2 (half the iterations, less time,
-// on the flat cells of ssnv511c's box). GAMG keeps PETSc's Chebyshev/Jacobi: SOR halves its iterations there but fails on
-// the zero pivots of coarse levels with more rigid modes than rows in an aggregate (N = 31).
-// docs/solver.md, "3D multigrid".
-const char* defaultOptionsOf(const std::string& preconditioner) {
+// Chebyshev over SOR sweeps per level instead of Richardson over 2: 4 steps on the flat cells of
+// ssnv511c's box (half the iterations, less time), 2 in the piece basis, where each step costs more
+// than the iterations it saves. GAMG keeps PETSc's Chebyshev/Jacobi: SOR halves its iterations there
+// but fails on the zero pivots of coarse levels with more rigid modes than rows in an aggregate
+// (N = 31). docs/solver.md, "3D multigrid" and "The finest smoother".
+const char* defaultOptionsOf(const std::string& preconditioner, bool inPieces) {
     if (preconditioner == "ML")
-        return "-pc_ml_CoarsenScheme Uncoupled -mg_levels_ksp_type chebyshev -mg_levels_ksp_max_it 4";
+        return inPieces ? "-pc_ml_CoarsenScheme Uncoupled -mg_levels_ksp_type chebyshev -mg_levels_ksp_max_it 2"
+                        : "-pc_ml_CoarsenScheme Uncoupled -mg_levels_ksp_type chebyshev -mg_levels_ksp_max_it 4";
     return "";
 }
 
@@ -147,8 +154,8 @@ int unusedGiven(const std::string& defaults, const std::string& given) {
 
 }  // namespace
 
-void setUpWithOptionPetsc(KSP ksp, const SolverOptions& options) {
-    const std::string defaults = defaultOptionsOf(options.preconditioner);
+void setUpWithOptionPetsc(KSP ksp, const SolverOptions& options, bool inPieces) {
+    const std::string defaults = defaultOptionsOf(options.preconditioner, inPieces);
     checkPetsc(PetscOptionsInsertString(nullptr, defaults.c_str()), "PetscOptionsInsertString (defaults)");
     checkPetsc(PetscOptionsInsertString(nullptr, options.petscOptions.c_str()),
                "PetscOptionsInsertString (SOLVEUR/OPTION_PETSC)");

@@ -26,12 +26,13 @@ SolverOptions factorOptions(const SolverOptions& options);
 // Method, tolerances (RESI_RELA on the unpreconditioned residual, NMAX_ITER), preconditioning side.
 void configureKrylov(KSP ksp, const SolverOptions& options);
 // PETSc's own preconditioners: SANS, JACOBI, SOR, LDLT_INC (ICC with NIVE_REMPLISSAGE levels),
-// GAMG, BOOMER (hypre's BoomerAMG), ML.
-void configurePreconditioner(PC pc, const SolverOptions& options);
-// OPTION_PETSC into the options database, read by the KSP, its PC and the PC's inner solvers while
-// they are built (KSPSetUp), then cleared (a later solve starts from the SOLVEUR keywords again); the
-// options the solver did not use are logged.
-void setUpWithOptionPetsc(KSP ksp, const SolverOptions& options);
+// GAMG, BOOMER (hypre's BoomerAMG), ML. `inPieces`: the Krylov operator is the piece basis's shell and
+// the preconditioner matrix its assembled copy (PetscSolver.cpp).
+void configurePreconditioner(PC pc, const SolverOptions& options, bool inPieces);
+// miniaster's defaults, then OPTION_PETSC, into the options database, read by the KSP, its PC and the
+// PC's inner solvers while they are built (KSPSetUp), then cleared (a later solve starts from the
+// SOLVEUR keywords again); the options the solver did not use are logged.
+void setUpWithOptionPetsc(KSP ksp, const SolverOptions& options, bool inPieces);
 // What to try when the method stalls (or converged by its own estimate only: `inaccurate`), for the
 // error message.
 std::string stallAdvice(const SolverOptions& options, bool inaccurate);

@@ -233,9 +233,9 @@ private:
             checkPetsc(PCShellSetName(pc, options_.preconditioner.c_str()), "PCShellSetName");
         } else {
             factors_.factors.reset();
-            configurePreconditioner(pc, options_);
+            configurePreconditioner(pc, options_, pmat_ != nullptr);
         }
-        setUpWithOptionPetsc(ksp_, options_);
+        setUpWithOptionPetsc(ksp_, options_, pmat_ != nullptr);
         stale_ = false;
         msg().infof("    {}: preconditioner built in {:.3f} s, resident peak {:.0f} MB (from {:.0f} MB){}{}", name(),
                     secondsSince(t0), phase.peakMb(), phase.startMb(),
@@ -265,8 +265,40 @@ private:
             if (l == levels - 1) finest = info.nz_used;
             rows += fmt::format("{}{}", rows.empty() ? "" : " / ", m);
         }
-        return fmt::format("; {} levels (rows {}), operator complexity {:.2f}", levels, rows,
-                           finest > 0.0 ? total / finest : 0.0);
+        return fmt::format("; {} levels (rows {}), operator complexity {:.2f}{}", levels, rows,
+                           finest > 0.0 ? total / finest : 0.0, finestSmootherOf(pc, levels));
+    }
+
+    // The finest level's smoother as PETSc runs it (miniaster's defaults and OPTION_PETSC applied):
+    // method, steps, preconditioner, and the matrix its products use.
+    static std::string finestSmootherOf(PC pc, PetscInt levels) {
+        KSP smoother = nullptr;
+        PC inner = nullptr;
+        Mat a = nullptr, p = nullptr;
+        KSPType method = nullptr;
+        PCType kind = nullptr;
+        PetscInt steps = 0;
+        MatType type = nullptr;
+        if (PCMGGetSmoother(pc, levels - 1, &smoother) != 0 || KSPGetType(smoother, &method) != 0 ||
+            KSPGetTolerances(smoother, nullptr, nullptr, nullptr, &steps) != 0 || KSPGetPC(smoother, &inner) != 0 ||
+            PCGetType(inner, &kind) != 0 || KSPGetOperators(smoother, &a, &p) != 0 || MatGetType(a, &type) != 0)
+            return {};
+        std::string sweeps;
+        PetscBool sor = PETSC_FALSE;
+        PetscObjectTypeCompare(reinterpret_cast<PetscObject>(inner), PCSOR, &sor);
+        PetscInt its = 0, local = 0;
+        MatSORType order = SOR_FORWARD_SWEEP;
+        if (sor && PCSORGetIterations(inner, &its, &local) == 0 && PCSORGetSymmetric(inner, &order) == 0)
+            sweeps = fmt::format(" ({}{} sweep(s))", its * local,
+                                 (order & SOR_SYMMETRIC_SWEEP) == SOR_SYMMETRIC_SWEEP ||
+                                         (order & SOR_LOCAL_SYMMETRIC_SWEEP) == SOR_LOCAL_SYMMETRIC_SWEEP
+                                     ? " symmetric"
+                                     : "");
+        return fmt::format("; finest smoother {} {} step(s) of {}{} on the {} matrix", method ? method : "?", steps,
+                           kind ? kind : "?", sweeps,
+                           a == p ? "assembled"
+                           : type ? type
+                                  : "?");
     }
 
     // X-FEM models with GAMG, ML or BOOMER on a positive definite system (one process): the piece
