@@ -20,6 +20,7 @@
 #include "core/Messages.hpp"
 #include "core/Mpi.hpp"
 #include "core/Timing.hpp"
+#include "solver/BlasThreads.hpp"
 #include "solver/KrylovSettings.hpp"
 #include "solver/LinearSolverImpl.hpp"
 
@@ -423,7 +424,11 @@ private:
         checkPetsc(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, PetscInt(n), y.data(), &vy), "VecCreateSeqWithArray");
         const int appliedBefore = factors_.applications;
         const double applyBefore = factors_.seconds, applyCpuBefore = factors_.cpuSeconds;
-        const PetscErrorCode code = KSPSolve(ksp_, vb, vy);
+        PetscErrorCode code = 0;
+        {
+            const OneBlasThread oneThread;
+            code = KSPSolve(ksp_, vb, vy);
+        }
         KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
         PetscInt iterations = 0;
         PetscReal estimate = 0.0;
