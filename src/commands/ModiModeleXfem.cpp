@@ -53,11 +53,18 @@ const RunOptionRegistration subcellQuadratureOption(RunOption{
 void logTipEnrichment(const xfem::XfemModel& xm) {
     if (xm.tipCrack() < 0) return;
     const xfem::Crack& crack = *xm.cracks()[size_t(xm.tipCrack())];
-    int tipElements = 0, heaviside = 0, both = 0;
+    int tipElements = 0, heaviside = 0, both = 0, twoTips = 0;
     for (int c : xm.xfemCells()) {
         bool tip = false;
-        for (int n : xm.mesh().cellNodes(c)) tip = tip || xm.tipNode(n);
+        int first = -1, second = -1;
+        for (int n : xm.mesh().cellNodes(c)) {
+            tip = tip || xm.tipNode(n);
+            const int f = xm.tipFrontOf(n);
+            if (f >= 0 && first < 0) first = f;
+            else if (f >= 0 && f != first) second = f;
+        }
         tipElements += tip && !xm.cut(c)->skin;
+        twoTips += second >= 0 && !xm.cut(c)->skin;
     }
     for (int n = 0; n < xm.mesh().nodeCount(); ++n) {
         heaviside += xm.activeSlots(n) > 0;
@@ -67,6 +74,11 @@ void logTipEnrichment(const xfem::XfemModel& xm) {
         "    crack-tip enrichment of {}: {} nodes carry K1..K{} ({} unknowns; {} of them also Heaviside, status 3), "
         "{} Heaviside-enriched nodes in all, {} crack-tip elements",
         crack.name, xm.tipNodeCount(), xm.dim(), xm.tipNodeCount() * xm.dim(), both, heaviside, tipElements);
+    if (xm.dim() == 2)
+        msg().infof(
+            "    crack-tip fields: each tip node carries those of its nearest front point, in every element of its "
+            "support; {} element(s) hold tip nodes of two front points (both fields at their points)",
+            twoTips);
     if (xm.subcellDegree() == 0 && xm.dim() == 2)
         msg().infof(
             "    crack-tip elements: each sub-triangle integrated by a collapsed {}x{} Gauss-Legendre rule, fanned "

@@ -116,6 +116,10 @@ public:
     // The crack with a front in the mesh (crack-tip enrichment), or -1; its tip-enriched nodes.
     int tipCrack() const { return tipCrack_; }
     int tipNodeCount() const { return static_cast<int>(std::count(tipNodes_.begin(), tipNodes_.end(), 1)); }
+    // 2D: the front point whose fields a tip node carries (its nearest); -1 in 3D or for other nodes.
+    int tipFrontOf(int node) const {
+        return dim_ == 2 && tipNode(node) && !nodeFront_.empty() ? nodeFront_[size_t(node)] : -1;
+    }
     // The crack-tip matrices Phi[a][c * 3 + m] of the tip nodes a (local) at reference point `ref` of
     // sub-cell `subcell` of an X-FEM cell, for Hooke coefficients (lambdaEff, mu); a skin cell's point
     // is evaluated in the volume element it bounds (2D). `cell`, `ref`: where Phi was evaluated (its
