@@ -179,11 +179,6 @@ std::shared_ptr<Table> emptyTable3D() {
     return t;
 }
 
-Vec3 unit(const Vec3& v) {
-    const double l = norm(v);
-    return {v[0] / l, v[1] / l, v[2] / l};
-}
-
 // Every point of front NUME_FOND (or NB_POINT_FOND points along it): the jump sampled back along
 // VDIR from the point, in code_aster's basis v1 = VNOR, v2 = VDIR, v3 = v1 x v2 (get_pgl).
 std::shared_ptr<Table> postK1K2K3AlongFront(const KeywordSet& kw, const std::shared_ptr<Result>& result,

@@ -16,5 +16,10 @@ inline Vec3 cross(const Vec3& a, const Vec3& b) {
 }
 inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 inline double distance(const Vec3& a, const Vec3& b) { return norm(difference(a, b)); }
+// v / |v|; the zero vector for a zero v.
+inline Vec3 unit(const Vec3& v) {
+    const double l = norm(v);
+    return l > 0 ? Vec3{v[0] / l, v[1] / l, v[2] / l} : Vec3{};
+}
 
 }  // namespace ma

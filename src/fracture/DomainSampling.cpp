@@ -83,11 +83,6 @@ namespace ma::fracture {
 
 namespace {
 
-Vec3 unit(const Vec3& v) {
-    const double l = norm(v);
-    return l > 0 ? Vec3{v[0] / l, v[1] / l, v[2] / l} : Vec3{};
-}
-
 // The gradient of the nodal bases (e1, e2 normalised, e3 = e1 x e2) at a point of gradients dN.
 void basisGradient(const std::vector<xfem::FrontBasis>& basloc, std::span<const int> nodes, std::span<const double> dN,
                    FrontFrame& f) {

@@ -13,11 +13,6 @@ namespace ma::xfem {
 
 namespace {
 
-Vec3 unit(const Vec3& v) {
-    const double n = norm(v);
-    return n > 0 ? Vec3{v[0] / n, v[1] / n, v[2] / n} : Vec3{0, 0, 0};
-}
-
 struct LocalPoint {
     double r = 0, theta = 0;
 };

@@ -16,11 +16,6 @@ namespace ma::xfem {
 
 namespace {
 
-Vec3 unit(const Vec3& v) {
-    const double n = norm(v);
-    return n > 0 ? Vec3{v[0] / n, v[1] / n, v[2] / n} : Vec3{0, 0, 0};
-}
-
 // Nearest point of the segment [a, b] to x.
 Vec3 nearestOnSegment(const Vec3& a, const Vec3& b, const Vec3& x) {
     const Vec3 ab = difference(b, a);
