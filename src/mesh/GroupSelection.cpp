@@ -10,7 +10,7 @@
 namespace ma {
 
 namespace {
-Vec3 unit(Vec3 v, const char* what) {
+Vec3 nonZeroUnit(Vec3 v, const char* what) {
     const double n = norm(v);
     if (!(n > 0)) throw UserError(std::string(what) + ": the normal vector is zero");
     for (auto& x : v) x /= n;
@@ -50,7 +50,7 @@ std::vector<int> nodesOfCells(const Mesh& mesh, const std::vector<int>& cells, N
 
 std::vector<int> nodesOnPlane(const Mesh& mesh, Vec3 point, Vec3 normal, double precision) {
     if (effectiveDimension(mesh) == 2) normal[2] = 0, point[2] = mesh.coords.empty() ? 0 : mesh.coords[0][2];
-    const Vec3 n = unit(normal, "OPTION='PLAN'");
+    const Vec3 n = nonZeroUnit(normal, "OPTION='PLAN'");
     auto near = nearPlane(mesh, point, n, precision);
     std::vector<int> out;
     for (int i = 0; i < mesh.nodeCount(); ++i)
@@ -61,7 +61,7 @@ std::vector<int> nodesOnPlane(const Mesh& mesh, Vec3 point, Vec3 normal, double 
 std::vector<int> cellsWithNormal(const Mesh& mesh, Vec3 direction, double anglePrecisionDeg, bool checkSign) {
     const int dim = effectiveDimension(mesh);
     if (dim == 2) direction[2] = 0;
-    const Vec3 v = unit(direction, "OPTION='FACE_NORMALE'");
+    const Vec3 v = nonZeroUnit(direction, "OPTION='FACE_NORMALE'");
     const double tol = anglePrecisionDeg * std::numbers::pi / 180.0;
     std::vector<int> out;
     for (int c = 0; c < mesh.cellCount(); ++c) {
@@ -78,7 +78,7 @@ std::vector<int> cellsWithNormal(const Mesh& mesh, Vec3 direction, double angleP
 
 std::vector<int> cellsInBand(const Mesh& mesh, Vec3 point, Vec3 normal, double dist, const std::string& criterion) {
     if (effectiveDimension(mesh) == 2) normal[2] = 0, point[2] = mesh.coords.empty() ? 0 : mesh.coords[0][2];
-    const Vec3 n = unit(normal, "OPTION='BANDE'");
+    const Vec3 n = nonZeroUnit(normal, "OPTION='BANDE'");
     auto near = nearPlane(mesh, point, n, dist);
     std::vector<int> out;
     for (int c = 0; c < mesh.cellCount(); ++c) {

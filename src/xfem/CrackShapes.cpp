@@ -58,7 +58,7 @@ double quadrantDistance(double e0, double e1, double y0, double y1) {
     return std::abs(y0 - e0);
 }
 
-Vec3 unit(const Vec3& v, const char* keyword) {
+Vec3 nonZeroUnit(const Vec3& v, const char* keyword) {
     const double n = norm(v);
     if (!(n > 0.0)) throw UserError(fmt::format("DEFI_FISS/{}: the vector is null", keyword));
     return {v[0] / n, v[1] / n, v[2] / n};
@@ -88,7 +88,7 @@ void checkForm(const CrackShape& shape, bool isCrack, int dim) {
 
 // The local frame (VECT_X, VECT_Y, VECT_X x VECT_Y) of the planar shapes, VECT_X ⊥ VECT_Y.
 std::array<Vec3, 3> planarFrame(const CrackShape& shape) {
-    const Vec3 x = unit(shape.vectX, "VECT_X"), y = unit(shape.vectY, "VECT_Y");
+    const Vec3 x = nonZeroUnit(shape.vectX, "VECT_X"), y = nonZeroUnit(shape.vectY, "VECT_Y");
     if (std::abs(dot(x, y)) > 1e-6)
         throw UserError(fmt::format(
             "DEFI_FISS/VECT_X=({:g}, {:g}, {:g}) and VECT_Y=({:g}, {:g}, {:g}) are not orthogonal (cosine {:g}); "
@@ -150,7 +150,7 @@ ShapeLevelSets shapeLevelSets(const Mesh& mesh, const CrackShape& shape, bool is
     if (isOneOf(f, {"ELLIPSE", "RECTANGLE", "CYLINDRE", "ENTAILLE"})) {
         closedShape(mesh, shape, isCrack, out);
     } else if (f == "DEMI_PLAN") {
-        const Vec3 n = unit(shape.normal, "NORMALE"), t = unit(shape.tangent, "DTAN");
+        const Vec3 n = nonZeroUnit(shape.normal, "NORMALE"), t = nonZeroUnit(shape.tangent, "DTAN");
         if (std::abs(dot(n, t)) > 1e-6)
             throw UserError(fmt::format("DEFI_FISS/NORMALE and DTAN are not orthogonal (cosine {:g})", dot(n, t)));
         for (size_t k = 0; k < nn; ++k) {
@@ -161,14 +161,14 @@ ShapeLevelSets shapeLevelSets(const Mesh& mesh, const CrackShape& shape, bool is
         const Vec3 mid{0.5 * (shape.point[0] + shape.end[0]), 0.5 * (shape.point[1] + shape.end[1]), 0.0};
         const double length = distance(shape.point, shape.end);
         if (!(length > 0.0)) throw UserError("DEFI_FISS/PFON_ORIG and PFON_EXTR are the same point");
-        const Vec3 s = unit(difference(shape.end, shape.point), "PFON_EXTR - PFON_ORIG");
+        const Vec3 s = nonZeroUnit(difference(shape.end, shape.point), "PFON_EXTR - PFON_ORIG");
         for (size_t k = 0; k < nn; ++k) {
             const double dx = mesh.coords[k][0] - mid[0], dy = mesh.coords[k][1] - mid[1];
             out.lsn[k] = -s[1] * dx + s[0] * dy;
             out.lst[k] = std::abs(s[0] * dx + s[1] * dy) - 0.5 * length;
         }
     } else if (f == "DEMI_DROITE" || f == "DROITE") {
-        const Vec3 t = unit(shape.tangent, "DTAN");
+        const Vec3 t = nonZeroUnit(shape.tangent, "DTAN");
         for (size_t k = 0; k < nn; ++k) {
             const double dx = mesh.coords[k][0] - shape.point[0], dy = mesh.coords[k][1] - shape.point[1];
             out.lsn[k] = -t[1] * dx + t[0] * dy;
