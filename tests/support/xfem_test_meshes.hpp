@@ -57,32 +57,34 @@ inline std::shared_ptr<ma::Mesh> square(int n, ma::CellType kind, std::vector<do
     return m;
 }
 
-// 3D slab, one layer 0 <= z <= 1. kind = HEXA8 or TETRA4 (each hexahedron split into 6 tetrahedra
-// around its diagonal 1-7).
-inline std::shared_ptr<ma::Mesh> slab(int n, ma::CellType kind) {
+// 3D slab 0 <= z <= 1 in `layers` layers (one by default; n layers make ssnv511c's 10:1 flat cells).
+// kind = HEXA8 or TETRA4 (each hexahedron split into 6 tetrahedra around its diagonal 1-7).
+inline std::shared_ptr<ma::Mesh> slab(int n, ma::CellType kind, int layers = 1) {
     const auto xs = grid(n), ys = grid(n);
     auto m = std::make_shared<ma::Mesh>();
     m->dim = 3;
     m->name = "MAILLAG";
     auto id = [&](int i, int j, int k) { return k * (n + 1) * (n + 1) + j * (n + 1) + i; };
-    for (int k = 0; k <= 1; ++k)
+    for (int k = 0; k <= layers; ++k)
         for (int j = 0; j <= n; ++j)
-            for (int i = 0; i <= n; ++i) m->addNode({xs[i], ys[j], double(k)});
+            for (int i = 0; i <= n; ++i) m->addNode({xs[i], ys[j], double(k) / layers});
     std::vector<int> volu;
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            const std::array<int, 8> h{id(i, j, 0), id(i + 1, j, 0), id(i + 1, j + 1, 0), id(i, j + 1, 0),
-                                       id(i, j, 1), id(i + 1, j, 1), id(i + 1, j + 1, 1), id(i, j + 1, 1)};
-            if (kind == ma::CellType::HEXA8) {
-                volu.push_back(m->addCell(kind, std::vector<int>(h.begin(), h.end())));
-            } else {
-                // Six tetrahedra around the diagonal 0-6 (positive orientation).
-                const int t[6][4] = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6},
-                                     {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}};
-                for (const auto& tt : t)
-                    volu.push_back(m->addCell(kind, std::vector<int>{h[tt[0]], h[tt[1]], h[tt[2]], h[tt[3]]}));
+    for (int k = 0; k < layers; ++k)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const std::array<int, 8> h{
+                    id(i, j, k),     id(i + 1, j, k),     id(i + 1, j + 1, k),     id(i, j + 1, k),
+                    id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)};
+                if (kind == ma::CellType::HEXA8) {
+                    volu.push_back(m->addCell(kind, std::vector<int>(h.begin(), h.end())));
+                } else {
+                    // Six tetrahedra around the diagonal 0-6 (positive orientation).
+                    const int t[6][4] = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6},
+                                         {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}};
+                    for (const auto& tt : t)
+                        volu.push_back(m->addCell(kind, std::vector<int>{h[tt[0]], h[tt[1]], h[tt[2]], h[tt[3]]}));
+                }
             }
-        }
     m->cellGroups.set("VOLU", volu);
     return m;
 }

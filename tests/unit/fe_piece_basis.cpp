@@ -97,42 +97,115 @@ TEST(PieceBasis, RigidModesAtTheCopiesAreNullModes2D) {
     checkPieceModes(junctionModel(xfemtest::square(7, CellType::TRIA3), 0.3, -0.4));
 }
 
-// K + c diag(K) (positive definite) solved by MUMPS and by CG through the piece basis with each
-// multigrid preconditioner: the same answer to 1e-10, and the .mess says which basis, how many
-// modes, and that GAMG's and ML's smoothers multiply by the assembled matrix, not through the shell
-// (ML also with OPTION_PETSC='-pc_use_amat true', which asks for the shell).
+namespace {
+
+// K + c diag(K): positive definite, for a free model.
+struct Regularised {
+    CsrMatrix A;
+    std::vector<double> b, direct;  // right-hand side, MUMPS's answer
+};
+
+Regularised regularised(const FreeModel& f, double c = 1e-2) {
+    Regularised r{f.K, std::vector<double>(size_t(f.K.rows)), {}};
+    for (int i = 0; i < r.A.rows; ++i) r.A.values[size_t(r.A.find(i, i))] *= 1.0 + c;
+    for (int i = 0; i < r.A.rows; ++i) r.b[size_t(i)] = std::sin(0.37 * i) + 0.5;
+    r.direct = r.b;
+    SolverOptions o;
+    auto solver = makeLinearSolver(o);
+    solver->factorize(r.A, MatrixKind::SymmetricPositiveDefinite);
+    solver->solve(r.direct);
+    return r;
+}
+
+struct PieceSolve {
+    double error;  // max |x - direct| / max |direct|
+    std::string mess;
+};
+
+// CG through the piece basis with multigrid preconditioner `pc` and OPTION_PETSC `given`.
+PieceSolve solveInPieces(const FreeModel& f, const Regularised& r, const std::string& pc, const std::string& given,
+                         double resiRela = 1e-13) {
+    SolverOptions o;
+    o.method = "PETSC", o.algorithm = "CG", o.preconditioner = pc, o.resiRela = resiRela;
+    o.petscOptions = given;
+    o.pieceBasis = [&] { return pieceBasisOf(*f.space, f.constraints, r.A.rows); };
+    const size_t from = msg().messText().size();
+    auto solver = makeLinearSolver(o);
+    solver->factorize(r.A, MatrixKind::SymmetricPositiveDefinite);
+    std::vector<double> x = r.b;
+    solver->solve(x);
+    double diff = 0.0;
+    for (size_t i = 0; i < x.size(); ++i) diff = std::max(diff, std::abs(x[i] - r.direct[i]));
+    return {diff / maxAbs(r.direct), msg().messText().substr(from)};
+}
+
+// The Krylov iterations of the last solve in a .mess excerpt ("solve ... s: N iterations").
+int iterationsIn(const std::string& mess) {
+    const size_t at = mess.rfind(" iterations, ");
+    if (at == std::string::npos) return -1;
+    const size_t from = mess.rfind(' ', at - 1) + 1;
+    return std::stoi(mess.substr(from, at - from));
+}
+
+// The free model clamped on its faces x = -5 and x = 5 (ssnv511c's SG and SD; no node there is
+// enriched): those unknowns eliminated, the principal submatrix of K on the others.
+struct Clamped {
+    DirichletConstraints constraints;
+    Regularised system;
+};
+
+Clamped clampedOnSides(const FreeModel& f) {
+    Clamped c{f.constraints, {}};
+    const DofNumbering& numbering = f.space->numbering();
+    const auto& coords = f.space->mesh().coords;
+    for (int node = 0; node < numbering.nodeCount(); ++node)
+        if (std::abs(std::abs(coords[size_t(node)][0]) - 5.0) < 1e-12)
+            for (int k = 0; k < numbering.slots(node); ++k)
+                for (int comp = 0; comp < 3; ++comp) c.constraints.fixed[size_t(numbering.dof(node, k, comp))] = 1;
+    std::vector<int> kept(size_t(f.K.rows), -1);  // old equation -> new
+    int next = 0;
+    for (size_t d = 0; d < c.constraints.eq.size(); ++d) {
+        int& e = c.constraints.eq[d];
+        if (e < 0) continue;
+        e = c.constraints.fixed[d] ? -1 : (kept[size_t(e)] = next++);
+    }
+    c.constraints.freeCount = next;
+    CsrMatrix& A = c.system.A;
+    A.rows = next;
+    for (int i = 0; i < f.K.rows; ++i) {
+        if (kept[size_t(i)] < 0) continue;
+        for (long long a = f.K.rowStart[size_t(i)]; a < f.K.rowStart[size_t(i) + 1]; ++a)
+            if (const int j = kept[size_t(f.K.cols[size_t(a)])]; j >= 0)
+                A.cols.push_back(j), A.values.push_back(f.K.values[size_t(a)]);
+        A.rowStart.push_back(static_cast<long long>(A.cols.size()));
+    }
+    c.system.b.assign(size_t(next), 0.0);
+    for (int i = 0; i < next; ++i) c.system.b[size_t(i)] = std::sin(0.37 * i) + 0.5;
+    c.system.direct = c.system.b;
+    auto solver = makeLinearSolver(SolverOptions{});
+    solver->factorize(A, MatrixKind::SymmetricPositiveDefinite);
+    solver->solve(c.system.direct);
+    return c;
+}
+
+}  // namespace
+
+// K + c diag(K) solved by MUMPS and by CG through the piece basis with each multigrid
+// preconditioner: the same answer to 1e-10, and the .mess says which basis, how many modes, and that
+// GAMG's and ML's smoothers multiply by the assembled matrix, not through the shell (ML also with
+// OPTION_PETSC='-pc_use_amat true', which asks for the shell).
 TEST(PieceBasis, SolveThroughThePiecesIsTheDirectOne) {
     const FreeModel f = junctionModel(xfemtest::slab(6, CellType::HEXA8), 0.3, -0.4);
-    CsrMatrix A = f.K;
-    for (int i = 0; i < A.rows; ++i) A.values[size_t(A.find(i, i))] *= 1.0 + 1e-2;
-    std::vector<double> b(size_t(A.rows));
-    for (int i = 0; i < A.rows; ++i) b[size_t(i)] = std::sin(0.37 * i) + 0.5;
-    std::vector<double> direct = b;
-    {
-        SolverOptions o;
-        auto solver = makeLinearSolver(o);
-        solver->factorize(A, MatrixKind::SymmetricPositiveDefinite);
-        solver->solve(direct);
-    }
+    const Regularised r = regularised(f);
     const std::vector<std::pair<std::string, std::string>> settings = {{"ML", ""},
                                                                        {"GAMG", ""},
                                                                        {"BOOMER", ""},
                                                                        {"ML", "-pc_use_amat true"}};
     for (const auto& [pc, given] : settings) {
         SCOPED_TRACE(pc + " " + given);
-        SolverOptions o;
-        o.method = "PETSC", o.algorithm = "CG", o.preconditioner = pc, o.resiRela = 1e-13;
-        o.petscOptions = given;
-        o.pieceBasis = [&] { return pieceBasisOf(*f.space, f.constraints, A.rows); };
-        const size_t from = msg().messText().size();
-        auto solver = makeLinearSolver(o);
-        solver->factorize(A, MatrixKind::SymmetricPositiveDefinite);
-        std::vector<double> x = b;
-        solver->solve(x);
-        double diff = 0.0;
-        for (size_t i = 0; i < x.size(); ++i) diff = std::max(diff, std::abs(x[i] - direct[i]));
-        EXPECT_LT(diff / maxAbs(direct), 1e-10);
-        const std::string mess = msg().messText().substr(from);
+        const PieceSolve s = solveInPieces(f, r, pc, given);
+        EXPECT_LT(s.error, 1e-10);
+        const std::string& mess = s.mess;
         EXPECT_NE(mess.find("piece basis of the X-FEM model (4 block(s))"), std::string::npos) << mess;
         if (pc == "BOOMER") continue;
         EXPECT_NE(mess.find("near null space: 6 rigid body modes"), std::string::npos) << mess;
@@ -142,4 +215,20 @@ TEST(PieceBasis, SolveThroughThePiecesIsTheDirectOne) {
                                (given.empty() ? "assembled matrix" : "shell matrix");
         EXPECT_NE(mess.find(smoother), std::string::npos) << mess;
     }
+}
+
+// ML in the piece basis runs W-cycles (the .mess lists the option): on ssnv511c's 10:1 flat cells,
+// clamped on two sides, they take fewer iterations than V-cycles (OPTION_PETSC='-pc_mg_cycle_type
+// v'), for the same answer.
+TEST(PieceBasis, WCyclesTakeFewerIterationsOnFlatCells) {
+    FreeModel f = junctionModel(xfemtest::slab(12, CellType::HEXA8, 12), 0.3, -0.4);
+    Clamped c = clampedOnSides(f);
+    f.constraints = c.constraints;
+    const PieceSolve w = solveInPieces(f, c.system, "ML", "", 1e-12);
+    const PieceSolve v = solveInPieces(f, c.system, "ML", "-pc_mg_cycle_type v", 1e-12);
+    EXPECT_LT(w.error, 1e-10);
+    EXPECT_LT(v.error, 1e-10);
+    EXPECT_NE(w.mess.find("-mg_levels_ksp_max_it 2 -pc_mg_cycle_type w"), std::string::npos) << w.mess;
+    EXPECT_GT(iterationsIn(w.mess), 0) << w.mess;
+    EXPECT_LT(iterationsIn(w.mess), iterationsIn(v.mess)) << w.mess << v.mess;
 }
