@@ -71,19 +71,19 @@ public:
         for (size_t m = 0; m < c_.multi.size(); ++m) maxR = std::max(maxR, std::abs(s_.alpha * relationGap(m)));
     }
 
-    // Loads and reactions that are round-off compared with the elastic forces of the current
-    // displacement (imposed rigid motions, zero load): the relative criterion then uses that
-    // force scale (mean stiffness diagonal x largest displacement) instead of noise.
+    // Loads and reactions that are the linear solver's noise compared with the elastic forces of
+    // the current displacement (imposed rigid motions, zero load): the relative criterion then uses
+    // that force scale (mean stiffness diagonal x largest displacement) instead of noise.
     double relativeDenominator(double denominator) {
         double umax = 0.0;
         for (int d = 0; d < s_.ndof; ++d) umax = std::max(umax, std::abs(u_[d]));
         const double forceScale = s_.alpha * umax;
-        if (denominator > 1e-12 * forceScale) return denominator;
+        if (denominator > s_.negligibleLoad * forceScale) return denominator;
         if (!zeroLoadNoted_)
             msg().infof(
-                "    loads and reactions are negligible (max {:.3e} vs elastic force scale {:.3e}): "
-                "RESI_GLOB_RELA is taken relative to the force scale",
-                denominator, forceScale);
+                "    loads and reactions are negligible (max {:.3e} vs elastic force scale {:.3e}, below {:g} of "
+                "it): RESI_GLOB_RELA is taken relative to the force scale",
+                denominator, forceScale, s_.negligibleLoad);
         zeroLoadNoted_ = true;
         return forceScale;
     }

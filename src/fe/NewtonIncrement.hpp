@@ -42,6 +42,9 @@ struct NewtonSystem {
     std::chrono::steady_clock::time_point start;          // of the increment (its logged time)
     // Each process computes the additional terms' residual on its own cells: summed here.
     bool distributed = false;
+    // Loads and reactions below this fraction of the elastic force scale are the linear solver's
+    // noise (round-off for a direct solver; a Krylov method's tolerance leaves more).
+    double negligibleLoad = 1e-12;
 };
 
 // Iterates from the state (u, lambda) at instant inst until the criterion holds or
