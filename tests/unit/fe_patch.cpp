@@ -123,6 +123,19 @@ struct PatchCase {
     Modelisation mod;
 };
 
+// STAT_NON_LINE's keywords for one load over the instants `insts`.
+KeywordSet statNonLineKeywords(const ConceptPtr& model, const ConceptPtr& mat, const ConceptPtr& load,
+                               std::vector<double> insts) {
+    auto list = std::make_shared<RealList>();
+    list->values = std::move(insts);
+    KeywordSet s;
+    set(s, "MODELE", model);
+    set(s, "CHAM_MATER", mat);
+    set(s.addOccurrence("EXCIT"), "CHARGE", load);
+    set(s.addOccurrence("INCREMENT"), "LIST_INST", ConceptPtr(list));
+    return s;
+}
+
 }  // namespace
 
 class FePatchDdlImpo : public ::testing::TestWithParam<PatchCase> {};
@@ -441,14 +454,8 @@ TEST(FeStatNonLine, NonConvergenceStopsOrAlarms) {
     setTexts(p, "GROUP_MA", {"RIGHT"});
     set(p, "PRES", 1.0e3);
     auto load = run("AFFE_CHAR_MECA", kw, "CHAR");
-    auto list = std::make_shared<RealList>();
-    list->values = {0.0, 1.0, 2.0};
     for (const char* arret : {"OUI", "NON"}) {
-        KeywordSet s;
-        set(s, "MODELE", model);
-        set(s, "CHAM_MATER", mat);
-        set(s.addOccurrence("EXCIT"), "CHARGE", load);
-        set(s.addOccurrence("INCREMENT"), "LIST_INST", ConceptPtr(list));
+        KeywordSet s = statNonLineKeywords(model, mat, load, {0.0, 1.0, 2.0});
         auto& conv = s.addOccurrence("CONVERGENCE");
         set(conv, "RESI_GLOB_MAXI", 1e-300);
         set(conv, "ITER_GLOB_MAXI", 2LL);
@@ -484,13 +491,7 @@ TEST(FeStatNonLine, RigidMotionSolvedByKrylovConvergesAtOnce) {
     setTexts(d, "GROUP_MA", {"LEFT", "RIGHT"});
     set(d, "DX", 0.5), set(d, "DY", -0.25);
     auto load = run("AFFE_CHAR_MECA", kw, "CHAR");
-    auto list = std::make_shared<RealList>();
-    list->values = {0.0, 1.0};
-    KeywordSet s;
-    set(s, "MODELE", model);
-    set(s, "CHAM_MATER", mat);
-    set(s.addOccurrence("EXCIT"), "CHARGE", load);
-    set(s.addOccurrence("INCREMENT"), "LIST_INST", ConceptPtr(list));
+    KeywordSet s = statNonLineKeywords(model, mat, load, {0.0, 1.0});
     auto& solver = s.addOccurrence("SOLVEUR");
     set(solver, "METHODE", std::string("PETSC")), set(solver, "ALGORITHME", std::string("CG"));
     set(solver, "PRE_COND", std::string("JACOBI")), set(solver, "RESI_RELA", 1e-8);
