@@ -182,9 +182,9 @@ IncrementReport solveExplainingFailure(MechanicalProblem& problem, ContactTerms&
             throw NumericalError(fmt::format("{}\n{}", e.what(), hint));
         }
         throw NumericalError(
-            fmt::format("{}\nNo contact point is active (CONTACT_INIT='NON'): blocks held only by the "
-                        "contact float; start with CONTACT_INIT='OUI' or hold every block by "
-                        "boundary conditions",
+            fmt::format("{}\nNo contact point is active (CONTACT_INIT='NON'): a block held only by the "
+                        "contact floats then; if that is the cause, start with CONTACT_INIT='OUI' or hold "
+                        "every block by boundary conditions",
                         e.what()));
     }
 }
