@@ -236,7 +236,7 @@ foreach(_name ssnv513d ssnv203a ssnv191b)
   miniaster_solveur_variant(gcpc_ldlt_inc ${_name} "METHODE='GCPC', RESI_RELA=1e-15"
                             "GCPC (ALGORITHME='CG', PRE_COND='LDLT_INC') solve")
 endforeach()
-foreach(_name ssnv513h ssnp169a)
+foreach(_name ssnv513h ssnp169a ssnv201a)
   miniaster_solveur_variant(mixer_precision ${_name} "METHODE='MUMPS', MIXER_PRECISION='OUI'"
                             "MUMPS (single-precision factors) solve")
 endforeach()

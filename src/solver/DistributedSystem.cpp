@@ -38,20 +38,26 @@ std::vector<double> distributedDiagonalScaling(const CsrMatrix& A, std::span<con
 ResidualInfo distributedResidualOf(const CsrMatrix& A, std::span<const double> x, std::span<const double> b,
                                    std::vector<double>& r) {
     const size_t n = size_t(A.rows);
-    std::vector<long double> sums(2 * n, 0.0L);  // A x, then |A| |x|, this process's part
+    // A x, then |A| |x|, then the row's largest |a_ij|: this process's part (the sum over the
+    // processes of the last bounds the summed row's largest entry).
+    std::vector<long double> sums(3 * n, 0.0L);
     for (int i = 0; i < A.rows; ++i)
         for (long long k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
             const long double p = static_cast<long double>(A.values[k]) * x[size_t(A.cols[k])];
             sums[size_t(i)] += p;
             sums[n + size_t(i)] += std::abs(p);
+            sums[2 * n + size_t(i)] =
+                std::max(sums[2 * n + size_t(i)], std::abs(static_cast<long double>(A.values[k])));
         }
     mpi::sum(sums);
+    double xMax = 0.0;
+    for (double v : x) xMax = std::max(xMax, std::abs(v));
     r.resize(n);
-    ResidualNorms norms;
+    ResidualNorms norms(A.rows);
     for (size_t i = 0; i < n; ++i) {
         const long double ri = b[i] - sums[i], scale = std::abs(b[i]) + sums[n + i];
         r[i] = static_cast<double>(ri);
-        norms.add(ri, scale, b[i]);
+        norms.add(ri, scale, b[i], sums[2 * n + i] * xMax);
     }
     return norms.info();
 }

@@ -27,23 +27,29 @@ std::vector<double> symmetricDiagonalScaling(const CsrMatrix& A);
 std::vector<double> diagonalOf(const CsrMatrix& A);
 std::vector<double> scalingFromDiagonal(const CsrMatrix& A, std::span<const double> diagonal);
 
-// Residual r = b - A x accumulated in extended precision (long double) and the two backward
-// errors: normwise ||r|| / ||b|| and componentwise max_i |r_i| / (|A| |x| + |b|)_i; on `threads`
+// Residual r = b - A x accumulated in extended precision (long double) and the backward errors:
+// normwise ||r|| / ||b||, componentwise max_i |r_i| / (|A| |x| + |b|)_i, and Arioli, Demmel and
+// Duff's omega1 + omega2, which measures a row whose own scale is round-off (the solution is ~0
+// around it: a block held at zero) against (|A| |x|)_i + ||A_i|| ||x|| instead; on `threads`
 // threads, with the same result for any number of them.
 struct ResidualInfo {
     double normwise = 0.0;
     double componentwise = 0.0;
+    double omega = 0.0;
 };
-// The two backward errors accumulated row by row from r_i and its scale |b_i| + (|A| |x|)_i.
+// The backward errors accumulated row by row from r_i, its scale |b_i| + (|A| |x|)_i and
+// ||A_i||_inf ||x||_inf, for a system of n rows.
 class ResidualNorms {
 public:
-    void add(long double ri, long double scale, double bi);
+    explicit ResidualNorms(long long n = 0) : n_(n) {}
+    void add(long double ri, long double scale, double bi, long double rowTimesX);
     void merge(const ResidualNorms& other);  // the rows of `other` after these
     ResidualInfo info() const;
 
 private:
+    long long n_;
     long double num_ = 0.0L, den_ = 0.0L;
-    double componentwise_ = 0.0;
+    double componentwise_ = 0.0, omega1_ = 0.0, omega2_ = 0.0;
 };
 ResidualInfo residualOf(const CsrMatrix& A, std::span<const double> x, std::span<const double> b,
                         std::vector<double>& r, int threads = 1);

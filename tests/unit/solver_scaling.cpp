@@ -39,6 +39,20 @@ CsrMatrix weaklyCoupled(int n) {
     return A;
 }
 
+// The n x n tridiagonal Laplacian (2 on the diagonal, -1 beside it).
+CsrMatrix tridiagonalLaplacian(int n) {
+    CsrMatrix A;
+    A.rows = n;
+    A.rowStart.assign(1, 0);
+    for (int i = 0; i < n; ++i) {
+        if (i > 0) A.cols.push_back(i - 1), A.values.push_back(-1.0);
+        A.cols.push_back(i), A.values.push_back(2.0);
+        if (i < n - 1) A.cols.push_back(i + 1), A.values.push_back(-1.0);
+        A.rowStart.push_back(static_cast<long long>(A.cols.size()));
+    }
+    return A;
+}
+
 }  // namespace
 
 TEST(SolverScaling, ScalingHasUnitDiagonalAndScalesMultiplierRows) {
@@ -103,25 +117,37 @@ TEST(SolverScaling, SingularMatrixStillReportedAfterScaling) {
 // several blocks (2e5 rows of the tridiagonal Laplacian, a rough x).
 TEST(SolverResidual, SameBitsForAnyNumberOfThreads) {
     const int n = 200000;
-    CsrMatrix A;
-    A.rows = n;
-    A.rowStart.assign(1, 0);
-    for (int i = 0; i < n; ++i) {
-        if (i > 0) A.cols.push_back(i - 1), A.values.push_back(-1.0);
-        A.cols.push_back(i), A.values.push_back(2.0);
-        if (i < n - 1) A.cols.push_back(i + 1), A.values.push_back(-1.0);
-        A.rowStart.push_back(static_cast<long long>(A.cols.size()));
-    }
+    const CsrMatrix A = tridiagonalLaplacian(n);
     std::vector<double> x(n), b(n, 1.0), r1, r3;
     for (int i = 0; i < n; ++i) x[i] = std::sin(0.37 * i) + 1e-3 * i;
     const ResidualInfo one = residualOf(A, x, b, r1, 1), three = residualOf(A, x, b, r3, 3);
     EXPECT_EQ(r1, r3);
     EXPECT_EQ(one.normwise, three.normwise);
     EXPECT_EQ(one.componentwise, three.componentwise);
+    EXPECT_EQ(one.omega, three.omega);
     // Row 7: b - (2 x_7 - x_6 - x_8), and the norm from every row.
     EXPECT_DOUBLE_EQ(r1[7], 1.0 - (2.0 * x[7] - x[6] - x[8]));
     long double num = 0.0L;
     for (double v : r1) num += static_cast<long double>(v) * v;
     EXPECT_NEAR(one.normwise, std::sqrt(double(num) / n), 1e-12 * one.normwise);
     EXPECT_GT(one.componentwise, 0.0);
+}
+
+// A block held at zero: x = 1 on rows 0-49 of the tridiagonal Laplacian, 0 beyond, computed with
+// alternating noise of 1e-17 there. Those rows' own scale |A| |x| is the noise itself, so the plain
+// componentwise backward error is of order 1; Arioli, Demmel and Duff's omega measures them against
+// ||A_i|| ||x|| (their scale is below 1000 n eps of it) and sees round-off.
+TEST(SolverResidual, OmegaMeasuresRowsAroundABlockHeldAtZero) {
+    const int n = 100;
+    const CsrMatrix A = tridiagonalLaplacian(n);
+    std::vector<double> exact(n, 0.0), x(n), b(n, 0.0), r;
+    for (int i = 0; i < 50; ++i) exact[i] = 1.0;
+    b[0] = 1.0, b[49] = 1.0, b[50] = -1.0;  // A exact
+    for (int i = 0; i < n; ++i) x[i] = exact[i] + (i >= 50 ? (i % 2 ? 1e-17 : -1e-17) : 0.0);
+    const ResidualInfo noisy = residualOf(A, x, b, r);
+    EXPECT_GT(noisy.componentwise, 0.5);
+    EXPECT_LT(noisy.omega, 1e-16);
+    const ResidualInfo clean = residualOf(A, exact, b, r);
+    EXPECT_EQ(clean.componentwise, 0.0);
+    EXPECT_EQ(clean.omega, 0.0);
 }
