@@ -102,7 +102,7 @@ inline SolverOptions solverOptions(const KeywordSet& kw, int info) {
         o.pcentPivot = std::holds_alternative<long long>(v) ? int(std::get<long long>(v)) : int(std::get<double>(v));
     }
     if (s.has("STOP_SINGULIER") && s.text("STOP_SINGULIER") == "NON") o.nprec = -1;
-    if (o.method == "PETSC" || o.method == "GCPC") {
+    if (o.krylov()) {
         o.resiRela = s.real("RESI_RELA");
         o.preconditioner = s.text("PRE_COND");
         if (o.method == "PETSC") o.algorithm = s.text("ALGORITHME"), o.petscOptions = s.text("OPTION_PETSC");

@@ -134,8 +134,7 @@ namespace {
 // noise: round-off for a factorisation; a Krylov method stops at RESI_RELA, and the reactions of its
 // answer carry ~10 x that (FGMRES + LDLT_SP at 1e-12 on ssnv511a's grid at N = 1001: 1.7e-12).
 double solverNoiseFloor(const SolverOptions& solver) {
-    const bool krylov = solver.method == "PETSC" || solver.method == "GCPC";
-    return krylov && solver.resiRela > 0.0 ? std::max(1e-12, 100.0 * solver.resiRela) : 1e-12;
+    return solver.krylov() && solver.resiRela > 0.0 ? std::max(1e-12, 100.0 * solver.resiRela) : 1e-12;
 }
 
 }  // namespace

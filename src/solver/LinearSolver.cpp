@@ -20,7 +20,7 @@ namespace ma {
 std::unique_ptr<LinearSolver> makeLinearSolver(const SolverOptions& options) {
     if (options.method == "MUMPS") return makeMumpsSolver(options);
     if (options.method == "MULT_FRONT" || options.method == "LDLT") return makeEigenSolver(options);
-    if (options.method == "GCPC" || options.method == "PETSC") return makePetscSolver(options);
+    if (options.krylov()) return makePetscSolver(options);
     throw UserError("SOLVEUR/METHODE='" + options.method + "' is not a solver method");
 }
 

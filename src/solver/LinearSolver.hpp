@@ -29,6 +29,8 @@ enum class MatrixKind {
 
 struct SolverOptions {
     std::string method = "MUMPS";  // MUMPS | MULT_FRONT | LDLT | PETSC | GCPC
+    // PETSC and GCPC: Krylov methods, whose RESI_RELA is their stopping tolerance.
+    bool krylov() const { return method == "PETSC" || method == "GCPC"; }
     // MUMPS ordering: AUTO (coordinate nested dissection when every row has a point, else METIS)
     // METIS AMD AMF QAMD PORD SCOTCH
     std::string renum = "AUTO";
