@@ -99,14 +99,15 @@ TEST(PieceBasis, RigidModesAtTheCopiesAreNullModes2D) {
 
 namespace {
 
-// K + c diag(K): positive definite, for a free model.
-struct Regularised {
+// A positive definite system, its right-hand side and MUMPS's answer.
+struct KnownSystem {
     CsrMatrix A;
-    std::vector<double> b, direct;  // right-hand side, MUMPS's answer
+    std::vector<double> b, direct;
 };
 
-Regularised regularised(const FreeModel& f, double c = 1e-2) {
-    Regularised r{f.K, std::vector<double>(size_t(f.K.rows)), {}};
+// K + c diag(K): positive definite, for a free model.
+KnownSystem regularised(const FreeModel& f, double c = 1e-2) {
+    KnownSystem r{f.K, std::vector<double>(size_t(f.K.rows)), {}};
     for (int i = 0; i < r.A.rows; ++i) r.A.values[size_t(r.A.find(i, i))] *= 1.0 + c;
     for (int i = 0; i < r.A.rows; ++i) r.b[size_t(i)] = std::sin(0.37 * i) + 0.5;
     r.direct = r.b;
@@ -123,7 +124,7 @@ struct PieceSolve {
 };
 
 // CG through the piece basis with multigrid preconditioner `pc` and OPTION_PETSC `given`.
-PieceSolve solveInPieces(const FreeModel& f, const Regularised& r, const std::string& pc, const std::string& given,
+PieceSolve solveInPieces(const FreeModel& f, const KnownSystem& r, const std::string& pc, const std::string& given,
                          double resiRela = 1e-13) {
     SolverOptions o;
     o.method = "PETSC", o.algorithm = "CG", o.preconditioner = pc, o.resiRela = resiRela;
@@ -151,7 +152,7 @@ int iterationsIn(const std::string& mess) {
 // enriched): those unknowns eliminated, the principal submatrix of K on the others.
 struct Clamped {
     DirichletConstraints constraints;
-    Regularised system;
+    KnownSystem system;
 };
 
 Clamped clampedOnSides(const FreeModel& f) {
@@ -196,7 +197,7 @@ Clamped clampedOnSides(const FreeModel& f) {
 // OPTION_PETSC='-pc_use_amat true', which asks for the shell).
 TEST(PieceBasis, SolveThroughThePiecesIsTheDirectOne) {
     const FreeModel f = junctionModel(xfemtest::slab(6, CellType::HEXA8), 0.3, -0.4);
-    const Regularised r = regularised(f);
+    const KnownSystem r = regularised(f);
     const std::vector<std::pair<std::string, std::string>> settings = {{"ML", ""},
                                                                        {"GAMG", ""},
                                                                        {"BOOMER", ""},
