@@ -230,8 +230,9 @@ double ScaledDirectSolver::solve(std::span<double> rhs) {
         "{:.2e}{}{}",
         name(), secondsSince(t0), res.normwise, res.componentwise,
         options_.mixedPrecision ? fmt::format(" (Arioli-Demmel-Duff's omega {:.2e})", res.omega) : std::string(),
-        steps ? fmt::format(" after {} refinement step(s) (before: {:.3e}, {:.2e})", steps, first.normwise,
-                            backward(first))
+        steps ? fmt::format(" after {} refinement step(s) (before: {:.3e}, {:.2e}{})", steps, first.normwise,
+                            first.componentwise,
+                            options_.mixedPrecision ? fmt::format(", omega {:.2e}", first.omega) : std::string())
               : std::string(maxSteps ? "" : " (no refinement)"));
     checkSolution(rhs, res.normwise, options_);
     checkAccuracy(res, steps);
