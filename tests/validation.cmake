@@ -193,24 +193,30 @@ foreach(_case "a|1e-15" "d|1e-15" "e|1e-12")
                             "GCPC (ALGORITHME='CG', PRE_COND='LDLT_INC') solve")
 endforeach()
 # On two processes each assembles its own cells (MATR_DISTRIBUEE): PETSc multiplies by the sum of
-# the parts, LDLT_SP's factors are MUMPS's on both processes, GAMG gets the summed matrix: the same
-# TEST results.
-foreach(_case "a|ldlt_sp|PRE_COND='LDLT_SP'|1e-15|FGMRES" "e|ldlt_sp|PRE_COND='LDLT_SP'|1e-12|FGMRES"
-              "a|gamg|ALGORITHME='CG', PRE_COND='GAMG'|1e-15|CG")
+# the parts, LDLT_SP's factors are MUMPS's on both processes, and GAMG, ML and BOOMER share the piece
+# basis between the processes (each builds its rows of a parallel matrix): the same TEST results.
+foreach(_case "a|ldlt_sp|PRE_COND='LDLT_SP'|1e-15|FGMRES|" "e|ldlt_sp|PRE_COND='LDLT_SP'|1e-12|FGMRES|"
+              "a|gamg|ALGORITHME='CG', PRE_COND='GAMG'|1e-15|CG|shared by 2 processes"
+              "c|ml|ALGORITHME='CG', PRE_COND='ML'|1e-15|CG|shared by 2 processes"
+              "b|boomer|ALGORITHME='GMRES', PRE_COND='BOOMER'|1e-15|GMRES|shared by 2 processes")
   string(REPLACE "|" ";" _f "${_case}")
   list(GET _f 0 _letter)
   list(GET _f 1 _label)
   list(GET _f 2 _keywords)
   list(GET _f 3 _resi)
   list(GET _f 4 _algorithm)
+  list(GET _f 5 _shared)
   string(REGEX MATCH "PRE_COND='[A-Z_]+'" _pc "${_keywords}")
+  set(_expect "cells partitioned over 2 processes && PETSC (ALGORITHME='${_algorithm}', ${_pc}) solve")
+  if(_shared)
+    string(APPEND _expect " && ${_shared}")
+  endif()
   miniaster_solveur_variant(petsc_np2_${_label} ssnv511${_letter} "METHODE='PETSC', ${_keywords}, RESI_RELA=${_resi}"
-                            "cells partitioned over 2 processes && PETSC (ALGORITHME='${_algorithm}', ${_pc}) solve"
-                            -- --np 2)
+                            "${_expect}" -- --np 2)
   set_tests_properties(original_solveur_petsc_np2_${_label}.ssnv511${_letter} PROPERTIES PROCESSORS 2)
 endforeach()
 # GAMG iterates in the piece basis of the X-FEM model (fe/PieceCopies.hpp): the 3 rigid modes of 2D at
-# the node copies, not 3 per colour of the 4 blocks; on two processes it keeps the blocks' modes (12).
+# the node copies, not 3 per colour of the 4 blocks.
 miniaster_solveur_variant(petsc_gamg_modes ssnv511a "METHODE='PETSC', ALGORITHME='CG', PRE_COND='GAMG', RESI_RELA=1e-15"
                           "piece basis of the X-FEM model (4 block(s)) && near null space: 3 rigid body modes")
 

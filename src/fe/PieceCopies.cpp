@@ -75,13 +75,15 @@ struct Builder {
         return true;
     }
 
-    // The rigid modes on the copies of node (0 on the padding unknowns, set after).
+    // The rigid modes on the copies of node (0 on the padding unknowns, set after), and their coordinates.
     void addModes(int node, int firstCopy) {
         const int dim = out.blockSize, modes = dim == 2 ? 3 : 6;
         const Vec3& x = space.mesh().coords[size_t(node)];
-        for (int copy = firstCopy; copy < out.copies; ++copy)
+        for (int copy = firstCopy; copy < out.copies; ++copy) {
             for (int comp = 0; comp < dim; ++comp)
                 for (int mode = 0; mode < modes; ++mode) out.modes.push_back(rigidModeValue(mode, comp, dim, x));
+            for (int comp = 0; comp < dim; ++comp) out.coordinates.push_back(x[size_t(comp)]);
+        }
     }
 };
 

@@ -23,6 +23,8 @@
 #include "solver/BlasThreads.hpp"
 #include "solver/KrylovSettings.hpp"
 #include "solver/LinearSolverImpl.hpp"
+#include "solver/PiecesOnProcesses.hpp"
+#include "solver/ScaledOperator.hpp"
 
 namespace ma {
 
@@ -39,54 +41,6 @@ void initialisePetsc() {
     checkPetsc(PetscInitializeNoArguments(), "PetscInitializeNoArguments");
     checkPetsc(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr), "PetscPushErrorHandler");
     done = true;
-}
-
-// y = S A S x without storing S A S. Distributed (MATR_DISTRIBUEE on several processes): A is
-// this process's part, the products are summed over the processes (rank 0's sum broadcast, so that
-// every process holds the same y and their Krylov iterations stay identical).
-// With a piece basis (multigrid on an X-FEM model), y = S T^T A T S x on the copies, and x itself on
-// the padding unknowns.
-struct ScaledOperator {
-    const CsrMatrix* A = nullptr;
-    const std::vector<double>* scale = nullptr;
-    const PieceBasis* basis = nullptr;
-    bool distributed = false;
-    std::vector<double> work, equations, product;
-
-    void apply(const double* x, double* y) {
-        if (basis) return applyInPieces(x, y);
-        const std::vector<double>& s = *scale;
-        const size_t n = s.size();
-        work.resize(n);
-        for (size_t i = 0; i < n; ++i) work[i] = s[i] * x[i];
-        const std::span<double> out(y, n);
-        A->multiply(work, out);
-        if (distributed) mpi::sum(out);
-        for (size_t i = 0; i < n; ++i) y[i] *= s[i];
-    }
-    void applyInPieces(const double* x, double* y) {
-        const std::vector<double>& s = *scale;
-        const size_t n = s.size(), rows = size_t(A->rows);
-        work.resize(n), equations.resize(rows), product.resize(rows);
-        for (size_t i = 0; i < n; ++i) work[i] = s[i] * x[i];
-        toEquations(*basis, work.data(), equations.data());
-        A->multiply(equations, product);
-        toPieces(*basis, product.data(), y);
-        for (size_t i = 0; i < n; ++i) y[i] = basis->padding[i] ? x[i] : y[i] * s[i];
-    }
-};
-
-PetscErrorCode multiplyScaled(Mat m, Vec x, Vec y) {
-    void* context = nullptr;
-    PetscCall(MatShellGetContext(m, &context));
-    const PetscScalar* xv = nullptr;
-    PetscScalar* yv = nullptr;
-    PetscCall(VecGetArrayRead(x, &xv));
-    PetscCall(VecGetArray(y, &yv));
-    static_cast<ScaledOperator*>(context)->apply(xv, yv);
-    PetscCall(VecRestoreArray(y, &yv));
-    PetscCall(VecRestoreArrayRead(x, &xv));
-    return 0;
 }
 
 // S A S assembled, for PETSc's own preconditioners (they read the matrix entries). Distributed: each
@@ -218,7 +172,7 @@ private:
         const auto t0 = std::chrono::steady_clock::now();
         MemoryPhase phase;
         destroySolver();
-        checkPetsc(KSPCreate(PETSC_COMM_SELF, &ksp_), "KSPCreate");
+        checkPetsc(KSPCreate(comm_, &ksp_), "KSPCreate");
         checkPetsc(KSPSetOperators(ksp_, matrix_, preconditionerMatrix()), "KSPSetOperators");
         configureKrylov(ksp_, options_);
         PC pc = nullptr;
@@ -302,108 +256,168 @@ private:
                                   : "?");
     }
 
-    // X-FEM models with GAMG, ML or BOOMER on a positive definite system (one process): the piece
-    // basis (SolverOptions::pieceBasis), or the reason it is not used.
+    // X-FEM models with GAMG, ML or BOOMER on a positive definite system: the piece basis
+    // (SolverOptions::pieceBasis), shared between the processes when distributed, or the reason it
+    // is not used.
     void choosePieceBasis(MatrixKind kind) {
-        piece_ = PieceBasis{};
+        piece_ = PieceBasis{}, shared_ = SharedPieces{}, comm_ = PETSC_COMM_SELF;
         const std::string& p = options_.preconditioner;
         if (!options_.pieceBasis || kind != MatrixKind::SymmetricPositiveDefinite ||
             (p != "GAMG" && p != "ML" && p != "BOOMER"))
             return;
-        if (options_.distributed) {
-            msg().infof("    {}: piece basis not used on several processes (the blocks' rigid modes instead)", name());
-            return;
-        }
         piece_ = options_.pieceBasis();
+        if (piece_.copies > 0 && options_.distributed) {
+            std::vector<PieceShare> shares = shareByCoordinates(piece_, mpi::size());
+            if (shares.empty()) piece_ = PieceBasis{}, piece_.refusal = "fewer nodes than processes";
+            else shared_ = SharedPieces{std::move(shares), mpi::rank()}, comm_ = PETSC_COMM_WORLD;
+        }
         if (piece_.copies == 0)
             msg().infof("    {}: piece basis not used: {} (the blocks' rigid modes instead)", name(), piece_.refusal);
     }
 
     // PETSc iterates on S T^T A T S (S: the unit diagonal scaling of T^T A T) through a shell; the
     // preconditioner is built from its assembled copy without the round-off couplings of disjoint
-    // pieces, with one block per node copy and the rigid modes at the copies.
+    // pieces, with one block per node copy and the rigid modes at the copies. Shared between the
+    // processes, each builds its share's rows.
     void factorizeInPieces(const CsrMatrix& A) {
         const auto t0 = std::chrono::steady_clock::now();
-        scaled_ = pieceBasisMatrix(A, piece_, kPieceRoundOff);
         const size_t n = size_t(piece_.size());
-        scale_.assign(n, 1.0);
-        for (size_t k = 0; k < n; ++k)
+        double equationsNonZeros = double(A.nonZeros());
+        if (shared_.active()) {
+            const CsrMatrix rows = summedShareRows(shared_, A);
+            equationsNonZeros = double(rows.nonZeros());
+            mpi::sum(std::span<double>(&equationsNonZeros, 1));
+            const std::vector<double> own = pieceBasisDiagonal(rows, shared_.mine(), piece_);
+            std::vector<double> diagonal(n);
+            shared_.gather(piece_.blockSize, own.data(), diagonal.data());
+            scaled_ = pieceBasisRows(rows, shared_.mine(), piece_, diagonal, kPieceRoundOff);
+            std::vector<double> mine;
+            mpi::collectively([&] { mine = unitDiagonalScaling(scaled_); });
+            scale_.assign(n, 1.0);
+            shared_.gather(piece_.blockSize, mine.data(), scale_.data());
+        } else {
+            scaled_ = pieceBasisMatrix(A, piece_, kPieceRoundOff);
+            scale_ = unitDiagonalScaling(scaled_);
+        }
+        const size_t first = firstUnknown();
+        for (size_t k = 0; k < size_t(scaled_.rows); ++k)
             for (long long a = scaled_.rowStart[k]; a < scaled_.rowStart[k + 1]; ++a)
-                if (size_t(scaled_.cols[size_t(a)]) == k) {
-                    const double d = scaled_.values[size_t(a)];
-                    if (!(d > 0.0))
-                        throw NumericalError(fmt::format(
-                            "{}: the piece basis has a non-positive diagonal {:g} (a piece without stiffness)", name(),
-                            d));
-                    scale_[k] = 1.0 / std::sqrt(d);
-                }
-        for (size_t k = 0; k < n; ++k)
-            for (long long a = scaled_.rowStart[k]; a < scaled_.rowStart[k + 1]; ++a)
-                scaled_.values[size_t(a)] *= scale_[k] * scale_[size_t(scaled_.cols[size_t(a)])];
+                scaled_.values[size_t(a)] *= scale_[first + k] * scale_[size_t(scaled_.cols[size_t(a)])];
         operator_.A = A_, operator_.scale = &scale_, operator_.basis = &piece_, operator_.distributed = false;
-        createShell(int(n));
+        operator_.shared = shared_.active() ? &shared_ : nullptr;
+        localUnknowns_ = scaled_.rows;
+        createShell(scaled_.rows, int(n));
         createAssembled(pmat_);
-        checkPetsc(MatSetBlockSize(pmat_, piece_.blockSize), "MatSetBlockSize");
         checkPetsc(MatSetOption(matrix_, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
         checkPetsc(MatSetOption(pmat_, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
-        long long padding = 0;
-        for (char c : piece_.padding) padding += c;
-        msg().infof(
-            "    {}: piece basis of the X-FEM model ({} block(s)): {} node copies, {} unknowns ({} of them eliminated "
-            "components kept as identity rows) for {} equations; preconditioner matrix {} non-zeros (the "
-            "equations' {}), block size {}, built in {:.3f} s",
-            name(), piece_.blocks, piece_.copies, n, padding, A.rows, scaled_.nonZeros(), A.nonZeros(),
-            piece_.blockSize, secondsSince(t0));
+        logPieceBasis(A.rows, equationsNonZeros, secondsSince(t0));
+        if (shared_.active()) scaled_ = CsrMatrix{};  // PETSc's parallel matrix holds a copy
         if (options_.preconditioner != "BOOMER") attachNearNullSpace(piece_.modes, pmat_);
         std::vector<double>().swap(piece_.modes);
     }
 
-    void createShell(int n) {
-        checkPetsc(MatCreateShell(PETSC_COMM_SELF, n, n, n, n, &operator_, &matrix_), "MatCreateShell");
+    // 1/sqrt(d_kk) of each row of B (global columns, rows from firstUnknown()).
+    std::vector<double> unitDiagonalScaling(const CsrMatrix& B) const {
+        const size_t first = firstUnknown();
+        std::vector<double> scale(size_t(B.rows), 1.0);
+        for (size_t k = 0; k < size_t(B.rows); ++k)
+            for (long long a = B.rowStart[k]; a < B.rowStart[k + 1]; ++a)
+                if (size_t(B.cols[size_t(a)]) == first + k) {
+                    const double d = B.values[size_t(a)];
+                    if (!(d > 0.0))
+                        throw NumericalError(fmt::format(
+                            "{}: the piece basis has a non-positive diagonal {:g} (a piece without stiffness)", name(),
+                            d));
+                    scale[k] = 1.0 / std::sqrt(d);
+                }
+        return scale;
+    }
+
+    // This process's first unknown of the Krylov system (0 unless the piece basis is shared).
+    size_t firstUnknown() const { return shared_.active() ? size_t(piece_.blockSize * shared_.mine().copyBegin) : 0; }
+
+    void logPieceBasis(int equations, double equationsNonZeros, double seconds) const {
+        long long padding = 0;
+        for (char c : piece_.padding) padding += c;
+        double nonZeros = double(scaled_.nonZeros());
+        if (shared_.active()) mpi::sum(std::span<double>(&nonZeros, 1));
+        msg().infof(
+            "    {}: piece basis of the X-FEM model ({} block(s)): {} node copies, {} unknowns ({} of them eliminated "
+            "components kept as identity rows) for {} equations; preconditioner matrix {} non-zeros (the "
+            "equations' {}), block size {}{}, built in {:.3f} s",
+            name(), piece_.blocks, piece_.copies, piece_.size(), padding, equations, static_cast<long long>(nonZeros),
+            static_cast<long long>(equationsNonZeros), piece_.blockSize,
+            shared_.active() ? fmt::format(", shared by {} processes by ranges of copies", shared_.shares.size())
+                             : std::string(),
+            seconds);
+    }
+
+    void createShell(int local, int n) {
+        checkPetsc(MatCreateShell(comm_, local, local, n, n, &operator_, &matrix_), "MatCreateShell");
         checkPetsc(MatShellSetOperation(matrix_, MATOP_MULT, reinterpret_cast<void (*)(void)>(multiplyScaled)),
                    "MatShellSetOperation");
     }
+    void createShell(int n) { createShell(n, n); }
+    // scaled_ as PETSc's matrix: this process's rows of a parallel matrix when the piece basis is
+    // shared, else the whole matrix on its arrays. Block size: the piece basis's copies.
     void createAssembled(Mat& target) {
         rowStart_.assign(scaled_.rowStart.begin(), scaled_.rowStart.end());
+        const PetscInt bs = piece_.copies > 0 ? piece_.blockSize : 1;
+        if (shared_.active()) {
+            checkPetsc(MatCreate(comm_, &target), "MatCreate");
+            checkPetsc(MatSetSizes(target, scaled_.rows, scaled_.rows, piece_.size(), piece_.size()), "MatSetSizes");
+            checkPetsc(MatSetBlockSize(target, bs), "MatSetBlockSize");
+            checkPetsc(MatSetType(target, MATMPIAIJ), "MatSetType");
+            checkPetsc(MatMPIAIJSetPreallocationCSR(target, rowStart_.data(), scaled_.cols.data(),
+                                                    scaled_.values.data()),
+                       "MatMPIAIJSetPreallocationCSR");
+            return;
+        }
         checkPetsc(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, scaled_.rows, scaled_.rows, rowStart_.data(),
                                              scaled_.cols.data(), scaled_.values.data(), &target),
                    "MatCreateSeqAIJWithArrays");
+        if (bs > 1) checkPetsc(MatSetBlockSize(target, bs), "MatSetBlockSize");
     }
     Mat preconditionerMatrix() const { return pmat_ ? pmat_ : matrix_; }
 
     // The rigid modes of the model's blocks (SolverOptions::nearNullSpace) as the near null space of
     // S A S (y = S^-1 x: each mode divided by S), orthonormalised, for GAMG's and ML's coarse spaces:
     // without them aggregation sees only constants, and the iterations grow with N (docs/solver.md).
+    // Shared between processes, each orthonormalises its share (the sums over all processes).
     void attachNearNullSpace(std::vector<double>& modes, Mat target) {
-        const size_t n = scale_.size();
+        const size_t n = scale_.size(), first = firstUnknown(), m = piece_.copies > 0 ? size_t(localUnknowns_) : n;
         if (n == 0 || modes.size() < n || modes.size() % n != 0) return;
         const size_t k = modes.size() / n;
+        const auto sum = [this](double value) {
+            if (shared_.active()) mpi::sum(std::span<double>(&value, 1));
+            return value;
+        };
         std::vector<Vec> vecs;
-        for (size_t m = 0; m < k; ++m) {
-            double* v = modes.data() + m * n;
-            for (size_t i = 0; i < n; ++i) v[i] /= scale_[i];
-            for (size_t p = 0; p < m; ++p) {  // modified Gram-Schmidt against the previous modes
-                const double* q = modes.data() + p * n;
+        for (size_t mode = 0; mode < k; ++mode) {
+            double* v = modes.data() + mode * n + first;
+            for (size_t i = 0; i < m; ++i) v[i] /= scale_[first + i];
+            for (size_t p = 0; p < mode; ++p) {  // modified Gram-Schmidt against the previous modes
+                const double* q = modes.data() + p * n + first;
                 double dotq = 0.0;
-                for (size_t i = 0; i < n; ++i) dotq += v[i] * q[i];
-                for (size_t i = 0; i < n; ++i) v[i] -= dotq * q[i];
+                for (size_t i = 0; i < m; ++i) dotq += v[i] * q[i];
+                dotq = sum(dotq);
+                for (size_t i = 0; i < m; ++i) v[i] -= dotq * q[i];
             }
             double norm = 0.0;
-            for (size_t i = 0; i < n; ++i) norm += v[i] * v[i];
-            norm = std::sqrt(norm);
+            for (size_t i = 0; i < m; ++i) norm += v[i] * v[i];
+            norm = std::sqrt(sum(norm));
             if (!(norm > 0.0)) continue;
-            for (size_t i = 0; i < n; ++i) v[i] /= norm;
+            for (size_t i = 0; i < m; ++i) v[i] /= norm;
             Vec vec = nullptr;
-            checkPetsc(VecCreateSeq(PETSC_COMM_SELF, PetscInt(n), &vec), "VecCreateSeq");
+            checkPetsc(MatCreateVecs(target, &vec, nullptr), "MatCreateVecs");
             PetscScalar* a = nullptr;
             checkPetsc(VecGetArray(vec, &a), "VecGetArray");
-            std::copy(v, v + n, a);
+            std::copy(v, v + m, a);
             checkPetsc(VecRestoreArray(vec, &a), "VecRestoreArray");
             vecs.push_back(vec);
         }
         MatNullSpace space = nullptr;
-        const PetscErrorCode code =
-            MatNullSpaceCreate(PETSC_COMM_SELF, PETSC_FALSE, PetscInt(vecs.size()), vecs.data(), &space);
+        const PetscErrorCode code = MatNullSpaceCreate(comm_, PETSC_FALSE, PetscInt(vecs.size()), vecs.data(), &space);
         if (code == 0) MatSetNearNullSpace(target, space), MatNullSpaceDestroy(&space);
         for (Vec& v : vecs) VecDestroy(&v);
         checkPetsc(code, "MatNullSpaceCreate");
@@ -412,16 +426,51 @@ private:
 
     // KSPSolve on S A S y = S b, x = S y; returns PETSc's converged reason. lastResidual_ is the true
     // relative residual ||S b - S A S y|| / ||S b||, whatever norm the method iterated on.
+    // S b, or S T^T b in the piece basis (the share's rows when it is shared).
+    std::vector<double> scaledRightHandSide(const std::vector<double>& b) const {
+        const size_t first = firstUnknown();
+        std::vector<double> sb(piece_.copies > 0 ? size_t(localUnknowns_) : b.size());
+        if (shared_.active()) {
+            std::vector<double> mine;
+            for (int i : shared_.mine().equations) mine.push_back(b[size_t(i)]);
+            toPieces(piece_, shared_.mine(), mine.data(), sb.data());
+        } else if (piece_.copies > 0) toPieces(piece_, b.data(), sb.data());
+        else std::copy(b.begin(), b.end(), sb.begin());
+        for (size_t i = 0; i < sb.size(); ++i) sb[i] *= scale_[first + i];
+        return sb;
+    }
+
+    // x = S y, or T S y in the piece basis (the whole y gathered from the shares when it is shared).
+    void toSolution(std::vector<double>& y, std::span<double> x) const {
+        const size_t first = firstUnknown();
+        for (size_t i = 0; i < y.size(); ++i) y[i] *= scale_[first + i];
+        if (shared_.active()) {
+            std::vector<double> whole(scale_.size());
+            shared_.gather(piece_.blockSize, y.data(), whole.data());
+            toEquations(piece_, whole.data(), x.data());
+        } else if (piece_.copies > 0) {
+            toEquations(piece_, y.data(), x.data());
+        } else {
+            std::copy(y.begin(), y.end(), x.begin());
+        }
+    }
+
+    // Shared between processes, each holds its share of S b and y.
     int iterate(const std::vector<double>& b, std::span<double> x) {
         const auto t0 = std::chrono::steady_clock::now();
-        const size_t n = scale_.size();
-        std::vector<double> sb(n), y(n, 0.0), r(n);
-        if (piece_.copies > 0) toPieces(piece_, b.data(), sb.data());
-        else std::copy(b.begin(), b.end(), sb.begin());
-        for (size_t i = 0; i < n; ++i) sb[i] *= scale_[i];
+        std::vector<double> sb = scaledRightHandSide(b);
+        const size_t n = sb.size();
+        std::vector<double> y(n, 0.0), r(n);
         Vec vb = nullptr, vy = nullptr;
-        checkPetsc(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, PetscInt(n), sb.data(), &vb), "VecCreateSeqWithArray");
-        checkPetsc(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, PetscInt(n), y.data(), &vy), "VecCreateSeqWithArray");
+        if (shared_.active()) {
+            checkPetsc(VecCreateMPIWithArray(comm_, 1, PetscInt(n), piece_.size(), sb.data(), &vb),
+                       "VecCreateMPIWithArray");
+            checkPetsc(VecCreateMPIWithArray(comm_, 1, PetscInt(n), piece_.size(), y.data(), &vy),
+                       "VecCreateMPIWithArray");
+        } else {
+            checkPetsc(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, PetscInt(n), sb.data(), &vb), "VecCreateSeqWithArray");
+            checkPetsc(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, PetscInt(n), y.data(), &vy), "VecCreateSeqWithArray");
+        }
         const int appliedBefore = factors_.applications;
         const double applyBefore = factors_.seconds, applyCpuBefore = factors_.cpuSeconds;
         PetscErrorCode code = 0;
@@ -438,13 +487,13 @@ private:
         VecDestroy(&vb), VecDestroy(&vy);
         checkPetsc(code, "KSPSolve");
         operator_.apply(y.data(), r.data());
-        long double num = 0.0L, den = 0.0L;
-        for (size_t i = 0; i < n; ++i) num += (sb[i] - r[i]) * (sb[i] - r[i]), den += sb[i] * sb[i];
+        long double sums[2] = {0.0L, 0.0L};
+        for (size_t i = 0; i < n; ++i) sums[0] += (sb[i] - r[i]) * (sb[i] - r[i]), sums[1] += sb[i] * sb[i];
+        if (shared_.active()) mpi::sum(sums);
+        const long double num = sums[0], den = sums[1];
         lastIterations_ = int(iterations);
         lastResidual_ = double(den > 0.0L ? std::sqrt(num / den) : std::sqrt(num));
-        for (size_t i = 0; i < n; ++i) y[i] *= scale_[i];
-        if (piece_.copies > 0) toEquations(piece_, y.data(), x.data());
-        else std::copy(y.begin(), y.end(), x.begin());
+        toSolution(y, x);
         msg().infof(
             "    {} solve {:.3f} s: {} iterations, {}, relative residual of the scaled system {:.3e} (the method's "
             "own estimate {:.3e}; RESI_RELA={:g}){}",
@@ -506,8 +555,11 @@ private:
     CsrMatrix scaled_;  // S A S for PETSc's own preconditioners (empty with factors)
     std::vector<PetscInt> rowStart_;
     Mat matrix_ = nullptr;
-    Mat pmat_ = nullptr;  // the preconditioner's matrix when it is not matrix_ (piece basis)
-    PieceBasis piece_;    // copies == 0: PETSc iterates on the equations
+    Mat pmat_ = nullptr;     // the preconditioner's matrix when it is not matrix_ (piece basis)
+    PieceBasis piece_;       // copies == 0: PETSc iterates on the equations
+    SharedPieces shared_;    // the piece basis's shares on several processes (inactive: one process's)
+    int localUnknowns_ = 0;  // this process's unknowns of the piece basis
+    MPI_Comm comm_ = PETSC_COMM_SELF;
     KSP ksp_ = nullptr;
     FactorPreconditioner factors_;
     int nearNullModes_ = 0;

@@ -31,9 +31,11 @@ CsrMatrix transposed(const CsrMatrix& T, int columns) {
 namespace {
 
 // Row k of T^T A T into row (indexed by v unknown), its columns appended to touched (unsorted):
-// the sum over the equations i reading v_k of T_ik (row i of A) T.
+// the sum over the equations i reading v_k of T_ik (row i of A) T. A holds all the equations, or a
+// share's (localRow: equation -> its row in A).
 struct RowBuilder {
     const CsrMatrix& A;
+    std::vector<int> localRow;
     const CsrMatrix& T;
     const CsrMatrix Tt;
     std::vector<double> row;
@@ -43,7 +45,7 @@ struct RowBuilder {
     void build(int k) {
         touched.clear();
         for (long long a = Tt.rowStart[size_t(k)]; a < Tt.rowStart[size_t(k) + 1]; ++a) {
-            const int i = Tt.cols[size_t(a)];
+            const int i = localRow.empty() ? Tt.cols[size_t(a)] : localRow[size_t(Tt.cols[size_t(a)])];
             const double tik = Tt.values[size_t(a)];
             for (long long b = A.rowStart[size_t(i)]; b < A.rowStart[size_t(i) + 1]; ++b) {
                 const int j = A.cols[size_t(b)];
@@ -61,25 +63,42 @@ struct RowBuilder {
     }
 };
 
-}  // namespace
-
-CsrMatrix pieceBasisMatrix(const CsrMatrix& A, const PieceBasis& basis, double dropTolerance) {
+RowBuilder rowBuilder(const CsrMatrix& A, const PieceShare* share, const PieceBasis& basis) {
     const int n = basis.size();
-    RowBuilder rows{
-        A, basis.T, transposed(basis.T, n), std::vector<double>(size_t(n), 0.0), std::vector<char>(size_t(n), 0), {}};
-    // The diagonal first (the drop test compares with it), then the rows.
-    std::vector<double> diagonal(size_t(n), 1.0);
-    for (int k = 0; k < n; ++k) {
+    std::vector<int> localRow;
+    if (share) {
+        localRow.assign(size_t(basis.T.rows), -1);
+        for (size_t k = 0; k < share->equations.size(); ++k) localRow[size_t(share->equations[k])] = int(k);
+    }
+    return RowBuilder{A,
+                      std::move(localRow),
+                      basis.T,
+                      transposed(basis.T, n),
+                      std::vector<double>(size_t(n), 0.0),
+                      std::vector<char>(size_t(n), 0),
+                      {}};
+}
+
+// |diagonal| of T^T A T on the unknowns [begin, end) (1 where no equation reads one).
+std::vector<double> pieceDiagonalOf(RowBuilder& rows, int begin, int end) {
+    std::vector<double> diagonal(size_t(end - begin), 1.0);
+    for (int k = begin; k < end; ++k) {
         rows.build(k);
-        if (rows.seen[size_t(k)]) diagonal[size_t(k)] = std::abs(rows.row[size_t(k)]);
+        if (rows.seen[size_t(k)]) diagonal[size_t(k - begin)] = std::abs(rows.row[size_t(k)]);
         rows.clear();
     }
+    return diagonal;
+}
+
+// Rows [begin, end) of T^T A T, columns global, the drop test against the whole diagonal.
+CsrMatrix pieceRowsOf(RowBuilder& rows, const PieceBasis& basis, int begin, int end, std::span<const double> diagonal,
+                      double dropTolerance) {
     CsrMatrix B;
-    B.rows = n;
-    B.rowStart.reserve(size_t(n) + 1);
-    B.cols.reserve(A.cols.size());
-    B.values.reserve(A.cols.size());
-    for (int k = 0; k < n; ++k) {
+    B.rows = end - begin;
+    B.rowStart.reserve(size_t(B.rows) + 1);
+    B.cols.reserve(rows.A.cols.size());
+    B.values.reserve(rows.A.cols.size());
+    for (int k = begin; k < end; ++k) {
         rows.build(k);
         if (basis.padding[size_t(k)] && !rows.seen[size_t(k)]) {
             rows.seen[size_t(k)] = 1, rows.touched.push_back(k);
@@ -99,6 +118,26 @@ CsrMatrix pieceBasisMatrix(const CsrMatrix& A, const PieceBasis& basis, double d
     return B;
 }
 
+}  // namespace
+
+CsrMatrix pieceBasisMatrix(const CsrMatrix& A, const PieceBasis& basis, double dropTolerance) {
+    RowBuilder rows = rowBuilder(A, nullptr, basis);
+    const std::vector<double> diagonal = pieceDiagonalOf(rows, 0, basis.size());  // the drop test compares with it
+    return pieceRowsOf(rows, basis, 0, basis.size(), diagonal, dropTolerance);
+}
+
+std::vector<double> pieceBasisDiagonal(const CsrMatrix& shareRows, const PieceShare& share, const PieceBasis& basis) {
+    RowBuilder rows = rowBuilder(shareRows, &share, basis);
+    return pieceDiagonalOf(rows, share.copyBegin * basis.blockSize, share.copyEnd * basis.blockSize);
+}
+
+CsrMatrix pieceBasisRows(const CsrMatrix& shareRows, const PieceShare& share, const PieceBasis& basis,
+                         std::span<const double> diagonal, double dropTolerance) {
+    RowBuilder rows = rowBuilder(shareRows, &share, basis);
+    return pieceRowsOf(rows, basis, share.copyBegin * basis.blockSize, share.copyEnd * basis.blockSize, diagonal,
+                       dropTolerance);
+}
+
 void toEquations(const PieceBasis& basis, const double* v, double* u) {
     const CsrMatrix& T = basis.T;
     for (int i = 0; i < T.rows; ++i) {
@@ -115,6 +154,17 @@ void toPieces(const PieceBasis& basis, const double* r, double* w) {
     for (int i = 0; i < T.rows; ++i)
         for (long long k = T.rowStart[static_cast<size_t>(i)]; k < T.rowStart[static_cast<size_t>(i) + 1]; ++k)
             w[T.cols[static_cast<size_t>(k)]] += T.values[static_cast<size_t>(k)] * r[i];
+}
+
+void toPieces(const PieceBasis& basis, const PieceShare& share, const double* r, double* w) {
+    const CsrMatrix& T = basis.T;
+    const int first = basis.blockSize * share.copyBegin;
+    std::fill(w, w + share.unknowns(basis.blockSize), 0.0);
+    for (size_t e = 0; e < share.equations.size(); ++e) {
+        const size_t i = size_t(share.equations[e]);
+        for (long long k = T.rowStart[i]; k < T.rowStart[i + 1]; ++k)
+            w[T.cols[size_t(k)] - first] += T.values[size_t(k)] * r[e];
+    }
 }
 
 }  // namespace ma
