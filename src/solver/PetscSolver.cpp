@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@
 #include "solver/LinearSolverImpl.hpp"
 #include "solver/PiecesOnProcesses.hpp"
 #include "solver/ScaledOperator.hpp"
+#include "solver/SymmetricSmoother.hpp"
 
 namespace ma {
 
@@ -191,6 +193,7 @@ private:
             configurePreconditioner(pc, options_, pmat_ != nullptr);
         }
         setUpWithOptionPetsc(ksp_, options_, pmat_ != nullptr);
+        if (upper_) smoothFinestOn(pc, upper_);
         stale_ = false;
         msg().infof("    {}: preconditioner built in {:.3f} s, resident peak {:.0f} MB (from {:.0f} MB){}{}", name(),
                     secondsSince(t0), phase.peakMb(), phase.startMb(),
@@ -213,8 +216,10 @@ private:
             Mat a = nullptr, p = nullptr;
             MatInfo info;
             PetscInt m = 0;
+            // The finest level's own matrix is the PC's (its smoother may sweep on its upper triangle).
             if (PCMGGetSmoother(pc, l, &smoother) != 0 || KSPGetOperators(smoother, &a, &p) != 0 ||
-                MatGetInfo(p, MAT_LOCAL, &info) != 0 || MatGetSize(p, &m, nullptr) != 0)
+                (l == levels - 1 && PCGetOperators(pc, nullptr, &p) != 0) ||
+                MatGetInfo(p, MAT_GLOBAL_SUM, &info) != 0 || MatGetSize(p, &m, nullptr) != 0)
                 return {};
             total += info.nz_used;
             if (l == levels - 1) finest = info.nz_used;
@@ -249,11 +254,11 @@ private:
                                          (order & SOR_LOCAL_SYMMETRIC_SWEEP) == SOR_LOCAL_SYMMETRIC_SWEEP
                                      ? " symmetric"
                                      : "");
-        return fmt::format("; finest smoother {} {} step(s) of {}{} on the {} matrix", method ? method : "?", steps,
-                           kind ? kind : "?", sweeps,
-                           a == p ? "assembled"
-                           : type ? type
-                                  : "?");
+        const std::string matrix = a != p                               ? fmt::format("{} matrix", type ? type : "?")
+                                   : type && std::strstr(type, "sbaij") ? "assembled matrix's upper triangle (sbaij)"
+                                                                        : "assembled matrix";
+        return fmt::format("; finest smoother {} {} step(s) of {}{} on the {}", method ? method : "?", steps,
+                           kind ? kind : "?", sweeps, matrix);
     }
 
     // X-FEM models with GAMG, ML or BOOMER on a positive definite system: the piece basis
@@ -308,6 +313,7 @@ private:
         localUnknowns_ = scaled_.rows;
         createShell(scaled_.rows, int(n));
         createAssembled(pmat_);
+        if (options_.preconditioner == "ML") upper_ = upperTriangleOf(scaled_, firstUnknown(), piece_.size(), comm_);
         checkPetsc(MatSetOption(matrix_, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
         checkPetsc(MatSetOption(pmat_, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
         logPieceBasis(A.rows, equationsNonZeros, secondsSince(t0));
@@ -528,6 +534,7 @@ private:
     void destroyOperator() {
         if (matrix_) MatDestroy(&matrix_);
         if (pmat_) MatDestroy(&pmat_);
+        if (upper_) MatDestroy(&upper_);
     }
     void destroySolver() {
         if (ksp_) KSPDestroy(&ksp_);
@@ -556,6 +563,7 @@ private:
     std::vector<PetscInt> rowStart_;
     Mat matrix_ = nullptr;
     Mat pmat_ = nullptr;     // the preconditioner's matrix when it is not matrix_ (piece basis)
+    Mat upper_ = nullptr;    // ML's finest smoother's matrix: the upper triangle of pmat_ (SBAIJ)
     PieceBasis piece_;       // copies == 0: PETSc iterates on the equations
     SharedPieces shared_;    // the piece basis's shares on several processes (inactive: one process's)
     int localUnknowns_ = 0;  // this process's unknowns of the piece basis

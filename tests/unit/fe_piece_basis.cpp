@@ -193,8 +193,8 @@ Clamped clampedOnSides(const FreeModel& f) {
 
 // K + c diag(K) solved by MUMPS and by CG through the piece basis with each multigrid
 // preconditioner: the same answer to 1e-10, and the .mess says which basis, how many modes, and that
-// GAMG's and ML's smoothers multiply by the assembled matrix, not through the shell (ML also with
-// OPTION_PETSC='-pc_use_amat true', which asks for the shell).
+// GAMG's and ML's smoothers multiply by the assembled matrix, not through the shell (ML on its upper
+// triangle; with OPTION_PETSC='-pc_use_amat true', which asks for the shell, through the shell).
 TEST(PieceBasis, SolveThroughThePiecesIsTheDirectOne) {
     const FreeModel f = junctionModel(xfemtest::slab(6, CellType::HEXA8), 0.3, -0.4);
     const KnownSystem r = regularised(f);
@@ -213,7 +213,7 @@ TEST(PieceBasis, SolveThroughThePiecesIsTheDirectOne) {
         const std::string smoother =
             pc == "GAMG" ? "finest smoother chebyshev 2 step(s) of jacobi on the assembled matrix"
                          : std::string("finest smoother chebyshev 2 step(s) of sor (1 symmetric sweep(s)) on the ") +
-                               (given.empty() ? "assembled matrix" : "shell matrix");
+                               (given.empty() ? "assembled matrix's upper triangle (sbaij)" : "shell matrix");
         EXPECT_NE(mess.find(smoother), std::string::npos) << mess;
     }
 }
