@@ -193,7 +193,7 @@ private:
             configurePreconditioner(pc, options_, pmat_ != nullptr);
         }
         setUpWithOptionPetsc(ksp_, options_, pmat_ != nullptr);
-        if (upper_) smoothFinestOn(pc, upper_);
+        if (upper_) smoothOnUpperTriangles(pc, upper_);
         stale_ = false;
         msg().infof("    {}: preconditioner built in {:.3f} s, resident peak {:.0f} MB (from {:.0f} MB){}{}", name(),
                     secondsSince(t0), phase.peakMb(), phase.startMb(),

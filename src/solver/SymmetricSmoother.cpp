@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "solver/KrylovSettings.hpp"
+#include "solver/SparseMatrix.hpp"
 
 namespace ma {
 
@@ -27,20 +28,61 @@ Mat upperTriangleOf(const CsrMatrix& B, size_t first, PetscInt size, MPI_Comm co
     return upper;
 }
 
-bool smoothFinestOn(PC pc, Mat upper) {
-    PetscInt levels = 0;
+namespace {
+
+// The smoother of level l when it sweeps by SOR on its level's assembled matrix; null otherwise.
+KSP sorSmootherOf(PC pc, PetscInt level, Mat& matrix) {
     KSP smoother = nullptr;
     PC inner = nullptr;
     Mat a = nullptr, p = nullptr;
     PetscBool sor = PETSC_FALSE;
-    if (PCMGGetLevels(pc, &levels) != 0 || levels < 2 || PCMGGetSmoother(pc, levels - 1, &smoother) != 0 ||
-        KSPGetOperators(smoother, &a, &p) != 0 || KSPGetPC(smoother, &inner) != 0)
-        return false;
+    if (PCMGGetSmoother(pc, level, &smoother) != 0 || KSPGetOperators(smoother, &a, &p) != 0 ||
+        KSPGetPC(smoother, &inner) != 0)
+        return nullptr;
     PetscObjectTypeCompare(reinterpret_cast<PetscObject>(inner), PCSOR, &sor);
-    if (!sor || a != p) return false;
-    checkPetsc(KSPSetOperators(smoother, upper, upper), "KSPSetOperators");
-    checkPetsc(KSPSetUp(smoother), "KSPSetUp (the finest smoother on the upper triangle)");
-    return true;
+    matrix = p;
+    return sor && a == p ? smoother : nullptr;
+}
+
+// The upper triangle of a level's matrix (this process's rows), read row by row.
+Mat upperTriangleOfLevel(Mat level) {
+    PetscInt first = 0, end = 0, size = 0;
+    checkPetsc(MatGetOwnershipRange(level, &first, &end), "MatGetOwnershipRange");
+    checkPetsc(MatGetSize(level, &size, nullptr), "MatGetSize");
+    CsrMatrix rows;
+    rows.rows = int(end - first);
+    for (PetscInt i = first; i < end; ++i) {
+        PetscInt count = 0;
+        const PetscInt* cols = nullptr;
+        const PetscScalar* values = nullptr;
+        checkPetsc(MatGetRow(level, i, &count, &cols, &values), "MatGetRow");
+        for (PetscInt k = 0; k < count; ++k)
+            if (cols[k] >= i) rows.cols.push_back(int(cols[k])), rows.values.push_back(values[k]);
+        checkPetsc(MatRestoreRow(level, i, &count, &cols, &values), "MatRestoreRow");
+        rows.rowStart.push_back(static_cast<long long>(rows.cols.size()));
+    }
+    MPI_Comm comm = MPI_COMM_NULL;
+    checkPetsc(PetscObjectGetComm(reinterpret_cast<PetscObject>(level), &comm), "PetscObjectGetComm");
+    return upperTriangleOf(rows, size_t(first), size, comm);
+}
+
+}  // namespace
+
+int smoothOnUpperTriangles(PC pc, Mat finestUpper) {
+    PetscInt levels = 0;
+    if (PCMGGetLevels(pc, &levels) != 0) return 0;
+    int changed = 0;
+    for (PetscInt l = 1; l < levels; ++l) {
+        Mat matrix = nullptr;
+        KSP smoother = sorSmootherOf(pc, l, matrix);
+        if (!smoother) continue;
+        Mat upper = l == levels - 1 ? finestUpper : upperTriangleOfLevel(matrix);
+        checkPetsc(KSPSetOperators(smoother, upper, upper), "KSPSetOperators");
+        if (upper != finestUpper) MatDestroy(&upper);  // the smoother holds it
+        checkPetsc(KSPSetUp(smoother), "KSPSetUp (a smoother on its matrix's upper triangle)");
+        ++changed;
+    }
+    return changed;
 }
 
 }  // namespace ma

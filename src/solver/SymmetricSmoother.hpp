@@ -1,5 +1,5 @@
 #pragma once
-// ML's finest smoother in the piece basis on the upper triangle of its matrix (PETSc's SBAIJ, block
+// ML's smoothers in the piece basis on the upper triangle of their matrices (PETSc's SBAIJ, block
 // size 1; docs/solver.md, "The finest smoother on the upper triangle"). The smoother's SOR sweeps and
 // Chebyshev products are bound by the memory they read: the symmetric storage reads half the
 // entries, for the same sweeps and products.
@@ -13,9 +13,10 @@ namespace ma {
 // (global columns, the first of them row `first`), `size` is the whole matrix's.
 Mat upperTriangleOf(const CsrMatrix& B, size_t first, PetscInt size, MPI_Comm comm);
 
-// When the finest smoother of the multigrid preconditioner `pc` sweeps by SOR on the assembled
-// matrix (not on the Krylov operator, nor by another method OPTION_PETSC asked for), it sweeps and
-// multiplies on `upper` instead. Returns whether it does.
-bool smoothFinestOn(PC pc, Mat upper);
+// Every multigrid level's smoother of `pc` that sweeps by SOR on its level's assembled matrix (not
+// on the Krylov operator, nor by another method OPTION_PETSC asked for) sweeps and multiplies on that
+// matrix's upper triangle instead: `finestUpper` on the finest level, a copy of the level's matrix
+// elsewhere (the coarsest level is solved, not smoothed). Returns how many levels changed.
+int smoothOnUpperTriangles(PC pc, Mat finestUpper);
 
 }  // namespace ma
