@@ -32,6 +32,8 @@
 #   GF_OPENBLAS      folder put first on GetFEM's LD_LIBRARY_PATH when GF_BLAS=openblas
 #   SIDEBYSIDE3D_DIR cache and work root (default: ssnv511c_sidebyside in the temp dir)
 #   MESHER           mesh generator (default: $MAIN/build/tools/ssnv511_mesh, built if missing)
+#   MINI_NP          MPI processes of miniaster (export 'P mpi_nbcpu', default 1); above 1 its peak
+#                    memory is the sum of its processes' peaks (tree_rss.py), not GNU time's largest one
 #   TIME_LIMIT       export 'P time_limit' in s (default 3600)
 #   MEMORY_LIMIT     export 'P memory_limit' in MB (default: the machine's memory)
 #   NCPUS            export 'P ncpus' (default: nproc)
@@ -155,7 +157,7 @@ if [ "$run_mini" = yes ]; then
         printf 'P time_limit %s\n' "${TIME_LIMIT:-3600}"
         printf 'P memory_limit %s\n' "$mem"
         printf 'P ncpus %s\n' "${NCPUS:-$(nproc)}"
-        printf 'P mpi_nbcpu 1\n\n'
+        printf 'P mpi_nbcpu %s\n\n' "${MINI_NP:-1}"
         printf 'F comm %s D 1\n' "$name.comm"
         printf 'F mmed %s D 20\n' "$(basename "$mesh")"
     } > "$run/$name.export"
@@ -169,6 +171,7 @@ fi
     echo "miniaster=$run_mini"
     echo "miniaster_reason=$mini_reason"
     echo "miniaster_solveur=${MINI_SOLVEUR:-METHODE='MUMPS' (default)}"
+    echo "miniaster_processes=${MINI_NP:-1}"
     echo "getfem=$run_gf"
     echo "getfem_reason=$gf_reason"
     echo "getfem_solver=$gf_solver"
@@ -184,7 +187,9 @@ for i in $(seq "$reps"); do
     if [ "$run_mini" = yes ]; then
         echo "$prog: [$i/$reps] miniaster run $name.export (N=$n)" >&2
         mkdir -p "$run/mini_$i"
-        (cd "$run" && "$timer" -v -o "$run/mini_$i.time" \
+        tree=()
+        [ "${MINI_NP:-1}" -gt 1 ] && tree=("$py" "$here/tree_rss.py" "$run/mini_$i.rss" --)
+        (cd "$run" && "$timer" -v -o "$run/mini_$i.time" "${tree[@]}" \
             "$MAIN/build/miniaster" run "$run/$name.export" --out-dir "$run/mini_$i" \
             > "$run/mini_$i.stdout" 2>&1)
         st=$?

@@ -108,6 +108,9 @@ def miniaster_row(run, reps):
     walls, rsss, per, facts, l2 = [], [], [], {}, None
     for i in range(1, reps + 1):
         w, r, st = parse_time_v(run / f"mini_{i}.time")
+        summed = run / f"mini_{i}.rss"  # several MPI processes: the sum of their peaks (tree_rss.py)
+        if summed.exists():
+            r = float(summed.read_text().split()[0])
         out = run / f"mini_{i}"
         err = None
         for resu in sorted(out.glob("*.resu")):
