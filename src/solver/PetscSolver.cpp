@@ -116,7 +116,7 @@ public:
         kind_ = kind;
         rowPoints_.assign(rowPoints.begin(), rowPoints.end());
         destroyOperator();
-        choosePieceBasis(kind);
+        choosePieceBasis(kind, A);
         if (piece_.copies > 0) {
             factorizeInPieces(A);
         } else {
@@ -216,13 +216,15 @@ private:
             Mat a = nullptr, p = nullptr;
             MatInfo info;
             PetscInt m = 0;
-            // The finest level's own matrix is the PC's (its smoother may sweep on its upper triangle).
+            PetscBool upper = PETSC_FALSE;
             if (PCMGGetSmoother(pc, l, &smoother) != 0 || KSPGetOperators(smoother, &a, &p) != 0 ||
-                (l == levels - 1 && PCGetOperators(pc, nullptr, &p) != 0) ||
                 MatGetInfo(p, MAT_GLOBAL_SUM, &info) != 0 || MatGetSize(p, &m, nullptr) != 0)
                 return {};
-            total += info.nz_used;
-            if (l == levels - 1) finest = info.nz_used;
+            // A smoother on its matrix's upper triangle (SymmetricSmoother.hpp): the matrix has both.
+            PetscObjectTypeCompareAny(reinterpret_cast<PetscObject>(p), &upper, MATSEQSBAIJ, MATMPISBAIJ, "");
+            const double nonZeros = upper ? 2.0 * info.nz_used - double(m) : info.nz_used;
+            total += nonZeros;
+            if (l == levels - 1) finest = nonZeros;
             rows += fmt::format("{}{}", rows.empty() ? "" : " / ", m);
         }
         return fmt::format("; {} levels (rows {}), operator complexity {:.2f}{}", levels, rows,
@@ -264,7 +266,7 @@ private:
     // X-FEM models with GAMG, ML or BOOMER on a positive definite system: the piece basis
     // (SolverOptions::pieceBasis), shared between the processes when distributed, or the reason it
     // is not used.
-    void choosePieceBasis(MatrixKind kind) {
+    void choosePieceBasis(MatrixKind kind, const CsrMatrix& A) {
         piece_ = PieceBasis{}, shared_ = SharedPieces{}, comm_ = PETSC_COMM_SELF;
         const std::string& p = options_.preconditioner;
         if (!options_.pieceBasis || kind != MatrixKind::SymmetricPositiveDefinite ||
@@ -272,7 +274,9 @@ private:
             return;
         piece_ = options_.pieceBasis();
         if (piece_.copies > 0 && options_.distributed) {
-            std::vector<PieceShare> shares = shareByCoordinates(piece_, mpi::size());
+            std::vector<int> ownerOfCopy = bisectCopies(piece_, mpi::size());
+            if (!ownerOfCopy.empty()) matchSharesToParts(ownerOfCopy, piece_, A);
+            std::vector<PieceShare> shares = shareCopies(piece_, ownerOfCopy, mpi::size());
             if (shares.empty()) piece_ = PieceBasis{}, piece_.refusal = "fewer nodes than processes";
             else shared_ = SharedPieces{std::move(shares), mpi::rank()}, comm_ = PETSC_COMM_WORLD;
         }
@@ -353,8 +357,9 @@ private:
             "equations' {}), block size {}{}, built in {:.3f} s",
             name(), piece_.blocks, piece_.copies, piece_.size(), padding, equations, static_cast<long long>(nonZeros),
             static_cast<long long>(equationsNonZeros), piece_.blockSize,
-            shared_.active() ? fmt::format(", shared by {} processes by ranges of copies", shared_.shares.size())
-                             : std::string(),
+            shared_.active()
+                ? fmt::format(", shared by {} processes (coordinate bisection of the nodes)", shared_.shares.size())
+                : std::string(),
             seconds);
     }
 

@@ -106,7 +106,7 @@ void renumberCopies(PieceBasis& basis, const std::vector<int>& ownerOfCopy) {
 
 }  // namespace
 
-std::vector<PieceShare> shareByCoordinates(PieceBasis& basis, int processes) {
+std::vector<int> bisectCopies(const PieceBasis& basis, int processes) {
     int groups = 0;
     const std::vector<int> group = groupsOfCopies(basis, groups);
     if (groups < processes || basis.coordinates.size() != size_t(basis.size())) return {};
@@ -122,6 +122,11 @@ std::vector<PieceShare> shareByCoordinates(PieceBasis& basis, int processes) {
     CoordinateBisection{point, weight, dim, owner}.split(order, 0, order.size(), 0, processes);
     std::vector<int> ownerOfCopy(static_cast<size_t>(basis.copies));
     for (int c = 0; c < basis.copies; ++c) ownerOfCopy[size_t(c)] = owner[size_t(group[size_t(c)])];
+    return ownerOfCopy;
+}
+
+std::vector<PieceShare> shareCopies(PieceBasis& basis, const std::vector<int>& ownerOfCopy, int processes) {
+    if (ownerOfCopy.size() != size_t(basis.copies)) return {};
     std::vector<PieceShare> shares(static_cast<size_t>(processes));
     for (int c = 0; c < basis.copies; ++c) shares[size_t(ownerOfCopy[size_t(c)])].copyEnd += 1;
     for (int p = 0, next = 0; p < processes; ++p) {
@@ -132,9 +137,14 @@ std::vector<PieceShare> shareByCoordinates(PieceBasis& basis, int processes) {
     const CsrMatrix& T = basis.T;
     for (int i = 0; i < T.rows; ++i)
         if (T.rowStart[size_t(i) + 1] > T.rowStart[size_t(i)])
-            shares[size_t(ownerOfCopy[size_t(T.cols[size_t(T.rowStart[size_t(i)])] / dim)])].equations.push_back(i);
+            shares[size_t(ownerOfCopy[size_t(T.cols[size_t(T.rowStart[size_t(i)])] / basis.blockSize)])]
+                .equations.push_back(i);
     renumberCopies(basis, ownerOfCopy);
     return shares;
+}
+
+std::vector<PieceShare> shareByCoordinates(PieceBasis& basis, int processes) {
+    return shareCopies(basis, bisectCopies(basis, processes), processes);
 }
 
 }  // namespace ma

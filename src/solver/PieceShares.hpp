@@ -7,11 +7,17 @@
 
 namespace ma {
 
-// Shares for `processes` processes by recursive coordinate bisection of the nodes (the groups of
-// copies and equations that read one another), each cut across the longest extent of its part, so
-// that a plate or a slab is never cut through its thickness, where the couplings are strongest.
-// The copies are renumbered share after share (T, padding, modes and coordinates follow). Empty
-// (the basis unchanged) when there are fewer nodes than processes.
+// The share of each copy for `processes` processes, by recursive coordinate bisection of the nodes
+// (the groups of copies and equations that read one another), each cut across the longest extent of
+// its part, so that a plate or a slab is never cut through its thickness, where the couplings are
+// strongest. Empty when there are fewer nodes than processes.
+std::vector<int> bisectCopies(const PieceBasis& basis, int processes);
+
+// The shares of ownerOfCopy (share of each copy); the copies are renumbered share after share (T,
+// padding, modes and coordinates follow). Empty (the basis unchanged) when a share would be empty.
+std::vector<PieceShare> shareCopies(PieceBasis& basis, const std::vector<int>& ownerOfCopy, int processes);
+
+// shareCopies of bisectCopies.
 std::vector<PieceShare> shareByCoordinates(PieceBasis& basis, int processes);
 
 }  // namespace ma

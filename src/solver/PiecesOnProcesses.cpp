@@ -98,6 +98,32 @@ void addRow(std::vector<std::pair<int, double>>& into, const int* cols, const do
 
 }  // namespace
 
+void matchSharesToParts(std::vector<int>& ownerOfCopy, const PieceBasis& basis, const CsrMatrix& part) {
+    const int processes = mpi::size(), rank = mpi::rank();
+    // overlap[p * P + q]: entries of process p's part in the rows of share q.
+    std::vector<double> overlap(size_t(processes * processes), 0.0);
+    const CsrMatrix& T = basis.T;
+    for (int i = 0; i < part.rows && i < T.rows; ++i) {
+        if (T.rowStart[size_t(i) + 1] == T.rowStart[size_t(i)]) continue;
+        const int share = ownerOfCopy[size_t(T.cols[size_t(T.rowStart[size_t(i)])] / basis.blockSize)];
+        overlap[size_t(rank * processes + share)] += double(part.rowStart[size_t(i) + 1] - part.rowStart[size_t(i)]);
+    }
+    mpi::sum(overlap);
+    // Greedily, the largest overlap left first.
+    std::vector<int> processOf(size_t(processes), -1);
+    std::vector<char> taken(size_t(processes), 0);
+    for (int round = 0; round < processes; ++round) {
+        int bestP = -1, bestQ = -1;
+        for (int p = 0; p < processes; ++p)
+            for (int q = 0; q < processes; ++q)
+                if (!taken[size_t(p)] && processOf[size_t(q)] < 0 &&
+                    (bestP < 0 || overlap[size_t(p * processes + q)] > overlap[size_t(bestP * processes + bestQ)]))
+                    bestP = p, bestQ = q;
+        taken[size_t(bestP)] = 1, processOf[size_t(bestQ)] = bestP;
+    }
+    for (int& owner : ownerOfCopy) owner = processOf[size_t(owner)];
+}
+
 CsrMatrix summedShareRows(const SharedPieces& shared, const CsrMatrix& part) {
     // Each process sends its part's rows of the others' equations to their owners, which add them
     // to their own part's rows.
@@ -128,12 +154,17 @@ CsrMatrix summedShareRows(const SharedPieces& shared, const CsrMatrix& part) {
     std::vector<std::pair<int, double>> row, merged;
     for (size_t k = 0; k < mine.size(); ++k) {
         const size_t i = size_t(mine[k]);
-        row.clear();
-        for (long long e = part.rowStart[i]; e < part.rowStart[i + 1]; ++e)
-            row.emplace_back(part.cols[size_t(e)], part.values[size_t(e)]);
-        for (const auto& [offset, length] : received[k])
-            addRow(row, cols.data() + offset, values.data() + offset, length, merged);
-        for (const auto& [c, v] : row) rows.cols.push_back(c), rows.values.push_back(v);
+        const long long begin = part.rowStart[i], end = part.rowStart[i + 1];
+        if (received[k].empty()) {  // most rows: this process's cells only
+            rows.cols.insert(rows.cols.end(), part.cols.begin() + begin, part.cols.begin() + end);
+            rows.values.insert(rows.values.end(), part.values.begin() + begin, part.values.begin() + end);
+        } else {
+            row.clear();
+            for (long long e = begin; e < end; ++e) row.emplace_back(part.cols[size_t(e)], part.values[size_t(e)]);
+            for (const auto& [offset, length] : received[k])
+                addRow(row, cols.data() + offset, values.data() + offset, length, merged);
+            for (const auto& [c, v] : row) rows.cols.push_back(c), rows.values.push_back(v);
+        }
         rows.rowStart.push_back(static_cast<long long>(rows.cols.size()));
     }
     return rows;

@@ -23,6 +23,11 @@ struct SharedPieces {
     void sumMine(const std::vector<double>& equations, std::vector<double>& mine) const;
 };
 
+// Relabels the shares of ownerOfCopy (bisectCopies) so that each process gets the share whose
+// equations hold the most entries of its own part of K: the fewest rows then travel to another
+// process in summedShareRows (a collective call).
+void matchSharesToParts(std::vector<int>& ownerOfCopy, const PieceBasis& basis, const CsrMatrix& part);
+
 // The rows of this process's share's equations of A summed over the processes (in its equations'
 // order, global columns; a collective call): part is this process's part of A (its own cells).
 CsrMatrix summedShareRows(const SharedPieces& shared, const CsrMatrix& part);
