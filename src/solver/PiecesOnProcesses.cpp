@@ -69,8 +69,13 @@ std::vector<T> exchange(const std::vector<RowParcel>& parcels, std::vector<T> Ro
     }
     receivedCounts.assign(P, 0);
     MPI_Alltoall(sendCounts.data(), 1, MPI_INT, receivedCounts.data(), 1, MPI_INT, MPI_COMM_WORLD);
-    int total = 0;
-    for (size_t p = 0; p < P; ++p) receiveOffsets[p] = total, total += receivedCounts[p];
+    long long total = 0;
+    for (size_t p = 0; p < P; ++p) receiveOffsets[p] = int(total), total += receivedCounts[p];
+    // MPI's counts and offsets are int: beyond, every process stops with the same error.
+    mpi::collectively([&] {
+        if (send.size() > size_t(INT_MAX) || total > INT_MAX)
+            throw NumericalError("PETSc: the matrix rows one process sends or receives exceed MPI's int counts");
+    });
     std::vector<T> received(static_cast<size_t>(total));
     MPI_Alltoallv(send.data(), sendCounts.data(), sendOffsets.data(), type, received.data(), receivedCounts.data(),
                   receiveOffsets.data(), type, MPI_COMM_WORLD);
