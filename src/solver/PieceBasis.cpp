@@ -79,13 +79,25 @@ RowBuilder rowBuilder(const CsrMatrix& A, const PieceShare* share, const PieceBa
                       {}};
 }
 
-// |diagonal| of T^T A T on the unknowns [begin, end) (1 where no equation reads one).
-std::vector<double> pieceDiagonalOf(RowBuilder& rows, int begin, int end) {
+// |diagonal| of T^T A T on the unknowns [begin, end) (1 where no equation reads one): entry k is
+// the sum of T_ik A_ij T_jk over the few equations i, j that read v_k (T is node-local), so only
+// their couplings with each other are looked up, not whole rows.
+std::vector<double> pieceDiagonalOf(const RowBuilder& rows, int begin, int end) {
+    const CsrMatrix& Tt = rows.Tt;
     std::vector<double> diagonal(size_t(end - begin), 1.0);
     for (int k = begin; k < end; ++k) {
-        rows.build(k);
-        if (rows.seen[size_t(k)]) diagonal[size_t(k - begin)] = std::abs(rows.row[size_t(k)]);
-        rows.clear();
+        const long long first = Tt.rowStart[size_t(k)], last = Tt.rowStart[size_t(k) + 1];
+        if (first == last) continue;
+        double d = 0.0;
+        for (long long a = first; a < last; ++a) {
+            const int i = Tt.cols[size_t(a)];
+            const int row = rows.localRow.empty() ? i : rows.localRow[size_t(i)];
+            for (long long b = first; b < last; ++b) {
+                const long long at = rows.A.find(row, Tt.cols[size_t(b)]);
+                if (at >= 0) d += Tt.values[size_t(a)] * rows.A.values[size_t(at)] * Tt.values[size_t(b)];
+            }
+        }
+        diagonal[size_t(k - begin)] = std::abs(d);
     }
     return diagonal;
 }
