@@ -134,11 +134,9 @@ std::vector<PieceShare> shareCopies(PieceBasis& basis, const std::vector<int>& o
         next += shares[size_t(p)].copyEnd, shares[size_t(p)].copyEnd = next;
         if (shares[size_t(p)].copyEnd == shares[size_t(p)].copyBegin) return {};
     }
-    const CsrMatrix& T = basis.T;
-    for (int i = 0; i < T.rows; ++i)
-        if (T.rowStart[size_t(i) + 1] > T.rowStart[size_t(i)])
-            shares[size_t(ownerOfCopy[size_t(T.cols[size_t(T.rowStart[size_t(i)])] / basis.blockSize)])]
-                .equations.push_back(i);
+    for (int i = 0; i < basis.T.rows; ++i)
+        if (const int share = shareOfEquation(basis, ownerOfCopy, i); share >= 0)
+            shares[size_t(share)].equations.push_back(i);
     renumberCopies(basis, ownerOfCopy);
     return shares;
 }

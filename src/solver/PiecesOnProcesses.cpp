@@ -107,10 +107,9 @@ void matchSharesToParts(std::vector<int>& ownerOfCopy, const PieceBasis& basis, 
     const int processes = mpi::size(), rank = mpi::rank();
     // overlap[p * P + q]: entries of process p's part in the rows of share q.
     std::vector<double> overlap(size_t(processes * processes), 0.0);
-    const CsrMatrix& T = basis.T;
-    for (int i = 0; i < part.rows && i < T.rows; ++i) {
-        if (T.rowStart[size_t(i) + 1] == T.rowStart[size_t(i)]) continue;
-        const int share = ownerOfCopy[size_t(T.cols[size_t(T.rowStart[size_t(i)])] / basis.blockSize)];
+    for (int i = 0; i < part.rows && i < basis.T.rows; ++i) {
+        const int share = shareOfEquation(basis, ownerOfCopy, i);
+        if (share < 0) continue;
         overlap[size_t(rank * processes + share)] += double(part.rowStart[size_t(i) + 1] - part.rowStart[size_t(i)]);
     }
     mpi::sum(overlap);

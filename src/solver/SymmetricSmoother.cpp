@@ -7,25 +7,48 @@
 
 namespace ma {
 
-Mat upperTriangleOf(const CsrMatrix& B, size_t first, PetscInt size, MPI_Comm comm) {
+namespace {
+
+// This process's rows of an upper triangle in PETSc's CSR arrays (global columns).
+struct UpperRows {
     std::vector<PetscInt> rowStart{0}, cols;
     std::vector<PetscScalar> values;
+
+    void reserve(size_t rows, size_t entries) {
+        rowStart.reserve(rows + 1), cols.reserve(entries), values.reserve(entries);
+    }
+    void endRow() { rowStart.push_back(PetscInt(cols.size())); }
+    PetscInt rows() const { return PetscInt(rowStart.size()) - 1; }
+};
+
+Mat sbaijOf(const UpperRows& upper, PetscInt size, MPI_Comm comm) {
+    Mat matrix = nullptr;
+    checkPetsc(MatCreate(comm, &matrix), "MatCreate");
+    checkPetsc(MatSetSizes(matrix, upper.rows(), upper.rows(), size, size), "MatSetSizes");
+    checkPetsc(MatSetType(matrix, MATSBAIJ), "MatSetType");
+    // Only the call of the matrix's own type (sequential or parallel) acts.
+    checkPetsc(MatSeqSBAIJSetPreallocationCSR(matrix, 1, upper.rowStart.data(), upper.cols.data(), upper.values.data()),
+               "MatSeqSBAIJSetPreallocationCSR");
+    checkPetsc(MatMPISBAIJSetPreallocationCSR(matrix, 1, upper.rowStart.data(), upper.cols.data(), upper.values.data()),
+               "MatMPISBAIJSetPreallocationCSR");
+    return matrix;
+}
+
+}  // namespace
+
+Mat upperTriangleOf(const CsrMatrix& B, size_t first, PetscInt size, MPI_Comm comm) {
+    UpperRows upper;
+    size_t entries = 0;
+    for (size_t k = 0; k < size_t(B.rows); ++k)
+        for (long long a = B.rowStart[k]; a < B.rowStart[k + 1]; ++a) entries += size_t(B.cols[size_t(a)]) >= first + k;
+    upper.reserve(size_t(B.rows), entries);
     for (size_t k = 0; k < size_t(B.rows); ++k) {
         for (long long a = B.rowStart[k]; a < B.rowStart[k + 1]; ++a)
             if (size_t(B.cols[size_t(a)]) >= first + k)
-                cols.push_back(B.cols[size_t(a)]), values.push_back(B.values[size_t(a)]);
-        rowStart.push_back(PetscInt(cols.size()));
+                upper.cols.push_back(B.cols[size_t(a)]), upper.values.push_back(B.values[size_t(a)]);
+        upper.endRow();
     }
-    Mat upper = nullptr;
-    checkPetsc(MatCreate(comm, &upper), "MatCreate");
-    checkPetsc(MatSetSizes(upper, B.rows, B.rows, size, size), "MatSetSizes");
-    checkPetsc(MatSetType(upper, MATSBAIJ), "MatSetType");
-    // Only the call of the matrix's own type (sequential or parallel) acts.
-    checkPetsc(MatSeqSBAIJSetPreallocationCSR(upper, 1, rowStart.data(), cols.data(), values.data()),
-               "MatSeqSBAIJSetPreallocationCSR");
-    checkPetsc(MatMPISBAIJSetPreallocationCSR(upper, 1, rowStart.data(), cols.data(), values.data()),
-               "MatMPISBAIJSetPreallocationCSR");
-    return upper;
+    return sbaijOf(upper, size, comm);
 }
 
 namespace {
@@ -49,21 +72,23 @@ Mat upperTriangleOfLevel(Mat level) {
     PetscInt first = 0, end = 0, size = 0;
     checkPetsc(MatGetOwnershipRange(level, &first, &end), "MatGetOwnershipRange");
     checkPetsc(MatGetSize(level, &size, nullptr), "MatGetSize");
-    CsrMatrix rows;
-    rows.rows = int(end - first);
+    MatInfo info;
+    checkPetsc(MatGetInfo(level, MAT_LOCAL, &info), "MatGetInfo");
+    UpperRows upper;
+    upper.reserve(size_t(end - first), size_t(info.nz_used) / 2 + size_t(end - first));
     for (PetscInt i = first; i < end; ++i) {
         PetscInt count = 0;
         const PetscInt* cols = nullptr;
         const PetscScalar* values = nullptr;
         checkPetsc(MatGetRow(level, i, &count, &cols, &values), "MatGetRow");
         for (PetscInt k = 0; k < count; ++k)
-            if (cols[k] >= i) rows.cols.push_back(int(cols[k])), rows.values.push_back(values[k]);
+            if (cols[k] >= i) upper.cols.push_back(cols[k]), upper.values.push_back(values[k]);
         checkPetsc(MatRestoreRow(level, i, &count, &cols, &values), "MatRestoreRow");
-        rows.rowStart.push_back(static_cast<long long>(rows.cols.size()));
+        upper.endRow();
     }
     MPI_Comm comm = MPI_COMM_NULL;
     checkPetsc(PetscObjectGetComm(reinterpret_cast<PetscObject>(level), &comm), "PetscObjectGetComm");
-    return upperTriangleOf(rows, size_t(first), size, comm);
+    return sbaijOf(upper, size, comm);
 }
 
 }  // namespace
