@@ -31,6 +31,8 @@ struct ElementContext {
 //   Entry classical(const Ref&, const Geometry&, const ElementContext&, Part&)   fixed sizes
 //   Entry general(const ElementIntegration&, const PointGeometry&, const ElementContext&, Part&)
 //   void scatter(const Part&, const Entry&, int worker, int workers)   adds the owned entries
+// and optionally
+//   bool skips(int cell) const        true: the element adds nothing (decided before its geometry)
 template <class Kernel>
 class ElementAssembler {
 public:
@@ -64,12 +66,12 @@ private:
         Slot& slot = slots_[e % kElementBatch];
         slot.part = t;
         typename Kernel::Part& part = parts_[t];
-        if (!space_.owns(e)) {
+        const ModelElement& element = space_.model().elements[e];
+        if (!space_.owns(e) || skips(element.cell)) {
             slot.entry = kernel_.none(part);
             return;
         }
         ElementScratch& w = scratch_[t];
-        const ModelElement& element = space_.model().elements[e];
         const ElementContext context{space_.mesh(), space_.numbering(), element.cell,
                                      space_.dim(),  w.laws.of(element), w};
         space_.visit(
@@ -78,6 +80,11 @@ private:
             [&](const ElementIntegration& ei, const PointGeometry& geo) {
                 slot.entry = kernel_.general(ei, geo, context, part);
             });
+    }
+
+    bool skips(int cell) const {
+        if constexpr (requires { kernel_.skips(cell); }) return kernel_.skips(cell);
+        return false;
     }
 
     void scatter(size_t count, int t) {

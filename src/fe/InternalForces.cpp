@@ -12,8 +12,19 @@ namespace {
 // the worker owns.
 class InternalForceKernel {
 public:
-    InternalForceKernel(const std::vector<double>& u, std::vector<double>& f, const std::vector<char>* cells)
-        : u_(u), f_(f), cells_(cells) {}
+    InternalForceKernel(const Discretisation& space, const std::vector<double>& u, std::vector<double>& f,
+                        const std::vector<char>* cells)
+        : mesh_(space.mesh()), numbering_(space.numbering()), u_(u), f_(f), cells_(cells) {}
+
+    // The forces are linear in the element's unknowns, which are those of its nodes: when these are
+    // all zero (the first residual of a solve sets only the imposed values) the element adds exactly
+    // nothing, and its geometry is not computed.
+    bool skips(int cell) const {
+        for (int node : mesh_.cellNodes(cell))
+            for (int d = numbering_.first(node); d < numbering_.first(node + 1); ++d)
+                if (u_[size_t(d)] != 0.0) return false;
+        return true;
+    }
 
     struct Part {  // one worker's element vectors of the current batch
         std::vector<int> dofs;
@@ -62,6 +73,8 @@ private:
         return entry;
     }
 
+    const Mesh& mesh_;
+    const DofNumbering& numbering_;
     const std::vector<double>& u_;
     std::vector<double>& f_;
     const std::vector<char>* cells_;
@@ -72,7 +85,7 @@ private:
 void assembleInternalForces(const Discretisation& space, const std::vector<double>& u, std::vector<double>& f,
                             const std::vector<char>* cells) {
     f.assign(space.numbering().size(), 0.0);
-    InternalForceKernel kernel(u, f, cells);
+    InternalForceKernel kernel(space, u, f, cells);
     mpi::collectively([&] { ElementAssembler(space, kernel).run(); });
     if (space.distributed()) mpi::sum(f);
 }

@@ -18,8 +18,9 @@ namespace {
 
 class TestEnrichment : public Enrichment {
 public:
-    TestEnrichment(std::shared_ptr<const Mesh> mesh, std::vector<int> cells)
-        : mesh_(std::move(mesh)), cells_(std::move(cells)) {
+    // psi = `heaviside` on slot 1 (0: the slot is unused).
+    TestEnrichment(std::shared_ptr<const Mesh> mesh, std::vector<int> cells, double heaviside = 0.0)
+        : mesh_(std::move(mesh)), cells_(std::move(cells)), heaviside_(heaviside) {
         enrichedNode_.assign(mesh_->nodeCount(), 0);
         for (int c : cells_)
             for (int n : mesh_->cellNodes(c)) enrichedNode_[n] = 1;
@@ -32,12 +33,14 @@ public:
         out.slots.assign(out.nodeCount, 2);
         out.psi.assign(size_t(out.nodeCount) * 2, 0.0);  // one sub-cell (pointSubcell 0 at every point)
         for (int a = 0; a < out.nodeCount; ++a) out.psi.mut()[size_t(a) * 2] = 1.0;  // slot 0: psi = 1
+        for (int a = 0; a < out.nodeCount; ++a) out.psi.mut()[size_t(a) * 2 + 1] = heaviside_;
     }
 
 private:
     std::shared_ptr<const Mesh> mesh_;
     std::vector<int> cells_;
     std::vector<char> enrichedNode_;
+    double heaviside_;
 };
 
 }  // namespace
@@ -216,4 +219,41 @@ TEST(FeAdditionalTerms, SpringsJoinMatrixAndResidual) {
     ASSERT_GT(scale, 0.0);
     for (size_t i = 0; i < pinned.state().size(); ++i)
         EXPECT_NEAR(pinned.state()[i], sprung.state()[i], 1e-11 * scale) << i;
+}
+
+// Internal forces skip the elements whose nodes' unknowns are all zero (the first residual of a
+// solve holds only the imposed values): they add nothing, and any non-zero unknown of a node, a
+// Heaviside one alone included, keeps its elements in. By linearity f(u) = f(u_a) + f(u - u_a) for
+// u_a equal to u on some nodes and zero elsewhere; f(u) visits every element, the two others skip
+// the elements outside their nodes, so a skipped element that counts would break the sum.
+TEST(FeEnrichment, InternalForcesSkipOnlyElementsWhoseUnknownsAreAllZero) {
+    msg().setEcho(false);
+    auto mesh = planeMesh(4, 4, false);
+    auto model = affeModele(mesh, "D_PLAN", {"ALL", "RIGHT"});
+    auto enriched = std::make_shared<Model>(*model);
+    enriched->enrichment = std::make_shared<TestEnrichment>(mesh, std::vector<int>{5, 6, 9}, -1.0);
+    MechanicalProblem problem(enriched, material(enriched, 2.0e5, 0.25), {}, SolverOptions{});
+    const DofNumbering& numbering = problem.numbering();
+    std::vector<double> u(size_t(numbering.size())), kept(u.size(), 0.0), rest(u.size(), 0.0);
+    for (size_t d = 0; d < u.size(); ++d) u[d] = std::sin(1.3 * double(d) + 0.2);
+    const int heavisideOnly = mesh->cellNodes(6)[2];  // an enriched node: only its H1X, H1Y in `kept`
+    for (int node = 0; node < numbering.nodeCount(); ++node)
+        for (int d = numbering.first(node); d < numbering.first(node + 1); ++d) {
+            const bool heaviside = d - numbering.first(node) >= 2;
+            const bool inKept = node == heavisideOnly ? heaviside : mesh->coords[size_t(node)][0] < 0.7;
+            (inKept ? kept : rest)[size_t(d)] = u[size_t(d)];
+        }
+    std::vector<double> f, fKept, fRest;
+    problem.internalForces(u, f);
+    problem.internalForces(kept, fKept);
+    problem.internalForces(rest, fRest);
+    double scale = 0.0;
+    for (double v : f) scale = std::max(scale, std::abs(v));
+    ASSERT_GT(scale, 0.0);
+    int zeros = 0;
+    for (size_t d = 0; d < f.size(); ++d) {
+        EXPECT_NEAR(f[d], fKept[d] + fRest[d], 1e-13 * scale) << "dof " << d;
+        zeros += fKept[d] == 0.0;
+    }
+    EXPECT_GT(zeros, 0);  // elements far from `kept` were skipped: their dofs got nothing
 }
