@@ -16,10 +16,11 @@ public:
                         const std::vector<char>* cells)
         : mesh_(space.mesh()), numbering_(space.numbering()), u_(u), f_(f), cells_(cells) {}
 
-    // The forces are linear in the element's unknowns, which are those of its nodes: when these are
-    // all zero (the first residual of a solve sets only the imposed values) the element adds exactly
-    // nothing, and its geometry is not computed.
+    // Cells outside the chosen ones, and cells whose unknowns (those of their nodes) are all zero:
+    // the forces are linear in them, so the element adds exactly nothing (the first residual of a
+    // solve sets only the imposed values). Either way its geometry is not computed.
     bool skips(int cell) const {
+        if (cells_ && (*cells_)[size_t(cell)] == 0) return true;
         for (int node : mesh_.cellNodes(cell))
             for (int d = numbering_.first(node); d < numbering_.first(node + 1); ++d)
                 if (u_[size_t(d)] != 0.0) return false;
@@ -40,7 +41,6 @@ public:
 
     template <class Ref, class Geometry>
     Entry classical(const Ref&, const Geometry& g, const ElementContext& el, Part& part) const {
-        if (!chosen(el.cell)) return none(part);
         int edofs[Ref::dofs];
         classicalDofs<Ref>(el.mesh, el.numbering, el.cell, edofs);
         double ue[Ref::dofs], fl[Ref::dofs] = {};
@@ -50,7 +50,6 @@ public:
     }
 
     Entry general(const ElementIntegration& ei, const PointGeometry& geo, const ElementContext& el, Part& part) const {
-        if (!chosen(el.cell)) return none(part);
         ElementScratch& w = el.scratch;
         localDofs(el.mesh, el.numbering, ei, w.dofs);
         generalInternalForce(ei, geo, w.dofs, u_, el.law, el.dim, w.values);
@@ -65,7 +64,6 @@ public:
     }
 
 private:
-    bool chosen(int cell) const { return !cells_ || (*cells_)[size_t(cell)] != 0; }
     static Entry keep(Part& part, const int* dofs, const double* fe, int nd) {
         const Entry entry{nd, part.dofs.size()};
         part.dofs.insert(part.dofs.end(), dofs, dofs + nd);
