@@ -141,8 +141,4 @@ std::vector<PieceShare> shareCopies(PieceBasis& basis, const std::vector<int>& o
     return shares;
 }
 
-std::vector<PieceShare> shareByCoordinates(PieceBasis& basis, int processes) {
-    return shareCopies(basis, bisectCopies(basis, processes), processes);
-}
-
 }  // namespace ma

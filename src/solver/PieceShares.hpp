@@ -26,7 +26,4 @@ inline int shareOfEquation(const PieceBasis& basis, const std::vector<int>& owne
 // padding, modes and coordinates follow). Empty (the basis unchanged) when a share would be empty.
 std::vector<PieceShare> shareCopies(PieceBasis& basis, const std::vector<int>& ownerOfCopy, int processes);
 
-// shareCopies of bisectCopies.
-std::vector<PieceShare> shareByCoordinates(PieceBasis& basis, int processes);
-
 }  // namespace ma

@@ -45,7 +45,7 @@ TEST(PieceShares, AFlatSlabIsCutAcrossItsLongestExtentIntoSharesThatReadOnlyThei
         xfemtest::freeModel(xfemtest::slab(8, CellType::HEXA8, 8), xfemtest::junction(0.3, -0.4, true));
     PieceBasis basis = pieceBasisOf(*f.space, f.constraints, f.K.rows);
     ASSERT_GT(basis.copies, 0) << basis.refusal;
-    const std::vector<PieceShare> shares = shareByCoordinates(basis, 2);
+    const std::vector<PieceShare> shares = shareCopies(basis, bisectCopies(basis, 2), 2);
     ASSERT_EQ(shares.size(), 2u);
     EXPECT_EQ(shares[0].copyBegin, 0);
     EXPECT_EQ(shares[0].copyEnd, shares[1].copyBegin);
@@ -104,7 +104,7 @@ TEST(PieceShares, RenumberedCopiesKeepTheirRigidModes) {
     const xfemtest::FreeModel f =
         xfemtest::freeModel(xfemtest::slab(5, CellType::HEXA8, 3), xfemtest::junction(0.3, -0.4, true));
     PieceBasis basis = pieceBasisOf(*f.space, f.constraints, f.K.rows);
-    ASSERT_EQ(shareByCoordinates(basis, 3).size(), 3u);
+    ASSERT_EQ(shareCopies(basis, bisectCopies(basis, 3), 3).size(), 3u);
     const CsrMatrix B = pieceBasisMatrix(f.K, basis, 0.0);
     const size_t n = size_t(B.rows);
     std::vector<double> y(n);
