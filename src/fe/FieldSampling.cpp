@@ -52,18 +52,34 @@ void appendDisplacementSamples(const Model& model, const NodalField& depl, const
     std::vector<int> tipComponent;  // K1, K2[, K3] in the field
     for (int c = 0; c < dim; ++c) tipComponent.push_back(depl.componentIndex(fmt::format("K{}", c + 1)));
     GeneralElementScratch scratch;
+    std::vector<double> nodal;
+    std::vector<char> carried;
+    size_t stride = 1;  // slots per local node in `nodal`
     for (size_t e = first; e < last; ++e) {
         const auto& element = model.elements[e];
         if (!wanted.empty() && !wanted[element.cell]) continue;
         const bool enriched = model.enrichment && model.enrichment->isEnriched(element.cell);
         const int* nodes = mesh.connectivity.data() + mesh.cellOffsets[element.cell];
-        // Adds factor * U(node, slot) to s.u.
-        auto add = [&](DisplacementSample& s, int node, int slot, double factor) {
+        // The element's nodal values by (local node, slot, direction), looked up once for all its
+        // points (an X-FEM element has hundreds); `carried` is 0 where the field lacks the value.
+        auto gather = [&](int nodeCount, const std::vector<int>& slots) {
+            stride = slots.empty() ? 1 : size_t(*std::max_element(slots.begin(), slots.end()));
+            nodal.assign(size_t(nodeCount) * stride * 3, 0.0);
+            carried.assign(nodal.size(), 0);
+            for (int a = 0; a < nodeCount; ++a)
+                for (int k = 0; k < (slots.empty() ? 1 : slots[size_t(a)]); ++k)
+                    for (int c = 0; c < dim; ++c) {
+                        const int comp = componentIndex(k, c);
+                        const size_t at = (size_t(a) * stride + size_t(k)) * 3 + size_t(c);
+                        if (comp >= 0 && depl.has(nodes[a], comp)) nodal[at] = depl.at(nodes[a], comp), carried[at] = 1;
+                    }
+        };
+        // Adds factor * U(local node a, slot) to s.u, from the element's values gathered below.
+        auto add = [&](DisplacementSample& s, int a, int slot, double factor) {
             if (factor == 0.0) return;
-            for (int c = 0; c < dim; ++c) {
-                const int comp = componentIndex(slot, c);
-                if (comp >= 0 && depl.has(node, comp)) s.u[c] += factor * depl.at(node, comp);
-            }
+            const size_t at = (size_t(a) * stride + size_t(slot)) * 3;
+            for (int c = 0; c < dim; ++c)
+                if (carried[at + size_t(c)]) s.u[c] += factor * nodal[at + size_t(c)];
         };
         // Adds N_a * Phi * K(node) to s.u.
         auto addTip = [&](DisplacementSample& s, const double* phi, int node, double Na) {
@@ -79,13 +95,15 @@ void appendDisplacementSamples(const Model& model, const NodalField& depl, const
             [&](ElementIntegration& ei) -> const ElementIntegration& {
                 elementIntegration(model, element.cell, false, ei);
                 applyMaterialToTip(model, material, element, ei);
+                gather(ei.nodeCount, ei.slots);
                 return ei;
             },
             [&](const auto& ref, const auto& g) {  // classical: slot 0 only (psi = 1)
                 using Ref = std::decay_t<decltype(ref)>;
+                gather(Ref::nodes, {});
                 for (int p = 0; p < Ref::points; ++p) {
                     DisplacementSample s{element.cell, g.xyz[p], g.weight[p], {}};
-                    for (int a = 0; a < Ref::nodes; ++a) add(s, nodes[a], 0, ref.N[p][a]);
+                    for (int a = 0; a < Ref::nodes; ++a) add(s, a, 0, ref.N[p][a]);
                     out.push_back(s);
                 }
             },
@@ -95,7 +113,7 @@ void appendDisplacementSamples(const Model& model, const NodalField& depl, const
                     DisplacementSample s{element.cell, geo.xyz[p], geo.weight[p], {}};
                     for (int a = 0; a < n; ++a) {
                         for (int k = 0; k < ei.slots[a]; ++k)
-                            add(s, nodes[a], k, geo.N[p * n + a] * ei.multiplier(int(p), a, k));
+                            add(s, a, k, geo.N[p * n + a] * ei.multiplier(int(p), a, k));
                         if (ei.tipAt(a)) addTip(s, ei.tipValue(p, ei.tipGroupOf(a)), nodes[a], geo.N[p * n + a]);
                     }
                     out.push_back(s);
