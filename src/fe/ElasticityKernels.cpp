@@ -308,13 +308,12 @@ void generalInternalForce(const ElementIntegration& ei, const PointGeometry& geo
         int i = 0;
         for (int a = 0; a < n; ++a) {
             const double* ga = &geo.gradN[(p * n + a) * 3];
+            double traction[3] = {0.0, 0.0, 0.0};  // S grad N_a, the same for each of the node's slots
+            for (int c = 0; c < dim; ++c)
+                for (int j = 0; j < dim; ++j) traction[c] += S[c][j] * ga[j];
             for (int k = 0; k < ei.slots[a]; ++k) {
                 const double pa = ei.multiplier(int(p), a, k);
-                for (int c = 0; c < dim; ++c, ++i) {
-                    double sum = 0.0;
-                    for (int j = 0; j < dim; ++j) sum += S[c][j] * ga[j];
-                    fe[i] += wp * pa * sum;
-                }
+                for (int c = 0; c < dim; ++c, ++i) fe[i] += wp * pa * traction[c];
             }
         }
     }
