@@ -6,7 +6,11 @@
 #include <sched.h>
 #include <unistd.h>
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <chrono>
+#include <climits>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
@@ -182,6 +186,27 @@ void broadcastFromRoot(void* data, size_t n, MPI_Datatype type) {
 
 void broadcast(std::span<double> values) { broadcastFromRoot(values.data(), values.size(), MPI_DOUBLE); }
 void broadcast(std::span<int> values) { broadcastFromRoot(values.data(), values.size(), MPI_INT); }
+
+void gatherToAll(std::span<const double> mine, std::span<double> whole, std::span<const size_t> counts) {
+    if (size() == 1) {
+        std::copy(mine.begin(), mine.end(), whole.begin());
+        return;
+    }
+    std::vector<int> lengths, offsets;
+    size_t offset = 0;
+    for (size_t count : counts) {
+        if (count > size_t(INT_MAX) || offset > size_t(INT_MAX))
+            throw NumericalError(fmt::format("gathering {} values from {} processes exceeds MPI's int counts",
+                                             whole.size(), counts.size()));
+        lengths.push_back(int(count)), offsets.push_back(int(offset));
+        offset += count;
+    }
+    if (gNoticed) throw OtherProcessFailed();
+    MPI_Request request;
+    MPI_Iallgatherv(mine.data(), int(mine.size()), MPI_DOUBLE, whole.data(), lengths.data(), offsets.data(), MPI_DOUBLE,
+                    MPI_COMM_WORLD, &request);
+    complete(request);
+}
 
 const std::vector<int>& peersOnThisMachine() { return gPeers; }
 

@@ -42,6 +42,10 @@ void sum(std::span<long double> values);
 void max(std::span<double> values);
 void broadcast(std::span<double> values);  // from rank 0
 void broadcast(std::span<int> values);     // from rank 0
+// Every process's `mine` laid end to end in rank order into `whole` on every process; counts[r] is
+// process r's length (the same counts on every process, whole.size() their sum). NumericalError
+// when a count or an offset exceeds MPI's int (the same on every process: they hold the same counts).
+void gatherToAll(std::span<const double> mine, std::span<double> whole, std::span<const size_t> counts);
 
 // The process ids of the other processes that run on this machine, by rank (0: another machine,
 // or this process), learned at initialise().

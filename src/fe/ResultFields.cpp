@@ -1,7 +1,10 @@
 #include "fe/ResultFields.hpp"
 
+#include <algorithm>
 #include <atomic>
+#include <numeric>
 
+#include "core/Mpi.hpp"
 #include "fe/ElasticityKernels.hpp"
 #include "fe/Parallel.hpp"
 
@@ -62,6 +65,7 @@ void fillPoints(const Discretisation& space, const std::vector<double>& u, Gauss
         std::vector<int> dofs;
         LawCache laws(space.material());
         for (size_t e = begin; e < end; ++e) {
+            if (!space.owns(e)) continue;  // another process's (gatherElementPoints)
             const auto& element = space.model().elements[e];
             const IsotropicLaw& law = laws.of(element);
             const size_t first = size_t(field.pointOffsets[e]);
@@ -104,6 +108,71 @@ void fillPoints(const Discretisation& space, const std::vector<double>& u, Gauss
     });
 }
 
+// Elements per exchange of gatherElementPoints: buffers of a few MB whatever the model's size.
+constexpr size_t kGatheredElements = 4096;
+
+// On a distributed discretisation each process filled its own elements' points: every process
+// receives the others' values (and their geometry when `geometry`), so that each holds the whole
+// field, the same bits as one process computing them all.
+void gatherElementPoints(const Discretisation& space, GaussField& field, bool geometry) {
+    const size_t nc = field.components.size(), stride = nc + (geometry ? 8 : 0);
+    std::array<double, 3>* coords = geometry ? field.pointCoords.mut().data() : nullptr;
+    std::array<double, 3>* refCoords = geometry ? field.pointRefCoords.mut().data() : nullptr;
+    double* weights = geometry ? field.pointWeights.mut().data() : nullptr;
+    int* subcells = geometry ? field.pointSubcell.mut().data() : nullptr;
+    auto pack = [&](size_t i, double* out) {
+        std::copy_n(field.values.data() + i * nc, nc, out);
+        if (!geometry) return;
+        out += nc;
+        std::copy_n(coords[i].data(), 3, out), std::copy_n(refCoords[i].data(), 3, out + 3);
+        out[6] = weights[i], out[7] = double(subcells[i]);
+    };
+    auto unpack = [&](size_t i, const double* in) {
+        std::copy_n(in, nc, field.values.data() + i * nc);
+        if (!geometry) return;
+        in += nc;
+        std::copy_n(in, 3, coords[i].data()), std::copy_n(in + 3, 3, refCoords[i].data());
+        weights[i] = in[6], subcells[i] = int(in[7]);
+    };
+    const int me = mpi::rank();
+    std::vector<size_t> counts(size_t(mpi::size())), offsets(counts.size());
+    std::vector<double> mine, whole;
+    for (size_t first = 0; first < field.cells.size(); first += kGatheredElements) {
+        const size_t last = std::min(field.cells.size(), first + kGatheredElements);
+        std::fill(counts.begin(), counts.end(), 0);
+        mine.clear();
+        for (size_t e = first; e < last; ++e) {
+            const size_t p0 = size_t(field.pointOffsets[e]), p1 = size_t(field.pointOffsets[e + 1]);
+            counts[size_t(space.ownerOf(e))] += (p1 - p0) * stride;
+            if (space.ownerOf(e) != me) continue;
+            const size_t base = mine.size();
+            mine.resize(base + (p1 - p0) * stride);
+            for (size_t i = p0; i < p1; ++i) pack(i, mine.data() + base + (i - p0) * stride);
+        }
+        whole.resize(std::reduce(counts.begin(), counts.end()));
+        mpi::gatherToAll(mine, whole, counts);
+        std::exclusive_scan(counts.begin(), counts.end(), offsets.begin(), size_t(0));
+        for (size_t e = first; e < last; ++e) {
+            const size_t p0 = size_t(field.pointOffsets[e]), p1 = size_t(field.pointOffsets[e + 1]);
+            size_t& at = offsets[size_t(space.ownerOf(e))];
+            if (space.ownerOf(e) != me)
+                for (size_t i = p0; i < p1; ++i) unpack(i, whole.data() + at + (i - p0) * stride);
+            at += (p1 - p0) * stride;
+        }
+    }
+}
+
+// fillPoints on every process; on a distributed discretisation each fills its own elements
+// (collectively: a failure on one process stops them all), and `differs` is agreed.
+void fillOwnPoints(const Discretisation& space, const std::vector<double>& u, GaussField& field, PointStore tensorAt,
+                   bool check, std::atomic<bool>& differs) {
+    if (!space.distributed()) return fillPoints(space, u, field, tensorAt, check, differs);
+    mpi::collectively([&] { fillPoints(space, u, field, tensorAt, check, differs); });
+    double anyDiffers = differs ? 1.0 : 0.0;
+    mpi::max({&anyDiffers, 1});
+    differs = anyDiffers != 0.0;
+}
+
 // A tensor at every integration point (X-FEM sub-cell points included) from the displacement
 // gradient there.
 std::shared_ptr<GaussField> pointField(const Discretisation& space, const std::vector<double>& u,
@@ -117,14 +186,15 @@ std::shared_ptr<GaussField> pointField(const Discretisation& space, const std::v
         field->pointSubcell.resize(points), field->pointRefCoords.resize(points);
     }
     std::atomic<bool> differs{false};
-    fillPoints(space, u, *field, tensorAt, shared, differs);
+    fillOwnPoints(space, u, *field, tensorAt, shared, differs);
     if (shared && differs) {  // another model's or rule's points: this field's own geometry
         field->pointCoords = std::vector<std::array<double, 3>>(points);
         field->pointWeights = std::vector<double>(points);
         field->pointSubcell = std::vector<int>(points);
         field->pointRefCoords = std::vector<std::array<double, 3>>(points);
-        fillPoints(space, u, *field, tensorAt, false, differs);
+        fillOwnPoints(space, u, *field, tensorAt, false, differs);
     }
+    if (space.distributed()) gatherElementPoints(space, *field, !shared || differs);
     if (!shared || differs) latest.watch(*field);
     return field;
 }

@@ -37,6 +37,19 @@ TEST(Mpi, SumsAreTheSameOnEveryProcess) {
     EXPECT_EQ(m[1], 0.0);
 }
 
+// Process r gives r + 1 values r + 0.5, r + 1.5, ...: every process receives them all in rank order.
+TEST(Mpi, GatherToAllLaysTheProcessesEndToEnd) {
+    const int k = mpi::size(), me = mpi::rank();
+    std::vector<size_t> counts;
+    for (int r = 0; r < k; ++r) counts.push_back(size_t(r + 1));
+    std::vector<double> mine(size_t(me + 1)), whole(size_t(k * (k + 1) / 2), -1.0), expected;
+    std::iota(mine.begin(), mine.end(), me + 0.5);
+    for (int r = 0; r < k; ++r)
+        for (int i = 0; i <= r; ++i) expected.push_back(r + i + 0.5);
+    mpi::gatherToAll(mine, whole, counts);
+    EXPECT_EQ(whole, expected);
+}
+
 TEST(Mpi, AFailureOnTheLastProcessIsThrownOnEveryProcess) {
     const int last = mpi::size() - 1;
     try {
