@@ -36,51 +36,71 @@ std::vector<DisplacementSample> sampleDisplacement(const Model& model, const Nod
     return out;
 }
 
+namespace {
+
+// One element's nodal values of a displacement field by (local node, slot, direction), looked up
+// once for all its points (an X-FEM element has hundreds).
+class ElementNodalValues {
+public:
+    explicit ElementNodalValues(const NodalField& depl, int dim) : depl_(depl), dim_(dim) {}
+
+    // The values of the nodes `nodes` (slots[a] slots each; one when `slots` is empty).
+    void gather(const int* nodes, int nodeCount, const std::vector<int>& slots) {
+        stride_ = slots.empty() ? 1 : size_t(*std::max_element(slots.begin(), slots.end()));
+        values_.assign(size_t(nodeCount) * stride_ * 3, 0.0);
+        carried_.assign(values_.size(), 0);
+        for (int a = 0; a < nodeCount; ++a)
+            for (int k = 0; k < (slots.empty() ? 1 : slots[size_t(a)]); ++k)
+                for (int c = 0; c < dim_; ++c) {
+                    const int comp = componentOf(k, c);
+                    const size_t at = index(a, k) + size_t(c);
+                    if (comp >= 0 && depl_.has(nodes[a], comp))
+                        values_[at] = depl_.at(nodes[a], comp), carried_[at] = 1;
+                }
+    }
+
+    // Adds factor * U(local node a, slot) to u (the components the field carries).
+    void add(std::array<double, 3>& u, int a, int slot, double factor) const {
+        if (factor == 0.0) return;
+        const size_t at = index(a, slot);
+        for (int c = 0; c < dim_; ++c)
+            if (carried_[at + size_t(c)]) u[size_t(c)] += factor * values_[at + size_t(c)];
+    }
+
+private:
+    size_t index(int a, int slot) const { return (size_t(a) * stride_ + size_t(slot)) * 3; }
+    // The field's component of (slot, direction), -1 when the field lacks it.
+    int componentOf(int slot, int c) {
+        const size_t key = size_t(slot) * 3 + size_t(c);
+        if (components_.size() <= key) components_.resize(key + 1, -2);
+        if (components_[key] == -2) components_[key] = depl_.componentIndex(displacementComponentName(slot, c));
+        return components_[key];
+    }
+
+    const NodalField& depl_;
+    int dim_;
+    std::vector<int> components_;
+    std::vector<double> values_;
+    std::vector<char> carried_;  // 0 where the field lacks the value
+    size_t stride_ = 1;          // slots per local node
+};
+
+}  // namespace
+
 void appendDisplacementSamples(const Model& model, const NodalField& depl, const std::vector<char>& wanted,
                                size_t first, size_t last, std::vector<DisplacementSample>& out,
                                const MaterialField* material) {
     const Mesh& mesh = *model.mesh;
     const int dim = model.dim;
-    // Field component of each (slot, direction), -1 when the field lacks it (counts as 0).
-    std::vector<int> component;
-    auto componentIndex = [&](int slot, int c) {
-        const size_t key = size_t(slot) * 3 + c;
-        if (component.size() <= key) component.resize(key + 1, -2);
-        if (component[key] == -2) component[key] = depl.componentIndex(displacementComponentName(slot, c));
-        return component[key];
-    };
     std::vector<int> tipComponent;  // K1, K2[, K3] in the field
     for (int c = 0; c < dim; ++c) tipComponent.push_back(depl.componentIndex(fmt::format("K{}", c + 1)));
     GeneralElementScratch scratch;
-    std::vector<double> nodal;
-    std::vector<char> carried;
-    size_t stride = 1;  // slots per local node in `nodal`
+    ElementNodalValues nodal(depl, dim);
     for (size_t e = first; e < last; ++e) {
         const auto& element = model.elements[e];
         if (!wanted.empty() && !wanted[element.cell]) continue;
         const bool enriched = model.enrichment && model.enrichment->isEnriched(element.cell);
         const int* nodes = mesh.connectivity.data() + mesh.cellOffsets[element.cell];
-        // The element's nodal values by (local node, slot, direction), looked up once for all its
-        // points (an X-FEM element has hundreds); `carried` is 0 where the field lacks the value.
-        auto gather = [&](int nodeCount, const std::vector<int>& slots) {
-            stride = slots.empty() ? 1 : size_t(*std::max_element(slots.begin(), slots.end()));
-            nodal.assign(size_t(nodeCount) * stride * 3, 0.0);
-            carried.assign(nodal.size(), 0);
-            for (int a = 0; a < nodeCount; ++a)
-                for (int k = 0; k < (slots.empty() ? 1 : slots[size_t(a)]); ++k)
-                    for (int c = 0; c < dim; ++c) {
-                        const int comp = componentIndex(k, c);
-                        const size_t at = (size_t(a) * stride + size_t(k)) * 3 + size_t(c);
-                        if (comp >= 0 && depl.has(nodes[a], comp)) nodal[at] = depl.at(nodes[a], comp), carried[at] = 1;
-                    }
-        };
-        // Adds factor * U(local node a, slot) to s.u, from the element's values gathered below.
-        auto add = [&](DisplacementSample& s, int a, int slot, double factor) {
-            if (factor == 0.0) return;
-            const size_t at = (size_t(a) * stride + size_t(slot)) * 3;
-            for (int c = 0; c < dim; ++c)
-                if (carried[at + size_t(c)]) s.u[c] += factor * nodal[at + size_t(c)];
-        };
         // Adds N_a * Phi * K(node) to s.u.
         auto addTip = [&](DisplacementSample& s, const double* phi, int node, double Na) {
             for (int m = 0; m < dim; ++m) {
@@ -95,15 +115,15 @@ void appendDisplacementSamples(const Model& model, const NodalField& depl, const
             [&](ElementIntegration& ei) -> const ElementIntegration& {
                 elementIntegration(model, element.cell, false, ei);
                 applyMaterialToTip(model, material, element, ei);
-                gather(ei.nodeCount, ei.slots);
+                nodal.gather(nodes, ei.nodeCount, ei.slots);
                 return ei;
             },
             [&](const auto& ref, const auto& g) {  // classical: slot 0 only (psi = 1)
                 using Ref = std::decay_t<decltype(ref)>;
-                gather(Ref::nodes, {});
+                nodal.gather(nodes, Ref::nodes, {});
                 for (int p = 0; p < Ref::points; ++p) {
                     DisplacementSample s{element.cell, g.xyz[p], g.weight[p], {}};
-                    for (int a = 0; a < Ref::nodes; ++a) add(s, a, 0, ref.N[p][a]);
+                    for (int a = 0; a < Ref::nodes; ++a) nodal.add(s.u, a, 0, ref.N[p][a]);
                     out.push_back(s);
                 }
             },
@@ -113,7 +133,7 @@ void appendDisplacementSamples(const Model& model, const NodalField& depl, const
                     DisplacementSample s{element.cell, geo.xyz[p], geo.weight[p], {}};
                     for (int a = 0; a < n; ++a) {
                         for (int k = 0; k < ei.slots[a]; ++k)
-                            add(s, a, k, geo.N[p * n + a] * ei.multiplier(int(p), a, k));
+                            nodal.add(s.u, a, k, geo.N[p * n + a] * ei.multiplier(int(p), a, k));
                         if (ei.tipAt(a)) addTip(s, ei.tipValue(p, ei.tipGroupOf(a)), nodes[a], geo.N[p * n + a]);
                     }
                     out.push_back(s);
