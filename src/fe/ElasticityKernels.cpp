@@ -215,7 +215,8 @@ void tipStiffness(const ElementIntegration& ei, const PointGeometry& geo, const 
 namespace {
 
 // The classical node-pair blocks of the points [p0, p1) (one sub-cell, where psi is constant):
-// C[(a n + b) 9 + 3 ci + di] = sum_p w (lambda ga_ci gb_di + mu ga_di gb_ci + [ci = di] mu ga.gb).
+// C[(a n + b) 9 + 3 ci + di] = sum_p w (lambda ga_ci gb_di + mu ga_di gb_ci + [ci = di] mu ga.gb), the
+// products summed first (pairBlockFromProducts).
 void subcellBlocks(const PointGeometry& geo, const IsotropicLaw& law, int n, int dim, size_t p0, size_t p1,
                    std::vector<double>& C) {
     C.assign(size_t(n) * size_t(n) * 9, 0.0);
@@ -223,17 +224,17 @@ void subcellBlocks(const PointGeometry& geo, const IsotropicLaw& law, int n, int
         const double w = geo.weight[p];
         for (int a = 0; a < n; ++a) {
             const double* ga = &geo.gradN[(p * size_t(n) + size_t(a)) * 3];
+            const double wa[3] = {w * ga[0], w * ga[1], w * ga[2]};
             for (int b = a; b < n; ++b) {
                 const double* gb = &geo.gradN[(p * size_t(n) + size_t(b)) * 3];
-                const double dot = ga[0] * gb[0] + ga[1] * gb[1] + ga[2] * gb[2];
                 double* c = &C[size_t(a * n + b) * 9];
                 for (int ci = 0; ci < dim; ++ci)
-                    for (int di = 0; di < dim; ++di)
-                        c[ci * 3 + di] += w * (law.lambdaEff * ga[ci] * gb[di] + law.mu * ga[di] * gb[ci] +
-                                               (ci == di ? law.mu * dot : 0.0));
+                    for (int di = 0; di < dim; ++di) c[ci * 3 + di] += wa[ci] * gb[di];
             }
         }
     }
+    for (int a = 0; a < n; ++a)
+        for (int b = a; b < n; ++b) pairBlockFromProducts(&C[size_t(a * n + b) * 9], 3, law, dim);
     for (int a = 1; a < n; ++a)  // the lower blocks are the transposed upper ones
         for (int b = 0; b < a; ++b)
             for (int ci = 0; ci < 3; ++ci)

@@ -102,6 +102,20 @@ void classicalGradient(const double (&grad)[NN][D], const double* ue, double G[3
             for (int j = 0; j < D; ++j) G[c][j] += ue[a * D + c] * grad[a][j];
 }
 
+// The stiffness block of a node pair a, b from the sum over the points of M = w grad N_a grad N_b^T
+// (dim x dim, rows `stride` apart), in place: lambda M + mu M^T + mu tr(M) I. The point loops sum
+// M only (dim x dim products a pair and point); the law comes once per pair.
+inline void pairBlockFromProducts(double* m, int stride, const IsotropicLaw& law, int dim) {
+    double M[3][3], trace = 0.0;
+    for (int i = 0; i < dim; ++i) {
+        for (int j = 0; j < dim; ++j) M[i][j] = m[i * stride + j];
+        trace += M[i][i];
+    }
+    for (int i = 0; i < dim; ++i)
+        for (int j = 0; j < dim; ++j)
+            m[i * stride + j] = law.lambdaEff * M[i][j] + law.mu * M[j][i] + (i == j ? law.mu * trace : 0.0);
+}
+
 // Stiffness of a classical element (upper blocks, mirrored), row-major nd x nd. The same operations
 // as generalStiffness would do with psi = 1.
 template <class Ref>
@@ -111,21 +125,17 @@ void classicalStiffness(const classical::Geometry<Ref>& g, const IsotropicLaw& l
     for (int p = 0; p < Ref::points; ++p) {
         const double w = g.weight[p];
         for (int a = 0; a < n; ++a) {
-            const double* ga = g.grad[p][a];
+            double wa[dim];
+            for (int c = 0; c < dim; ++c) wa[c] = w * g.grad[p][a][c];
             for (int b = a; b < n; ++b) {
                 const double* gb = g.grad[p][b];
-                double dot = ga[0] * gb[0] + ga[1] * gb[1];
-                if constexpr (dim == 3) dot += ga[2] * gb[2];
-                const double wdot = w * law.mu * dot;
                 for (int ci = 0; ci < dim; ++ci)
-                    for (int di = 0; di < dim; ++di) {
-                        const double v =
-                            w * (law.lambdaEff * ga[ci] * gb[di] + law.mu * ga[di] * gb[ci]) + (ci == di ? wdot : 0.0);
-                        Ke[(a * dim + ci) * nd + b * dim + di] += v;
-                    }
+                    for (int di = 0; di < dim; ++di) Ke[(a * dim + ci) * nd + b * dim + di] += wa[ci] * gb[di];
             }
         }
     }
+    for (int a = 0; a < n; ++a)
+        for (int b = a; b < n; ++b) pairBlockFromProducts(&Ke[(a * dim) * nd + b * dim], nd, law, dim);
     for (int a = 0; a < n; ++a)
         for (int b = a + 1; b < n; ++b)
             for (int ci = 0; ci < dim; ++ci)
