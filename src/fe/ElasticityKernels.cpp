@@ -131,14 +131,12 @@ void displacementGradient(const ElementIntegration& ei, const PointGeometry& geo
     int i = 0;
     for (int a = 0; a < n; ++a) {
         const double* ga = &geo.gradN[(p * n + a) * 3];
-        double ua[3] = {0.0, 0.0, 0.0};  // sum over the node's slots of psi_ak u_ak: one product with grad N_a
         for (int k = 0; k < ei.slots[a]; ++k) {
             const double pa = ei.multiplier(int(p), a, k);
             for (int c = 0; c < dim; ++c, ++i)
-                if (pa != 0.0) ua[c] += pa * u[dofs[i]];
+                if (pa != 0.0)
+                    for (int j = 0; j < dim; ++j) G[c][j] += pa * u[dofs[i]] * ga[j];
         }
-        for (int c = 0; c < dim; ++c)
-            for (int j = 0; j < dim; ++j) G[c][j] += ua[c] * ga[j];
     }
 }
 
