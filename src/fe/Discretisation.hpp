@@ -46,8 +46,8 @@ public:
     // Collective: every process calls it (rank 0 partitions, the others receive its partition).
     void distribute(int processes, int rank);
     bool distributed() const { return !owner_.empty(); }
-    bool owns(size_t e) const { return owner_.empty() || owner_[e] == rank_; }
     int ownerOf(size_t e) const { return owner_.empty() ? rank_ : owner_[e]; }
+    bool owns(size_t e) const { return ownerOf(e) == rank_; }
     // The same for a cell of the mesh (a model's cell; false for any other when distributed).
     bool ownsCell(int cell) const;
     // Elements per process (empty when not distributed).

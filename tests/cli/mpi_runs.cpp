@@ -310,7 +310,7 @@ TEST(MpiRuns, RefinedSsnv511eSameFieldOnTwoAndFourProcesses) {
     EXPECT_GT(largest, 0.07);  // |u| = 0.0715 + 0.0104 * 5 at the top right corner
     // The stresses, each process computing its own elements' points and gathering the others': the
     // one-process field to round-off (a misplaced element's points would differ by the stress itself).
-    const auto [largestStress, stressDifferences] = relativeDifferences(stresses);
+    const std::vector<double> stressDifferences = relativeDifferences(stresses).second;
     for (size_t k = 1; k < fields.size(); ++k) {
         EXPECT_LT(displacements[k - 1], 1e-10) << "K = " << (k == 1 ? 2 : 4);
         EXPECT_LT(stressDifferences[k - 1], 1e-9) << "K = " << (k == 1 ? 2 : 4);
