@@ -41,14 +41,17 @@ ResidualInfo distributedResidualOf(const CsrMatrix& A, std::span<const double> x
     // A x, then |A| |x|, then the row's largest |a_ij|: this process's part (the sum over the
     // processes of the last bounds the summed row's largest entry).
     std::vector<long double> sums(3 * n, 0.0L);
-    for (int i = 0; i < A.rows; ++i)
+    for (int i = 0; i < A.rows; ++i) {
+        long double ax = 0.0L, absAx = 0.0L;  // in registers: the row's sums stay in x87 precision
+        double rowMax = 0.0;
         for (long long k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
             const long double p = static_cast<long double>(A.values[k]) * x[size_t(A.cols[k])];
-            sums[size_t(i)] += p;
-            sums[n + size_t(i)] += std::abs(p);
-            sums[2 * n + size_t(i)] =
-                std::max(sums[2 * n + size_t(i)], std::abs(static_cast<long double>(A.values[k])));
+            ax += p;
+            absAx += std::abs(p);
+            rowMax = std::max(rowMax, std::abs(A.values[k]));
         }
+        sums[size_t(i)] = ax, sums[n + size_t(i)] = absAx, sums[2 * n + size_t(i)] = rowMax;
+    }
     mpi::sum(sums);
     double xMax = 0.0;
     for (double v : x) xMax = std::max(xMax, std::abs(v));
