@@ -42,8 +42,12 @@ ConceptPtr mecaStatique(const KeywordSet& kw, CommandContext& ctx) {
     int order = 0;
     for (double inst : instants) {
         problem.resetState();
-        const auto report = problem.solveIncrement(inst, linear);
-        if (inst == instants.back()) problem.releaseFactorisation();  // no solve follows: SIEF_ELGA without the factors
+        // No solve follows the last: SIEF_ELGA without the factors, from the residual's point loop.
+        using After = MechanicalProblem::AfterSolve;
+        const After after = inst != instants.back() ? After::KeepFactors
+                            : stresses              ? After::ReleaseFactorsKeepStresses
+                                                    : After::ReleaseFactors;
+        const auto report = problem.solveIncrement(inst, linear, after);
         mechanics::archiveState(*result, problem, ++order, inst, true, stresses);
         msg().infof("    NUME_ORDRE {} INST {}: max |R| after the solve = {:.3e} (relative {:.3e})", order, inst,
                     report.maxResidual, report.relativeResidual);

@@ -287,12 +287,14 @@ void generalStiffness(const ElementIntegration& ei, const PointGeometry& geo, co
 }
 
 void generalInternalForce(const ElementIntegration& ei, const PointGeometry& geo, const std::vector<int>& dofs,
-                          const std::vector<double>& u, const IsotropicLaw& law, int dim, std::vector<double>& fe) {
+                          const std::vector<double>& u, const IsotropicLaw& law, int dim, std::vector<double>& fe,
+                          const PointHook* pointHook) {
     fe.assign(dofs.size(), 0.0);
     const int n = ei.nodeCount;
     for (size_t p = 0; p < ei.refPoints.size(); ++p) {
         double G[3][3], S[3][3];
         displacementGradient(ei, geo, dofs, u, p, dim, G);
+        if (pointHook) (*pointHook)(p, G);
         stressOf(G, law, dim, S);
         const double wp = geo.weight[p];
         if (ei.hasTip()) {

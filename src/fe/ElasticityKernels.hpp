@@ -5,6 +5,7 @@
 // Two forms of each kernel: the classical one (fixed sizes, fe/ClassicalElement.hpp, slot 0 and
 // psi = 1) and the general one (any ElementIntegration: X-FEM slots and psi). The classical
 // kernels do the general ones' operations in the same order, so both give the same bits.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,11 @@ struct ElementScratch {
     LawCache laws;
 };
 
+// The classical internal force's default: no look at the points.
+struct NoPointHook {
+    void operator()(int, const double (*)[3]) const {}
+};
+
 // Global dofs of the element's local unknowns (node-major, then slot, then component).
 void localDofs(const Mesh& mesh, const DofNumbering& numbering, const ElementIntegration& ei, std::vector<int>& dofs);
 
@@ -80,8 +86,11 @@ void generalStiffness(const ElementIntegration& ei, const PointGeometry& geo, co
                       std::vector<double>& Ke);
 
 // Internal-force vector of any element at the displacement u (fe: one entry per local dof).
+// pointHook, when given, sees the displacement gradient of each point: (*pointHook)(p, G).
+using PointHook = std::function<void(size_t p, const double (*G)[3])>;
 void generalInternalForce(const ElementIntegration& ei, const PointGeometry& geo, const std::vector<int>& dofs,
-                          const std::vector<double>& u, const IsotropicLaw& law, int dim, std::vector<double>& fe);
+                          const std::vector<double>& u, const IsotropicLaw& law, int dim, std::vector<double>& fe,
+                          const PointHook* pointHook = nullptr);
 
 // Global dofs of a classical element (slot 0 of each node: first(node) + component).
 template <class Ref>
@@ -143,12 +152,15 @@ void classicalStiffness(const classical::Geometry<Ref>& g, const IsotropicLaw& l
                     Ke[(b * dim + di) * nd + a * dim + ci] = Ke[(a * dim + ci) * nd + b * dim + di];
 }
 
-// Internal-force vector of a classical element (ue: its dofs' displacements, fl: zeroed by the caller).
-template <class Ref>
-void classicalInternalForce(const classical::Geometry<Ref>& g, const double* ue, const IsotropicLaw& law, double* fl) {
+// Internal-force vector of a classical element (ue: its dofs' displacements, fl: zeroed by the
+// caller); onPoint(p, G) sees the displacement gradient of each point.
+template <class Ref, class OnPoint = NoPointHook>
+void classicalInternalForce(const classical::Geometry<Ref>& g, const double* ue, const IsotropicLaw& law, double* fl,
+                            OnPoint&& onPoint = {}) {
     for (int p = 0; p < Ref::points; ++p) {
         double G[3][3], S[3][3];
         classicalGradient(g.grad[p], ue, G);
+        onPoint(p, G);
         stressOf(G, law, Ref::dim, S);
         const double wp = g.weight[p];
         for (int a = 0; a < Ref::nodes; ++a)

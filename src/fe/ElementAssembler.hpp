@@ -16,6 +16,7 @@ namespace ma {
 
 // What a kernel sees of the element it computes.
 struct ElementContext {
+    size_t element;  // index in the model's elements
     const Mesh& mesh;
     const DofNumbering& numbering;
     int cell;
@@ -72,8 +73,8 @@ private:
             return;
         }
         ElementScratch& w = scratch_[t];
-        const ElementContext context{space_.mesh(), space_.numbering(), element.cell,
-                                     space_.dim(),  w.laws.of(element), w};
+        const ElementContext context{
+            e, space_.mesh(), space_.numbering(), element.cell, space_.dim(), w.laws.of(element), w};
         space_.visit(
             e, w.general,
             [&](const auto& ref, const auto& g) { slot.entry = kernel_.classical(ref, g, context, part); },

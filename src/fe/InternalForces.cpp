@@ -3,6 +3,7 @@
 #include "core/Mpi.hpp"
 #include "fe/ElasticityKernels.hpp"
 #include "fe/ElementAssembler.hpp"
+#include "fe/ResultFields.hpp"
 
 namespace ma {
 
@@ -13,14 +14,16 @@ namespace {
 class InternalForceKernel {
 public:
     InternalForceKernel(const Discretisation& space, const std::vector<double>& u, std::vector<double>& f,
-                        const std::vector<char>* cells)
-        : mesh_(space.mesh()), numbering_(space.numbering()), u_(u), f_(f), cells_(cells) {}
+                        const std::vector<char>* cells, PointWriter* points)
+        : mesh_(space.mesh()), numbering_(space.numbering()), u_(u), f_(f), cells_(cells), points_(points) {}
 
     // Cells outside the chosen ones, and cells whose unknowns (those of their nodes) are all zero:
     // the forces are linear in them, so the element adds exactly nothing (the first residual of a
-    // solve sets only the imposed values). Either way its geometry is not computed.
+    // solve sets only the imposed values). Either way its geometry is not computed. Points written
+    // for a field are written for every element.
     bool skips(int cell) const {
         if (cells_ && (*cells_)[size_t(cell)] == 0) return true;
+        if (points_) return false;
         for (int node : mesh_.cellNodes(cell))
             for (int d = numbering_.first(node); d < numbering_.first(node + 1); ++d)
                 if (u_[size_t(d)] != 0.0) return false;
@@ -40,19 +43,30 @@ public:
     Entry none(Part& part) const { return keep(part, nullptr, nullptr, 0); }
 
     template <class Ref, class Geometry>
-    Entry classical(const Ref&, const Geometry& g, const ElementContext& el, Part& part) const {
+    Entry classical(const Ref& ref, const Geometry& g, const ElementContext& el, Part& part) const {
         int edofs[Ref::dofs];
         classicalDofs<Ref>(el.mesh, el.numbering, el.cell, edofs);
         double ue[Ref::dofs], fl[Ref::dofs] = {};
         for (int i = 0; i < Ref::dofs; ++i) ue[i] = u_[edofs[i]];
-        classicalInternalForce(g, ue, el.law, fl);
+        if (points_)
+            classicalInternalForce(g, ue, el.law, fl, [&](int p, const double(*G)[3]) {
+                points_->classicalPoint(el.element, ref, g, p, G, el.law);
+            });
+        else classicalInternalForce(g, ue, el.law, fl);
         return keep(part, edofs, fl, Ref::dofs);
     }
 
     Entry general(const ElementIntegration& ei, const PointGeometry& geo, const ElementContext& el, Part& part) const {
         ElementScratch& w = el.scratch;
         localDofs(el.mesh, el.numbering, ei, w.dofs);
-        generalInternalForce(ei, geo, w.dofs, u_, el.law, el.dim, w.values);
+        if (points_) {
+            const PointHook hook = [&](size_t p, const double(*G)[3]) {
+                points_->generalPoint(el.element, ei, geo, p, G, el.law);
+            };
+            generalInternalForce(ei, geo, w.dofs, u_, el.law, el.dim, w.values, &hook);
+        } else {
+            generalInternalForce(ei, geo, w.dofs, u_, el.law, el.dim, w.values);
+        }
         return keep(part, w.dofs.data(), w.values.data(), static_cast<int>(w.dofs.size()));
     }
 
@@ -76,14 +90,15 @@ private:
     const std::vector<double>& u_;
     std::vector<double>& f_;
     const std::vector<char>* cells_;
+    PointWriter* points_;
 };
 
 }  // namespace
 
 void assembleInternalForces(const Discretisation& space, const std::vector<double>& u, std::vector<double>& f,
-                            const std::vector<char>* cells) {
+                            const std::vector<char>* cells, PointWriter* points) {
     f.assign(space.numbering().size(), 0.0);
-    InternalForceKernel kernel(space, u, f, cells);
+    InternalForceKernel kernel(space, u, f, cells, points);
     mpi::collectively([&] { ElementAssembler(space, kernel).run(); });
     if (space.distributed()) mpi::sum(f);
 }

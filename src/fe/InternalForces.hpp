@@ -9,9 +9,13 @@
 
 namespace ma {
 
+class PointWriter;
+
 // f: numbering().size() entries (u may have more: the additional terms' unknowns are not read).
-// With `cells` (a flag per mesh cell), only the elements of the flagged cells contribute.
+// With `cells` (a flag per mesh cell), only the elements of the flagged cells contribute. With
+// `points`, every point of the elements this process computes is written by it (SIEF_ELGA from
+// the same loop: fe/ResultFields.hpp PointFieldRecording).
 void assembleInternalForces(const Discretisation& space, const std::vector<double>& u, std::vector<double>& f,
-                            const std::vector<char>* cells = nullptr);
+                            const std::vector<char>* cells = nullptr, PointWriter* points = nullptr);
 
 }  // namespace ma

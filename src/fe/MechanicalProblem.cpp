@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
@@ -126,6 +127,9 @@ void MechanicalProblem::solveLinear(std::vector<double>& rhs) {
         factorised_ = true;
     }
     solver_->solve(rhs);
+    if (afterSolve_ == AfterSolve::KeepFactors) return;
+    releaseFactorisation();
+    keepNextStresses_ = afterSolve_ == AfterSolve::ReleaseFactorsKeepStresses;
 }
 
 namespace {
@@ -139,8 +143,12 @@ double solverNoiseFloor(const SolverOptions& solver) {
 
 }  // namespace
 
-IncrementReport MechanicalProblem::solveIncrement(double inst, const ConvergenceOptions& options) {
+IncrementReport MechanicalProblem::solveIncrement(double inst, const ConvergenceOptions& options, AfterSolve after) {
+    if (after != AfterSolve::KeepFactors && options.maxIterations != 0)
+        throw std::logic_error("MechanicalProblem: the factors are freed only after an increment's one solve");
     const auto t0 = std::chrono::steady_clock::now();
+    kept_.reset();
+    afterSolve_ = after;
     setupSystem(inst);
     const auto& c = *constraints_;
     const int ndof = numbering().size();
@@ -153,7 +161,7 @@ IncrementReport MechanicalProblem::solveIncrement(double inst, const Convergence
                               alpha_,
                               ndof,
                               fext,
-                              [this](const std::vector<double>& u, std::vector<double>& f) { internalForces(u, f); },
+                              [this](const std::vector<double>& u, std::vector<double>& f) { residualForces(u, f); },
                               additional_.get(),
                               [this](std::vector<double>& rhs) { solveLinear(rhs); },
                               t0,
@@ -166,9 +174,23 @@ void MechanicalProblem::internalForces(const std::vector<double>& displacement, 
     assembleInternalForces(*space_, displacement, f);
 }
 
+void MechanicalProblem::residualForces(const std::vector<double>& displacement, std::vector<double>& f) {
+    if (!keepNextStresses_) return assembleInternalForces(*space_, displacement, f);
+    keepNextStresses_ = false;
+    auto recording = std::make_unique<PointFieldRecording>(*space_, PointFieldRecording::Quantity::Stress);
+    assembleInternalForces(*space_, displacement, f, nullptr, &recording->writer());
+    kept_ = std::make_unique<KeptStresses>(KeptStresses{std::move(recording), displacement});
+}
+
 std::shared_ptr<NodalField> MechanicalProblem::displacementField() const { return ma::displacementField(*space_, u_); }
 
-std::shared_ptr<GaussField> MechanicalProblem::stressField() const { return ma::stressField(*space_, u_); }
+std::shared_ptr<GaussField> MechanicalProblem::stressField() const {
+    const auto kept = std::move(kept_);
+    double stale = kept && kept->state == u_ ? 0.0 : 1.0;
+    if (space_->distributed()) mpi::max({&stale, 1});  // the same answer on every process
+    if (stale != 0.0) return ma::stressField(*space_, u_);
+    return kept->recording->finish(u_);
+}
 
 void MechanicalProblem::releaseFactorisation() {
     solver_ = makeLinearSolver(solverOptions_);

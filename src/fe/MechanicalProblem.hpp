@@ -24,6 +24,7 @@
 #include "fe/Material.hpp"
 #include "fe/Model.hpp"
 #include "fe/NewtonIncrement.hpp"
+#include "fe/ResultFields.hpp"
 #include "fields/Fields.hpp"
 #include "solver/LinearSolver.hpp"
 #include "solver/SparseMatrix.hpp"
@@ -51,11 +52,20 @@ public:
     // own unknowns (AdditionalTerms::extraUnknowns).
     const std::vector<double>& state() const { return u_; }
     // Back to the zero state (each instant of MECA_STATIQUE is solved from zero).
-    void resetState() { std::fill(u_.begin(), u_.end(), 0.0); }
+    void resetState() {
+        std::fill(u_.begin(), u_.end(), 0.0);
+        kept_.reset();
+    }
+
+    // What follows the increment's solve. When no solve follows (MECA_STATIQUE's last instant: one
+    // solve, options.maxIterations == 0), the factors are freed before the final residual, and that
+    // residual's point loop can write SIEF_ELGA for stressField() (no second pass over the points).
+    enum class AfterSolve { KeepFactors, ReleaseFactors, ReleaseFactorsKeepStresses };
 
     // Newton iterations at instant `inst` starting from the current state (ELAS: converges in
     // one iteration up to round-off). Logs every iteration.
-    IncrementReport solveIncrement(double inst, const ConvergenceOptions& options);
+    IncrementReport solveIncrement(double inst, const ConvergenceOptions& options,
+                                   AfterSolve after = AfterSolve::KeepFactors);
 
     // Internal forces F_int(displacement) in dof order (numbering().size() entries).
     void internalForces(const std::vector<double>& displacement, std::vector<double>& f) const;
@@ -73,6 +83,8 @@ private:
     void setupSystem(double inst);
     void assembleSystem();
     void solveLinear(std::vector<double>& rhs);
+    // The Newton residual's internal forces, which write SIEF_ELGA when the last solve asked for it.
+    void residualForces(const std::vector<double>& displacement, std::vector<double>& f);
 
     std::vector<LoadCase> loads_;
     SolverOptions solverOptions_;
@@ -86,6 +98,14 @@ private:
     bool matrixValid_ = false;
     std::shared_ptr<const AdditionalTerms> additional_;
     double alpha_ = 1.0;
+    AfterSolve afterSolve_ = AfterSolve::KeepFactors;
+    bool keepNextStresses_ = false;
+    // SIEF_ELGA written by the last residual and the state it is of; taken by stressField().
+    struct KeptStresses {
+        std::unique_ptr<PointFieldRecording> recording;
+        std::vector<double> state;
+    };
+    mutable std::unique_ptr<KeptStresses> kept_;
 };
 
 }  // namespace ma

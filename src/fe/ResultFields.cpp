@@ -46,20 +46,10 @@ std::shared_ptr<GaussField> emptyPointField(const Discretisation& space, const s
     return field;
 }
 
-using PointStore = void (*)(const double G[3][3], const IsotropicLaw& law, int dim, double* out);
-
-// The values (and, unless `check`, the geometry) of every point of `field`; with `check`, the
-// geometry it holds is compared with the points' instead, `differs` set on the first difference.
-void fillPoints(const Discretisation& space, const std::vector<double>& u, GaussField& field, PointStore tensorAt,
-                bool check, std::atomic<bool>& differs) {
-    const int dim = space.dim();
-    const size_t nc = field.components.size();
+// Every point of the elements this process owns, written by `points` (element ranges on the workers).
+void fillPoints(const Discretisation& space, const std::vector<double>& u, PointWriter& points) {
     const size_t nElements = space.elementCount();
-    std::array<double, 3>* coords = check ? nullptr : field.pointCoords.mut().data();
-    double* weights = check ? nullptr : field.pointWeights.mut().data();
-    int* subcells = check ? nullptr : field.pointSubcell.mut().data();
-    std::array<double, 3>* refCoords = check ? nullptr : field.pointRefCoords.mut().data();
-    // Every element writes its own points (element ranges on the workers).
+    const int dim = space.dim();
     parallelRanges(nElements, nElements >= 4096 ? workerCount() : 1, [&](size_t begin, size_t end, int) {
         GeneralElementScratch scratch;
         std::vector<int> dofs;
@@ -68,19 +58,6 @@ void fillPoints(const Discretisation& space, const std::vector<double>& u, Gauss
             if (!space.owns(e)) continue;  // another process's (gatherElementPoints)
             const auto& element = space.model().elements[e];
             const IsotropicLaw& law = laws.of(element);
-            const size_t first = size_t(field.pointOffsets[e]);
-            auto store = [&](size_t p, const std::array<double, 3>& xyz, double weight, int subcell,
-                             const std::array<double, 3>& ref, const double G[3][3]) {
-                const size_t i = first + p;
-                if (check) {
-                    if (field.pointCoords[i] != xyz || field.pointWeights[i] != weight ||
-                        field.pointSubcell[i] != subcell || field.pointRefCoords[i] != ref)
-                        differs = true;
-                } else {
-                    coords[i] = xyz, weights[i] = weight, subcells[i] = subcell, refCoords[i] = ref;
-                }
-                tensorAt(G, law, dim, field.values.data() + i * nc);
-            };
             space.visit(
                 e, scratch,
                 [&](const auto& ref, const auto& g) {
@@ -92,7 +69,7 @@ void fillPoints(const Discretisation& space, const std::vector<double>& u, Gauss
                     for (int p = 0; p < Ref::points; ++p) {
                         double G[3][3];
                         classicalGradient(g.grad[p], ue, G);
-                        store(size_t(p), g.xyz[p], g.weight[p], 0, ref.point[p], G);
+                        points.classicalPoint(e, ref, g, p, G, law);
                     }
                 },
                 [&](const ElementIntegration& ei, const PointGeometry& geo) {
@@ -100,8 +77,7 @@ void fillPoints(const Discretisation& space, const std::vector<double>& u, Gauss
                     for (size_t p = 0; p < ei.refPoints.size(); ++p) {
                         double G[3][3];
                         displacementGradient(ei, geo, dofs, u, p, dim, G);
-                        store(p, geo.xyz[p], geo.weight[p], ei.pointSubcell.empty() ? 0 : ei.pointSubcell[p],
-                              ei.refPoints[p], G);
+                        points.generalPoint(e, ei, geo, p, G, law);
                     }
                 });
         }
@@ -162,51 +138,90 @@ void gatherElementPoints(const Discretisation& space, GaussField& field, bool ge
     }
 }
 
-// fillPoints on every process; on a distributed discretisation each fills its own elements
-// (collectively: a failure on one process stops them all), and `differs` is agreed.
-void fillOwnPoints(const Discretisation& space, const std::vector<double>& u, GaussField& field, PointStore tensorAt,
-                   bool check, std::atomic<bool>& differs) {
-    if (!space.distributed()) return fillPoints(space, u, field, tensorAt, check, differs);
-    mpi::collectively([&] { fillPoints(space, u, field, tensorAt, check, differs); });
-    double anyDiffers = differs ? 1.0 : 0.0;
-    mpi::max({&anyDiffers, 1});
-    differs = anyDiffers != 0.0;
+}  // namespace
+
+PointWriter::PointWriter(GaussField& field, Tensor tensorAt, int dim, bool compare)
+    : field_(field), tensorAt_(tensorAt), dim_(dim), compare_(compare) {
+    if (compare) return;
+    coords_ = field.pointCoords.mut().data(), weights_ = field.pointWeights.mut().data();
+    subcells_ = field.pointSubcell.mut().data(), refCoords_ = field.pointRefCoords.mut().data();
 }
 
-// A tensor at every integration point (X-FEM sub-cell points included) from the displacement
-// gradient there.
-std::shared_ptr<GaussField> pointField(const Discretisation& space, const std::vector<double>& u,
-                                       std::shared_ptr<GaussField> field, PointStore tensorAt) {
-    const size_t points = size_t(field->pointOffsets.back());
+void PointWriter::store(size_t element, size_t p, const std::array<double, 3>& xyz, double weight, int subcell,
+                        const std::array<double, 3>& ref, const double G[3][3], const IsotropicLaw& law) {
+    const size_t i = size_t(field_.pointOffsets[element]) + p;
+    if (compare_) {
+        if (field_.pointCoords[i] != xyz || field_.pointWeights[i] != weight || field_.pointSubcell[i] != subcell ||
+            field_.pointRefCoords[i] != ref)
+            differs_ = true;
+    } else {
+        coords_[i] = xyz, weights_[i] = weight, subcells_[i] = subcell, refCoords_[i] = ref;
+    }
+    tensorAt_(G, law, dim_, field_.values.data() + i * field_.components.size());
+}
+
+namespace {
+
+// The field's own geometry, to be written.
+void allocateGeometry(GaussField& field) {
+    const size_t points = size_t(field.pointOffsets.back());
+    field.pointCoords = std::vector<std::array<double, 3>>(points);
+    field.pointWeights = std::vector<double>(points);
+    field.pointSubcell = std::vector<int>(points);
+    field.pointRefCoords = std::vector<std::array<double, 3>>(points);
+}
+
+}  // namespace
+
+PointFieldRecording::PointFieldRecording(const Discretisation& space, Quantity quantity)
+    : space_(space), tensorAt_(quantity == Quantity::Stress ? storeStress : storeStrain) {
+    field_ =
+        quantity == Quantity::Stress ? emptyPointField(space, "SIEF_R", "SI") : emptyPointField(space, "EPSI_R", "EP");
     // The model's latest field's geometry when it is this field's: compared point by point, not copied.
-    const PointGeometryCache& latest = space.model().pointGeometry;
-    const bool shared = latest.adopt(*field, points);
-    if (!shared) {
-        field->pointCoords.resize(points), field->pointWeights.resize(points);
-        field->pointSubcell.resize(points), field->pointRefCoords.resize(points);
+    adopted_ = space.model().pointGeometry.adopt(*field_, size_t(field_->pointOffsets.back()));
+    if (!adopted_) allocateGeometry(*field_);
+    writer_ = std::make_unique<PointWriter>(*field_, tensorAt_, space.dim(), adopted_);
+}
+
+PointFieldRecording::~PointFieldRecording() = default;
+
+std::shared_ptr<GaussField> PointFieldRecording::finish(const std::vector<double>& u) {
+    bool differs = writer_->differs();
+    if (space_.distributed()) {  // agreed: the processes compared their own elements
+        double anyDiffers = differs ? 1.0 : 0.0;
+        mpi::max({&anyDiffers, 1});
+        differs = anyDiffers != 0.0;
     }
-    std::atomic<bool> differs{false};
-    fillOwnPoints(space, u, *field, tensorAt, shared, differs);
-    if (shared && differs) {  // another model's or rule's points: this field's own geometry
-        field->pointCoords = std::vector<std::array<double, 3>>(points);
-        field->pointWeights = std::vector<double>(points);
-        field->pointSubcell = std::vector<int>(points);
-        field->pointRefCoords = std::vector<std::array<double, 3>>(points);
-        fillOwnPoints(space, u, *field, tensorAt, false, differs);
+    if (adopted_ && differs) {  // another model's or rule's points: this field's own geometry
+        allocateGeometry(*field_);
+        PointWriter own(*field_, tensorAt_, space_.dim(), false);
+        if (space_.distributed()) mpi::collectively([&] { fillPoints(space_, u, own); });
+        else fillPoints(space_, u, own);
     }
-    if (space.distributed()) gatherElementPoints(space, *field, !shared || differs);
-    if (!shared || differs) latest.watch(*field);
-    return field;
+    const bool ownGeometry = !adopted_ || differs;
+    if (space_.distributed()) gatherElementPoints(space_, *field_, ownGeometry);
+    if (ownGeometry) space_.model().pointGeometry.watch(*field_);
+    return field_;
+}
+
+namespace {
+
+std::shared_ptr<GaussField> pointField(const Discretisation& space, const std::vector<double>& u,
+                                       PointFieldRecording::Quantity quantity) {
+    PointFieldRecording recording(space, quantity);
+    if (space.distributed()) mpi::collectively([&] { fillPoints(space, u, recording.writer()); });
+    else fillPoints(space, u, recording.writer());
+    return recording.finish(u);
 }
 
 }  // namespace
 
 std::shared_ptr<GaussField> stressField(const Discretisation& space, const std::vector<double>& u) {
-    return pointField(space, u, emptyPointField(space, "SIEF_R", "SI"), storeStress);
+    return pointField(space, u, PointFieldRecording::Quantity::Stress);
 }
 
 std::shared_ptr<GaussField> strainField(const Discretisation& space, const std::vector<double>& u) {
-    return pointField(space, u, emptyPointField(space, "EPSI_R", "EP"), storeStrain);
+    return pointField(space, u, PointFieldRecording::Quantity::Strain);
 }
 
 }  // namespace ma

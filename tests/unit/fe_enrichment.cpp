@@ -43,6 +43,27 @@ private:
     double heaviside_;
 };
 
+// LEFT clamped (H1X = 5 where a node carries it), a linear pressure on RIGHT and a body force.
+std::shared_ptr<MechanicalLoad> clampedAndLoaded(const std::shared_ptr<Model>& model) {
+    KeywordSet kw;
+    set(kw, "MODELE", model);
+    auto& d = kw.addOccurrence("DDL_IMPO");
+    setTexts(d, "GROUP_MA", {"LEFT"});
+    auto constant = [](double v) {
+        return ConceptPtr(std::make_shared<LambdaFunction>([v](double, double, double) { return v; }));
+    };
+    set(d, "DX", constant(0.0)), set(d, "DY", constant(0.0));
+    set(d, "H1X", constant(5.0));  // skipped on the nodes that do not carry H1X
+    auto& p = kw.addOccurrence("PRES_REP");
+    setTexts(p, "GROUP_MA", {"RIGHT"});
+    set(p, "PRES", ConceptPtr(std::make_shared<LambdaFunction>([](double, double y, double) { return 10.0 * y; })));
+    auto& f = kw.addOccurrence("FORCE_INTERNE");
+    set(f, "TOUT", std::string("OUI"));
+    set(f, "FX", ConceptPtr(std::make_shared<LambdaFunction>([](double x, double, double) { return 3.0 + x; })));
+    set(f, "FY", constant(-2.0));
+    return std::dynamic_pointer_cast<MechanicalLoad>(run("AFFE_CHAR_MECA_F", kw, "CHAR"));
+}
+
 }  // namespace
 
 TEST(FeEnrichment, GenericKernelMatchesClassicalAndUnusedSlotsAreNeutralised) {
@@ -68,24 +89,7 @@ TEST(FeEnrichment, GenericKernelMatchesClassicalAndUnusedSlotsAreNeutralised) {
     int i = 0;
     for (const auto& model : {classical, enriched}) {
         auto mat = material(model, 2.0e5, 0.25);
-        KeywordSet kw;
-        set(kw, "MODELE", model);
-        auto& d = kw.addOccurrence("DDL_IMPO");
-        setTexts(d, "GROUP_MA", {"LEFT"});
-        auto constant = [](double v) {
-            return ConceptPtr(std::make_shared<LambdaFunction>([v](double, double, double) { return v; }));
-        };
-        set(d, "DX", constant(0.0)), set(d, "DY", constant(0.0));
-        set(d, "H1X", constant(5.0));  // skipped on the nodes that do not carry H1X
-        auto& p = kw.addOccurrence("PRES_REP");
-        setTexts(p, "GROUP_MA", {"RIGHT"});
-        set(p, "PRES", ConceptPtr(std::make_shared<LambdaFunction>([](double, double y, double) { return 10.0 * y; })));
-        auto& f = kw.addOccurrence("FORCE_INTERNE");
-        set(f, "TOUT", std::string("OUI"));
-        set(f, "FX", ConceptPtr(std::make_shared<LambdaFunction>([](double x, double, double) { return 3.0 + x; })));
-        set(f, "FY", constant(-2.0));
-        auto load = std::dynamic_pointer_cast<MechanicalLoad>(run("AFFE_CHAR_MECA_F", kw, "CHAR"));
-        MechanicalProblem problem(model, mat, {{load, nullptr}}, SolverOptions{});
+        MechanicalProblem problem(model, mat, {{clampedAndLoaded(model), nullptr}}, SolverOptions{});
         ConvergenceOptions conv;
         conv.maxIterations = 10;
         conv.resiGlobRela = 1e-12;
@@ -256,4 +260,41 @@ TEST(FeEnrichment, InternalForcesSkipOnlyElementsWhoseUnknownsAreAllZero) {
         zeros += fKept[d] == 0.0;
     }
     EXPECT_GT(zeros, 0);  // elements far from `kept` were skipped: their dofs got nothing
+}
+
+TEST(FeEnrichment, LastResidualWritesTheStressesOfTheSeparatePointLoop) {
+    msg().setEcho(false);
+    auto mesh = planeMesh(4, 4, false);
+    auto base = affeModele(mesh, "D_PLAN", {"ALL", "RIGHT"});
+    auto enrichedCopy = [&] {  // a copy: its own latest point geometry
+        auto model = std::make_shared<Model>(*base);
+        model->enrichment = std::make_shared<TestEnrichment>(mesh, std::vector<int>{5, 6, 9});
+        return model;
+    };
+    using After = MechanicalProblem::AfterSolve;
+    auto sief = [](const std::shared_ptr<Model>& model, After after) {
+        MechanicalProblem problem(model, material(model, 2.0e5, 0.25), {{clampedAndLoaded(model), nullptr}},
+                                  SolverOptions{});
+        problem.solveIncrement(0.0, ConvergenceOptions{}, after);
+        return problem.stressField();
+    };
+    const auto first = enrichedCopy(), second = enrichedCopy();
+    const auto computed = sief(first, After::KeepFactors);              // stressField's own loop
+    const auto kept = sief(second, After::ReleaseFactorsKeepStresses);  // the residual's loop
+    double smax = 0.0;
+    for (double v : computed->values) smax = std::max(smax, std::abs(v));
+    ASSERT_GT(smax, 0.0);
+    EXPECT_EQ(kept->values, computed->values);
+    EXPECT_EQ(kept->pointOffsets, computed->pointOffsets);
+    EXPECT_EQ(kept->pointCoords, computed->pointCoords);
+    EXPECT_EQ(kept->pointWeights, computed->pointWeights);
+    EXPECT_EQ(kept->pointSubcell, computed->pointSubcell);
+    EXPECT_EQ(kept->pointRefCoords, computed->pointRefCoords);
+    // Again on the first model: its latest geometry adopted (compared, not written), the same values.
+    const auto again = sief(first, After::ReleaseFactorsKeepStresses);
+    EXPECT_EQ(again->values, computed->values);
+    EXPECT_EQ(again->pointWeights.data(), computed->pointWeights.data());
+    MechanicalProblem newton(first, material(first, 2.0e5, 0.25), {}, SolverOptions{});
+    EXPECT_THROW(newton.solveIncrement(0.0, ConvergenceOptions{.maxIterations = 3}, After::ReleaseFactors),
+                 std::logic_error);  // freed factors are for an increment's one solve
 }
