@@ -24,14 +24,18 @@ namespace {
 // 1e5 points for QUAD4), so that a refined model never holds all its samples at once.
 constexpr size_t kBatchElements = 32768;
 
+// Batches per process on several processes: dealt in turn, they share the points evenly even where
+// the costly elements (X-FEM sub-cells) gather in one part of the numbering.
+constexpr size_t kBatchesPerProcess = 8;
+
 // This process's batches of n elements (docs/mpi.md): batches of at most kBatchElements dealt to
 // the processes in turn, from rank 0; each process sums its own and the sums are reduced. One
 // process: every batch, as many as before.
 struct Batches {
     size_t size = kBatchElements, start = 0, stride = kBatchElements;
     explicit Batches(size_t n) {
-        const size_t k = size_t(mpi::size());
-        size = std::max<size_t>(1, std::min(kBatchElements, (n + k - 1) / k));
+        const size_t k = size_t(mpi::size()), parts = k == 1 ? 1 : k * kBatchesPerProcess;
+        size = std::max<size_t>(1, std::min(kBatchElements, (n + parts - 1) / parts));
         start = size * size_t(mpi::rank());
         stride = size * k;
     }
