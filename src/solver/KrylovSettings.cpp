@@ -127,13 +127,15 @@ namespace {
 // ssnv511c's box (half the iterations, less time), 2 in the piece basis, where each step costs more
 // than the iterations it saves. In the piece basis, W-cycles: its coarse levels are light (operator
 // complexity ~1.2), and visiting them twice is what flat cells need (a third fewer iterations there,
-// the same on cubes). GAMG keeps PETSc's Chebyshev/Jacobi: SOR halves its iterations there but fails
+// the same on cubes); and the coarsening stops below 2 000 rows, whose LU (on every process) is a
+// better coarse correction than W-cycles down to a few dozen rows, each visit an exchange between
+// the processes (ssnv511c at N = 49: 46 -> 40 iterations). GAMG keeps PETSc's Chebyshev/Jacobi: SOR halves its iterations there but fails
 // on the zero pivots of coarse levels with more rigid modes than rows in an aggregate (N = 31).
 // docs/solver.md, "3D multigrid", "The finest smoother" and "W-cycles".
 const char* defaultOptionsOf(const std::string& preconditioner, bool inPieces) {
     if (preconditioner == "ML")
         return inPieces ? "-pc_ml_CoarsenScheme Uncoupled -mg_levels_ksp_type chebyshev -mg_levels_ksp_max_it 2 "
-                          "-pc_mg_cycle_type w"
+                          "-pc_mg_cycle_type w -pc_ml_maxCoarseSize 2000"
                         : "-pc_ml_CoarsenScheme Uncoupled -mg_levels_ksp_type chebyshev -mg_levels_ksp_max_it 4";
     return "";
 }

@@ -5,6 +5,8 @@
 // solver's answer.
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -140,6 +142,17 @@ PieceSolve solveInPieces(const FreeModel& f, const KnownSystem& r, const std::st
     return {diff / maxAbs(r.direct), msg().messText().substr(from)};
 }
 
+// The rows of each multigrid level in a .mess excerpt ("N levels (rows a / b / ...)"), finest first.
+std::vector<int> levelRowsIn(const std::string& mess) {
+    std::vector<int> rows;
+    const size_t at = mess.find(" levels (rows ");
+    if (at == std::string::npos) return rows;
+    std::istringstream in(mess.substr(at + 14, mess.find(')', at) - at - 14));
+    for (std::string word; in >> word;)
+        if (word != "/") rows.push_back(std::stoi(word));
+    return rows;
+}
+
 // The Krylov iterations of the last solve in a .mess excerpt ("solve ... s: N iterations").
 int iterationsIn(const std::string& mess) {
     const size_t at = mess.rfind(" iterations, ");
@@ -196,7 +209,8 @@ Clamped clampedOnSides(const FreeModel& f) {
 // GAMG's and ML's smoothers multiply by the assembled matrix, not through the shell (ML on its upper
 // triangle; with OPTION_PETSC='-pc_use_amat true', which asks for the shell, through the shell).
 TEST(PieceBasis, SolveThroughThePiecesIsTheDirectOne) {
-    const FreeModel f = junctionModel(xfemtest::slab(6, CellType::HEXA8), 0.3, -0.4);
+    // 4 000 unknowns: ML coarsens them once (its coarsening stops below 2 000 rows).
+    const FreeModel f = junctionModel(xfemtest::slab(24, CellType::HEXA8), 0.3, -0.4);
     const KnownSystem r = regularised(f);
     const std::vector<std::pair<std::string, std::string>> settings = {{"ML", ""},
                                                                        {"GAMG", ""},
@@ -215,20 +229,27 @@ TEST(PieceBasis, SolveThroughThePiecesIsTheDirectOne) {
                          : std::string("finest smoother chebyshev 2 step(s) of sor (1 symmetric sweep(s)) on the ") +
                                (given.empty() ? "assembled matrix's upper triangle (sbaij)" : "shell matrix");
         EXPECT_NE(mess.find(smoother), std::string::npos) << mess;
+        if (pc != "ML") continue;
+        const std::vector<int> levels = levelRowsIn(mess);
+        ASSERT_EQ(levels.size(), 2u) << mess;
+        EXPECT_GE(levels[0], 2000) << mess;
+        EXPECT_LT(levels[1], 2000) << mess;  // solved by LU
     }
 }
 
 // ML in the piece basis runs W-cycles (the .mess lists the option): on ssnv511c's 10:1 flat cells,
 // clamped on two sides, they take fewer iterations than V-cycles (OPTION_PETSC='-pc_mg_cycle_type
-// v'), for the same answer.
+// v'), for the same answer. The hierarchy coarsened to the end (-pc_ml_maxCoarseSize 1: this model's
+// 7 000 rows would otherwise make two levels, where W and V are one cycle).
 TEST(PieceBasis, WCyclesTakeFewerIterationsOnFlatCells) {
     FreeModel f = junctionModel(xfemtest::slab(12, CellType::HEXA8, 12), 0.3, -0.4);
     Clamped c = clampedOnSides(f);
     f.constraints = c.constraints;
-    const PieceSolve w = solveInPieces(f, c.system, "ML", "", 1e-12);
-    const PieceSolve v = solveInPieces(f, c.system, "ML", "-pc_mg_cycle_type v", 1e-12);
+    const PieceSolve w = solveInPieces(f, c.system, "ML", "-pc_ml_maxCoarseSize 1", 1e-12);
+    const PieceSolve v = solveInPieces(f, c.system, "ML", "-pc_ml_maxCoarseSize 1 -pc_mg_cycle_type v", 1e-12);
     EXPECT_LT(w.error, 1e-10);
     EXPECT_LT(v.error, 1e-10);
+    EXPECT_GT(levelRowsIn(w.mess).size(), 2u) << w.mess;
     EXPECT_NE(w.mess.find("-mg_levels_ksp_max_it 2 -pc_mg_cycle_type w"), std::string::npos) << w.mess;
     EXPECT_GT(iterationsIn(w.mess), 0) << w.mess;
     EXPECT_LT(iterationsIn(w.mess), iterationsIn(v.mess)) << w.mess << v.mess;
