@@ -84,6 +84,13 @@ void fillPoints(const Discretisation& space, const std::vector<double>& u, Point
     });
 }
 
+// fillPoints on every process; on a distributed discretisation collectively (a failure on one
+// process stops them all).
+void fillOwnPoints(const Discretisation& space, const std::vector<double>& u, PointWriter& points) {
+    if (space.distributed()) mpi::collectively([&] { fillPoints(space, u, points); });
+    else fillPoints(space, u, points);
+}
+
 // Elements per exchange of gatherElementPoints: buffers of a few MB whatever the model's size.
 constexpr size_t kGatheredElements = 4096;
 
@@ -195,8 +202,7 @@ std::shared_ptr<GaussField> PointFieldRecording::finish(const std::vector<double
     if (adopted_ && differs) {  // another model's or rule's points: this field's own geometry
         allocateGeometry(*field_);
         PointWriter own(*field_, tensorAt_, space_.dim(), false);
-        if (space_.distributed()) mpi::collectively([&] { fillPoints(space_, u, own); });
-        else fillPoints(space_, u, own);
+        fillOwnPoints(space_, u, own);
     }
     const bool ownGeometry = !adopted_ || differs;
     if (space_.distributed()) gatherElementPoints(space_, *field_, ownGeometry);
@@ -209,8 +215,7 @@ namespace {
 std::shared_ptr<GaussField> pointField(const Discretisation& space, const std::vector<double>& u,
                                        PointFieldRecording::Quantity quantity) {
     PointFieldRecording recording(space, quantity);
-    if (space.distributed()) mpi::collectively([&] { fillPoints(space, u, recording.writer()); });
-    else fillPoints(space, u, recording.writer());
+    fillOwnPoints(space, u, recording.writer());
     return recording.finish(u);
 }
 

@@ -129,9 +129,10 @@ namespace {
 // complexity ~1.2), and visiting them twice is what flat cells need (a third fewer iterations there,
 // the same on cubes); and the coarsening stops below 2 000 rows, whose LU (on every process) is a
 // better coarse correction than W-cycles down to a few dozen rows, each visit an exchange between
-// the processes (ssnv511c at N = 49: 46 -> 40 iterations). GAMG keeps PETSc's Chebyshev/Jacobi: SOR halves its iterations there but fails
-// on the zero pivots of coarse levels with more rigid modes than rows in an aggregate (N = 31).
-// docs/solver.md, "3D multigrid", "The finest smoother" and "W-cycles".
+// the processes (ssnv511c at N = 49: 46 -> 40 iterations). GAMG keeps PETSc's Chebyshev/Jacobi:
+// SOR halves its iterations there but fails on the zero pivots of coarse levels with more rigid
+// modes than rows in an aggregate (N = 31). docs/solver.md, "3D multigrid", "The finest smoother",
+// "W-cycles" and "The coarsest level by LU".
 const char* defaultOptionsOf(const std::string& preconditioner, bool inPieces) {
     if (preconditioner == "ML")
         return inPieces ? "-pc_ml_CoarsenScheme Uncoupled -mg_levels_ksp_type chebyshev -mg_levels_ksp_max_it 2 "
