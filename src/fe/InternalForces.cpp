@@ -48,11 +48,9 @@ public:
         classicalDofs<Ref>(el.mesh, el.numbering, el.cell, edofs);
         double ue[Ref::dofs], fl[Ref::dofs] = {};
         for (int i = 0; i < Ref::dofs; ++i) ue[i] = u_[edofs[i]];
-        if (points_)
-            classicalInternalForce(g, ue, el.law, fl, [&](int p, const double(*G)[3]) {
-                points_->classicalPoint(el.element, ref, g, p, G, el.law);
-            });
-        else classicalInternalForce(g, ue, el.law, fl);
+        classicalInternalForce(g, ue, el.law, fl, [&](int p, const double(*G)[3]) {
+            if (points_) points_->classicalPoint(el.element, ref, g, p, G, el.law);
+        });
         return keep(part, edofs, fl, Ref::dofs);
     }
 
