@@ -163,6 +163,9 @@ int unusedGiven(const std::string& defaults, const std::string& given) {
 void setUpWithOptionPetsc(KSP ksp, const SolverOptions& options, bool inPieces) {
     const std::string defaults = defaultOptionsOf(options.preconditioner, inPieces);
     checkPetsc(PetscOptionsInsertString(nullptr, defaults.c_str()), "PetscOptionsInsertString (defaults)");
+    if (estimatesAfterSetUp(options, inPieces))
+        checkPetsc(PetscOptionsInsertString(nullptr, "-mg_levels_esteig_ksp_max_it 1"),
+                   "PetscOptionsInsertString (set-up estimates)");
     checkPetsc(PetscOptionsInsertString(nullptr, options.petscOptions.c_str()),
                "PetscOptionsInsertString (SOLVEUR/OPTION_PETSC)");
     // The options stay in PETSc's database through KSPSetUp: multigrid creates its levels' smoothers
@@ -180,6 +183,10 @@ void setUpWithOptionPetsc(KSP ksp, const SolverOptions& options, bool inPieces) 
     if (!options.petscOptions.empty())
         msg().infof("    OPTION_PETSC='{}' given to PETSc{}", options.petscOptions,
                     unused > 0 ? fmt::format(" ({} option(s) not used by this solver)", unused) : "");
+}
+
+bool estimatesAfterSetUp(const SolverOptions& options, bool inPieces) {
+    return inPieces && options.preconditioner == "ML" && options.petscOptions.find("esteig") == std::string::npos;
 }
 
 std::string stallAdvice(const SolverOptions& options, bool inaccurate) {

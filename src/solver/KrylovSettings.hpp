@@ -33,6 +33,13 @@ void configurePreconditioner(PC pc, const SolverOptions& options, bool inPieces)
 // PC's inner solvers while they are built (KSPSetUp), then cleared (a later solve starts from the
 // SOLVEUR keywords again); the options the solver did not use are logged.
 void setUpWithOptionPetsc(KSP ksp, const SolverOptions& options, bool inPieces);
+
+// ML in the piece basis: its smoothers then sweep their matrices' upper triangles, where PETSc
+// estimates their largest eigenvalue again (SymmetricSmoother.hpp), so the set-up's own estimates
+// are made with one GMRES step and only the second with PETSc's 10 (kSmootherEstimateSteps). Not
+// when OPTION_PETSC says anything of the estimates: PETSc's are then left as they are.
+bool estimatesAfterSetUp(const SolverOptions& options, bool inPieces);
+constexpr int kSmootherEstimateSteps = 10;  // PETSc's default for Chebyshev's estimate
 // What to try when the method stalls (or converged by its own estimate only: `inaccurate`), for the
 // error message.
 std::string stallAdvice(const SolverOptions& options, bool inaccurate);

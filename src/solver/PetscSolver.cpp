@@ -193,7 +193,9 @@ private:
             configurePreconditioner(pc, options_, pmat_ != nullptr);
         }
         setUpWithOptionPetsc(ksp_, options_, pmat_ != nullptr);
-        if (upper_) smoothOnUpperTriangles(pc, upper_);
+        if (upper_)
+            smoothOnUpperTriangles(pc, upper_,
+                                   estimatesAfterSetUp(options_, pmat_ != nullptr) ? kSmootherEstimateSteps : 0);
         stale_ = false;
         msg().infof("    {}: preconditioner built in {:.3f} s, resident peak {:.0f} MB (from {:.0f} MB){}{}", name(),
                     secondsSince(t0), phase.peakMb(), phase.startMb(),
@@ -259,8 +261,8 @@ private:
         const std::string matrix = a != p                               ? fmt::format("{} matrix", type ? type : "?")
                                    : type && std::strstr(type, "sbaij") ? "assembled matrix's upper triangle (sbaij)"
                                                                         : "assembled matrix";
-        return fmt::format("; finest smoother {} {} step(s) of {}{} on the {}", method ? method : "?", steps,
-                           kind ? kind : "?", sweeps, matrix);
+        return fmt::format("; finest smoother {} {} step(s) of {}{} on the {}{}", method ? method : "?", steps,
+                           kind ? kind : "?", sweeps, matrix, eigenvalueBoundsOf(smoother));
     }
 
     // X-FEM models with GAMG, ML or BOOMER on a positive definite system: the piece basis

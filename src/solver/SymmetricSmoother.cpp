@@ -1,5 +1,7 @@
 #include "solver/SymmetricSmoother.hpp"
 
+#include <fmt/format.h>
+
 #include <vector>
 
 #include "solver/KrylovSettings.hpp"
@@ -91,23 +93,56 @@ Mat upperTriangleOfLevel(Mat level) {
     return sbaijOf(upper, size, comm);
 }
 
+// Level l's Chebyshev smoother estimates its eigenvalues again, with `steps` GMRES steps, at its next
+// set-up (done here): PETSc makes an estimate only for a matrix it has not seen, so the operators are
+// set again (the same ones where they were not changed).
+void estimateAgain(PC pc, PetscInt level, int steps) {
+    KSP smoother = nullptr, estimator = nullptr;
+    PetscBool chebyshev = PETSC_FALSE;
+    if (PCMGGetSmoother(pc, level, &smoother) != 0) return;
+    PetscObjectTypeCompare(reinterpret_cast<PetscObject>(smoother), KSPCHEBYSHEV, &chebyshev);
+    if (!chebyshev || KSPChebyshevEstEigGetKSP(smoother, &estimator) != 0 || !estimator) return;
+    PetscReal rtol = 0.0, abstol = 0.0, dtol = 0.0;
+    PetscInt maxIt = 0;
+    checkPetsc(KSPGetTolerances(estimator, &rtol, &abstol, &dtol, &maxIt), "KSPGetTolerances");
+    checkPetsc(KSPSetTolerances(estimator, rtol, abstol, dtol, steps), "KSPSetTolerances");
+    checkPetsc(KSPChebyshevEstEigSet(smoother, PETSC_DECIDE, PETSC_DECIDE, PETSC_DECIDE, PETSC_DECIDE),
+               "KSPChebyshevEstEigSet");
+    Mat a = nullptr, p = nullptr;
+    checkPetsc(KSPGetOperators(smoother, &a, &p), "KSPGetOperators");
+    checkPetsc(KSPSetOperators(smoother, a, p), "KSPSetOperators");
+    checkPetsc(KSPSetUp(smoother), "KSPSetUp (a smoother's eigenvalue estimate)");
+}
+
 }  // namespace
 
-int smoothOnUpperTriangles(PC pc, Mat finestUpper) {
+int smoothOnUpperTriangles(PC pc, Mat finestUpper, int estimateSteps) {
     PetscInt levels = 0;
     if (PCMGGetLevels(pc, &levels) != 0) return 0;
     int changed = 0;
-    for (PetscInt l = 1; l < levels; ++l) {
+    for (PetscInt l = 0; l < levels; ++l) {  // level 0: the coarsest, smoothed when it is the only one
         Mat matrix = nullptr;
-        KSP smoother = sorSmootherOf(pc, l, matrix);
-        if (!smoother) continue;
-        Mat upper = l == levels - 1 ? finestUpper : upperTriangleOfLevel(matrix);
-        checkPetsc(KSPSetOperators(smoother, upper, upper), "KSPSetOperators");
-        if (upper != finestUpper) MatDestroy(&upper);  // the smoother holds it
-        checkPetsc(KSPSetUp(smoother), "KSPSetUp (a smoother on its matrix's upper triangle)");
-        ++changed;
+        KSP smoother = l > 0 ? sorSmootherOf(pc, l, matrix) : nullptr;
+        if (smoother) {
+            Mat upper = l == levels - 1 ? finestUpper : upperTriangleOfLevel(matrix);
+            checkPetsc(KSPSetOperators(smoother, upper, upper), "KSPSetOperators");
+            if (upper != finestUpper) MatDestroy(&upper);  // the smoother holds it
+            ++changed;
+        }
+        if (estimateSteps > 0) estimateAgain(pc, l, estimateSteps);
+        if (smoother) checkPetsc(KSPSetUp(smoother), "KSPSetUp (a smoother on its matrix's upper triangle)");
     }
     return changed;
+}
+
+std::string eigenvalueBoundsOf(KSP smoother) {
+    KSP estimator = nullptr;
+    KSPType type = nullptr;
+    PetscInt steps = 0;
+    if (KSPChebyshevEstEigGetKSP(smoother, &estimator) != 0 || !estimator || KSPGetType(estimator, &type) != 0 ||
+        KSPGetTolerances(estimator, nullptr, nullptr, nullptr, &steps) != 0)
+        return {};
+    return fmt::format(" (eigenvalue bounds from {} {} step(s))", steps, type ? type : "?");
 }
 
 }  // namespace ma

@@ -5,6 +5,8 @@
 // entries, for the same sweeps and products.
 #include <petscksp.h>
 
+#include <string>
+
 #include "solver/SparseMatrix.hpp"
 
 namespace ma {
@@ -17,6 +19,12 @@ Mat upperTriangleOf(const CsrMatrix& B, size_t first, PetscInt size, MPI_Comm co
 // on the Krylov operator, nor by another method OPTION_PETSC asked for) sweeps and multiplies on that
 // matrix's upper triangle instead: `finestUpper` on the finest level, a copy of the level's matrix
 // elsewhere (the coarsest level is solved, not smoothed). Returns how many levels changed.
-int smoothOnUpperTriangles(PC pc, Mat finestUpper);
+// estimateSteps > 0: every Chebyshev smoother's eigenvalue estimate is made again with that many
+// GMRES steps, on the matrix it sweeps (KrylovSettings.hpp, estimatesAfterSetUp).
+int smoothOnUpperTriangles(PC pc, Mat finestUpper, int estimateSteps);
+
+// For the .mess: how a Chebyshev smoother's eigenvalue bounds were estimated (" (eigenvalue bounds
+// from 10 gmres step(s))"; empty when they were not estimated).
+std::string eigenvalueBoundsOf(KSP smoother);
 
 }  // namespace ma
