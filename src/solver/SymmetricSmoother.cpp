@@ -126,6 +126,7 @@ int smoothOnUpperTriangles(PC pc, Mat finestUpper, int estimateSteps) {
         if (smoother) {
             Mat upper = l == levels - 1 ? finestUpper : upperTriangleOfLevel(matrix);
             checkPetsc(KSPSetOperators(smoother, upper, upper), "KSPSetOperators");
+            checkPetsc(PCMGSetResidual(pc, l, PCMGResidualDefault, upper), "PCMGSetResidual");
             if (upper != finestUpper) MatDestroy(&upper);  // the smoother holds it
             ++changed;
         }
