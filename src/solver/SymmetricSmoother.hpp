@@ -17,8 +17,9 @@ Mat upperTriangleOf(const CsrMatrix& B, size_t first, PetscInt size, MPI_Comm co
 
 // Every multigrid level's smoother of `pc` that sweeps by SOR on its level's assembled matrix (not
 // on the Krylov operator, nor by another method OPTION_PETSC asked for) sweeps and multiplies on that
-// matrix's upper triangle instead, and the level's residual before restriction is computed there too: `finestUpper` on the finest level, a copy of the level's matrix
-// elsewhere (the coarsest level is solved, not smoothed). Returns how many levels changed.
+// matrix's upper triangle instead, and the level's residual before restriction is computed there
+// too: `finestUpper` on the finest level, a copy of the level's matrix elsewhere (the coarsest level
+// is solved, not smoothed). Returns how many levels changed.
 // estimateSteps > 0: every Chebyshev smoother's eigenvalue estimate is made again with that many
 // GMRES steps, on the matrix it sweeps (KrylovSettings.hpp, estimatesAfterSetUp).
 int smoothOnUpperTriangles(PC pc, Mat finestUpper, int estimateSteps);
