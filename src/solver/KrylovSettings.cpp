@@ -162,17 +162,16 @@ int unusedGiven(const std::string& defaults, const std::string& given) {
 
 void setUpWithOptionPetsc(KSP ksp, const SolverOptions& options, bool inPieces) {
     const std::string defaults = defaultOptionsOf(options.preconditioner, inPieces);
-    checkPetsc(PetscOptionsInsertString(nullptr, defaults.c_str()), "PetscOptionsInsertString (defaults)");
-    if (estimatesAfterSetUp(options, inPieces))
-        checkPetsc(PetscOptionsInsertString(nullptr, "-mg_levels_esteig_ksp_max_it 1"),
-                   "PetscOptionsInsertString (set-up estimates)");
+    const std::string setUpOnly = estimatesAfterSetUp(options, inPieces) ? " -mg_levels_esteig_ksp_max_it 1" : "";
+    checkPetsc(PetscOptionsInsertString(nullptr, (defaults + setUpOnly).c_str()),
+               "PetscOptionsInsertString (defaults)");
     checkPetsc(PetscOptionsInsertString(nullptr, options.petscOptions.c_str()),
                "PetscOptionsInsertString (SOLVEUR/OPTION_PETSC)");
     // The options stay in PETSc's database through KSPSetUp: multigrid creates its levels' smoothers
     // there and reads their options (-mg_levels_*, -mg_coarse_*) only then.
     PetscErrorCode code = KSPSetFromOptions(ksp);
     if (code == 0) code = KSPSetUp(ksp);
-    const int unused = unusedGiven(defaults, options.petscOptions);
+    const int unused = unusedGiven(defaults + setUpOnly, options.petscOptions);
     checkPetsc(PetscOptionsClear(nullptr), "PetscOptionsClear");
     checkPetsc(PetscOptionsSetValue(nullptr, "-no_signal_handler", "true"), "PetscOptionsSetValue");
     PetscBool set = PETSC_FALSE;  // marks it used: the next solve counts only its own unused options
