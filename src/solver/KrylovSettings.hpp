@@ -40,6 +40,7 @@ void setUpWithOptionPetsc(KSP ksp, const SolverOptions& options, bool inPieces);
 // when OPTION_PETSC says anything of the estimates: PETSc's are then left as they are.
 bool estimatesAfterSetUp(const SolverOptions& options, bool inPieces);
 constexpr int kSmootherEstimateSteps = 10;  // PETSc's default for Chebyshev's estimate
+
 // What to try when the method stalls (or converged by its own estimate only: `inaccurate`), for the
 // error message.
 std::string stallAdvice(const SolverOptions& options, bool inaccurate);

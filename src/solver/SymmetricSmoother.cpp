@@ -103,8 +103,7 @@ void estimateAgain(PC pc, PetscInt level, int steps) {
     PetscObjectTypeCompare(reinterpret_cast<PetscObject>(smoother), KSPCHEBYSHEV, &chebyshev);
     if (!chebyshev || KSPChebyshevEstEigGetKSP(smoother, &estimator) != 0 || !estimator) return;
     PetscReal rtol = 0.0, abstol = 0.0, dtol = 0.0;
-    PetscInt maxIt = 0;
-    checkPetsc(KSPGetTolerances(estimator, &rtol, &abstol, &dtol, &maxIt), "KSPGetTolerances");
+    checkPetsc(KSPGetTolerances(estimator, &rtol, &abstol, &dtol, nullptr), "KSPGetTolerances");
     checkPetsc(KSPSetTolerances(estimator, rtol, abstol, dtol, steps), "KSPSetTolerances");
     checkPetsc(KSPChebyshevEstEigSet(smoother, PETSC_DECIDE, PETSC_DECIDE, PETSC_DECIDE, PETSC_DECIDE),
                "KSPChebyshevEstEigSet");

@@ -123,7 +123,6 @@ KnownSystem regularised(const FreeModel& f, double c = 1e-2) {
 struct PieceSolve {
     double error;  // max |x - direct| / max |direct|
     std::string mess;
-    std::vector<double> x;
 };
 
 // CG through the piece basis with multigrid preconditioner `pc` and OPTION_PETSC `given`.
@@ -140,7 +139,7 @@ PieceSolve solveInPieces(const FreeModel& f, const KnownSystem& r, const std::st
     solver->solve(x);
     double diff = 0.0;
     for (size_t i = 0; i < x.size(); ++i) diff = std::max(diff, std::abs(x[i] - r.direct[i]));
-    return {diff / maxAbs(r.direct), msg().messText().substr(from), x};
+    return {diff / maxAbs(r.direct), msg().messText().substr(from)};
 }
 
 // The rows of each multigrid level in a .mess excerpt ("N levels (rows a / b / ...)"), finest first.
