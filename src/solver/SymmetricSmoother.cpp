@@ -93,15 +93,14 @@ Mat upperTriangleOfLevel(Mat level) {
     return sbaijOf(upper, size, comm);
 }
 
-// Level l's Chebyshev smoother estimates its eigenvalues again, with `steps` GMRES steps, at its next
-// set-up (done here): PETSc makes an estimate only for a matrix it has not seen, so the operators are
-// set again (the same ones where they were not changed).
-void estimateAgain(PC pc, PetscInt level, int steps) {
-    KSP smoother = nullptr, estimator = nullptr;
+// A Chebyshev smoother estimates its eigenvalues again, with `steps` GMRES steps, at its next set-up:
+// PETSc makes an estimate only for a matrix it has not seen, so the operators are set again (the
+// same ones where they were not changed). False for another smoother.
+bool estimateAgain(KSP smoother, int steps) {
+    KSP estimator = nullptr;
     PetscBool chebyshev = PETSC_FALSE;
-    if (PCMGGetSmoother(pc, level, &smoother) != 0) return;
     PetscObjectTypeCompare(reinterpret_cast<PetscObject>(smoother), KSPCHEBYSHEV, &chebyshev);
-    if (!chebyshev || KSPChebyshevEstEigGetKSP(smoother, &estimator) != 0 || !estimator) return;
+    if (!chebyshev || KSPChebyshevEstEigGetKSP(smoother, &estimator) != 0 || !estimator) return false;
     PetscReal rtol = 0.0, abstol = 0.0, dtol = 0.0;
     checkPetsc(KSPGetTolerances(estimator, &rtol, &abstol, &dtol, nullptr), "KSPGetTolerances");
     checkPetsc(KSPSetTolerances(estimator, rtol, abstol, dtol, steps), "KSPSetTolerances");
@@ -110,7 +109,7 @@ void estimateAgain(PC pc, PetscInt level, int steps) {
     Mat a = nullptr, p = nullptr;
     checkPetsc(KSPGetOperators(smoother, &a, &p), "KSPGetOperators");
     checkPetsc(KSPSetOperators(smoother, a, p), "KSPSetOperators");
-    checkPetsc(KSPSetUp(smoother), "KSPSetUp (a smoother's eigenvalue estimate)");
+    return true;
 }
 
 }  // namespace
@@ -120,17 +119,20 @@ int smoothOnUpperTriangles(PC pc, Mat finestUpper, int estimateSteps) {
     if (PCMGGetLevels(pc, &levels) != 0) return 0;
     int changed = 0;
     for (PetscInt l = 0; l < levels; ++l) {  // level 0: the coarsest, smoothed when it is the only one
+        KSP level = nullptr;
+        if (PCMGGetSmoother(pc, l, &level) != 0) continue;
         Mat matrix = nullptr;
-        KSP smoother = l > 0 ? sorSmootherOf(pc, l, matrix) : nullptr;
+        KSP smoother = l > 0 ? sorSmootherOf(pc, l, matrix) : nullptr;  // `level` when it sweeps by SOR
+        bool setUp = false;
         if (smoother) {
             Mat upper = l == levels - 1 ? finestUpper : upperTriangleOfLevel(matrix);
             checkPetsc(KSPSetOperators(smoother, upper, upper), "KSPSetOperators");
             checkPetsc(PCMGSetResidual(pc, l, PCMGResidualDefault, upper), "PCMGSetResidual");
             if (upper != finestUpper) MatDestroy(&upper);  // the smoother holds it
-            ++changed;
+            ++changed, setUp = true;
         }
-        if (estimateSteps > 0) estimateAgain(pc, l, estimateSteps);
-        if (smoother) checkPetsc(KSPSetUp(smoother), "KSPSetUp (a smoother on its matrix's upper triangle)");
+        if (estimateSteps > 0 && estimateAgain(level, estimateSteps)) setUp = true;
+        if (setUp) checkPetsc(KSPSetUp(level), "KSPSetUp (a smoother on its matrix's upper triangle)");
     }
     return changed;
 }
