@@ -6,6 +6,7 @@
 #include <array>
 #include <cctype>
 #include <sstream>
+#include <vector>
 
 #include "core/Error.hpp"
 #include "core/Messages.hpp"
@@ -188,6 +189,18 @@ bool estimatesAfterSetUp(const SolverOptions& options, bool inPieces) {
     return inPieces && options.preconditioner == "ML" && options.petscOptions.find("esteig") == std::string::npos;
 }
 
+namespace {
+
+// The preconditioners worth trying after `current` failed, in the order to try them.
+std::string strongerPreconditioners(const std::string& current) {
+    std::vector<std::string> multigrid;
+    for (const char* name : {"GAMG", "BOOMER", "ML"})
+        if (current != name) multigrid.push_back(fmt::format("'{}'", name));
+    return fmt::format("PRE_COND='LDLT_SP', or {} for elasticity without multipliers", fmt::join(multigrid, " / "));
+}
+
+}  // namespace
+
 std::string stallAdvice(const SolverOptions& options, bool inaccurate) {
     if (inaccurate && options.preconditioner == "LDLT_SP")
         return "With single-precision factors the method's own residual is not the true one (GMRES rebuilds the "
@@ -196,8 +209,12 @@ std::string stallAdvice(const SolverOptions& options, bool inaccurate) {
     if (usesFactors(options))
         return "The factors of the preconditioner do not approximate the matrix well enough: use PRE_COND='LDLT_DP' "
                "or METHODE='MUMPS'.";
-    return "Raise NMAX_ITER, or use a stronger preconditioner (PRE_COND='LDLT_SP', or 'GAMG' / 'BOOMER' / 'ML' for "
-           "elasticity without multipliers).";
+    const std::string stronger = strongerPreconditioners(options.preconditioner);
+    if (inaccurate)
+        return "The method's own residual drifted from the true one over its iterations (rounding in its "
+               "recurrences): use a preconditioner that needs fewer iterations (" +
+               stronger + "), or a larger RESI_RELA.";
+    return "Raise NMAX_ITER, or use a stronger preconditioner (" + stronger + ").";
 }
 
 }  // namespace ma

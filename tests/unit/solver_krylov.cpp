@@ -152,6 +152,32 @@ TEST(SolverKrylov, AStalledMethodIsAnErrorNamingTheSolver) {
     }
 }
 
+// The advice after a failure names other preconditioners than the one that failed. Out of iterations:
+// raise NMAX_ITER. A residual that drifted from the true one (RESI_RELA=1e-20: CG's own estimate goes on
+// falling, the true residual stays at round-off) is not cured by more iterations.
+TEST(SolverKrylov, TheAdviceAfterAFailureNamesOtherPreconditioners) {
+    msg().setEcho(false);
+    const CsrMatrix A = laplacian2d(40);
+    for (const char* pc : {"GAMG", "ML"}) {
+        for (bool drifted : {false, true}) {
+            SolverOptions o = krylov("PETSC", "CG", pc, drifted ? 1e-20 : 1e-12);
+            if (!drifted) o.maxIterations = 2;
+            try {
+                solveKnown(A, o, MatrixKind::SymmetricPositiveDefinite);
+                ADD_FAILURE() << pc << (drifted ? " met RESI_RELA=1e-20" : " met 1e-12 in 2 iterations");
+            } catch (const NumericalError& e) {
+                const std::string what = e.what();
+                EXPECT_EQ(what.find(fmt::format("or '{}'", pc)), std::string::npos) << what;
+                EXPECT_EQ(what.find(fmt::format("/ '{}'", pc)), std::string::npos) << what;
+                EXPECT_NE(what.find("PRE_COND='LDLT_SP'"), std::string::npos) << what;
+                EXPECT_EQ(what.find("Raise NMAX_ITER") == std::string::npos, drifted) << what;
+                EXPECT_EQ(what.find("converged by its own residual estimate") != std::string::npos, drifted) << what;
+                EXPECT_EQ(what.find("drifted from the true one") != std::string::npos, drifted) << what;
+            }
+        }
+    }
+}
+
 TEST(SolverKrylov, ReacPrecondKeepsTheFactorsForTheNextMatrix) {
     msg().setEcho(false);
     const CsrMatrix A = laplacian2d(30), B = laplacian2d(30, 0, 1.01);
