@@ -136,7 +136,7 @@ def write_outputs(out, header, records):
            "solves) from the .mess, `iterations` the Krylov iterations (or the refinement steps of MUMPS), "
            "`peak_mb` the process's resident peak, `l2_rel` POST_ERREUR DEPL_RELA against the exact field, "
            "`load` the 1-minute load average at the start (2 shared cores). A run that stops on an error "
-           "(exit 1: the solver's message names why) has no error, and its commands' total leaves out the "
+           "(exit 1: the solver's message names why) has no L2 error value, and its commands' total leaves out the "
            "command that failed: its wall time says what it cost.\n\n")
     md += report.markdown_table(records, [
         ("scene", "scene", None), ("N", "N", None), ("dofs", "DOFs", None), ("setting", "setting", None),
