@@ -19,6 +19,9 @@ bool isOneOf(const std::string& value, std::initializer_list<const char*> values
     return std::any_of(values.begin(), values.end(), [&](const char* v) { return value == v; });
 }
 
+// Algebraic multigrid, for elasticity without multipliers: the order the failure advice names them in.
+constexpr std::array<const char*, 3> kMultigrid{"GAMG", "BOOMER", "ML"};
+
 }  // namespace
 
 void checkPetsc(PetscErrorCode code, const char* call) {
@@ -30,6 +33,10 @@ std::string krylovAlgorithm(const SolverOptions& options) {
 }
 
 bool usesFactors(const SolverOptions& options) { return isOneOf(options.preconditioner, {"LDLT_SP", "LDLT_DP"}); }
+
+bool isMultigrid(const SolverOptions& options) {
+    return std::find(kMultigrid.begin(), kMultigrid.end(), options.preconditioner) != kMultigrid.end();
+}
 
 void refuseUnsound(const SolverOptions& options, bool indefinite) {
     const std::string& pc = options.preconditioner;
@@ -194,7 +201,7 @@ namespace {
 // The preconditioners worth trying after `current` failed, in the order to try them.
 std::string strongerPreconditioners(const std::string& current) {
     std::vector<std::string> multigrid;
-    for (const char* name : {"GAMG", "BOOMER", "ML"})
+    for (const char* name : kMultigrid)
         if (current != name) multigrid.push_back(fmt::format("'{}'", name));
     return fmt::format("PRE_COND='LDLT_SP', or {} for elasticity without multipliers", fmt::join(multigrid, " / "));
 }

@@ -22,6 +22,8 @@ std::string krylovAlgorithm(const SolverOptions& options);
 void refuseUnsound(const SolverOptions& options, bool indefinite);
 // PRE_COND='LDLT_SP' / 'LDLT_DP': MUMPS factors of the scaled matrix, applied once per iteration.
 bool usesFactors(const SolverOptions& options);
+// PRE_COND='GAMG' / 'BOOMER' / 'ML': algebraic multigrid (the piece basis on X-FEM models).
+bool isMultigrid(const SolverOptions& options);
 SolverOptions factorOptions(const SolverOptions& options);
 // Method, tolerances (RESI_RELA on the unpreconditioned residual, NMAX_ITER), preconditioning side.
 void configureKrylov(KSP ksp, const SolverOptions& options);

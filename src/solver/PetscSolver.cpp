@@ -270,10 +270,7 @@ private:
     // is not used.
     void choosePieceBasis(MatrixKind kind, const CsrMatrix& A) {
         piece_ = PieceBasis{}, shared_ = SharedPieces{}, comm_ = PETSC_COMM_SELF;
-        const std::string& p = options_.preconditioner;
-        if (!options_.pieceBasis || kind != MatrixKind::SymmetricPositiveDefinite ||
-            (p != "GAMG" && p != "ML" && p != "BOOMER"))
-            return;
+        if (!options_.pieceBasis || kind != MatrixKind::SymmetricPositiveDefinite || !isMultigrid(options_)) return;
         piece_ = options_.pieceBasis();
         if (piece_.copies > 0 && options_.distributed) {
             std::vector<int> ownerOfCopy = bisectCopies(piece_, mpi::size());
