@@ -102,6 +102,32 @@ std::vector<double> pieceDiagonalOf(const RowBuilder& rows, int begin, int end) 
     return diagonal;
 }
 
+// Row k of T^T A T appended to B when v_k is read by one equation i whose couplings j each read one
+// unknown, in increasing order (the nodes with one piece): T_ik A_ij T_jl, A's row mapped, with no
+// accumulator and no sort. False, B unchanged, otherwise.
+template <class Kept>
+bool directRow(const RowBuilder& rows, int k, const Kept& kept, CsrMatrix& B) {
+    const CsrMatrix &A = rows.A, &T = rows.T, &Tt = rows.Tt;
+    if (Tt.rowStart[size_t(k) + 1] - Tt.rowStart[size_t(k)] != 1) return false;
+    const size_t start = B.cols.size();
+    const int i = rows.localRow.empty() ? Tt.cols[size_t(Tt.rowStart[size_t(k)])]
+                                        : rows.localRow[size_t(Tt.cols[size_t(Tt.rowStart[size_t(k)])])];
+    const double tik = Tt.values[size_t(Tt.rowStart[size_t(k)])];
+    int last = -1;
+    for (long long b = A.rowStart[size_t(i)]; b < A.rowStart[size_t(i) + 1]; ++b) {
+        const size_t j = size_t(A.cols[size_t(b)]);
+        const long long c = T.rowStart[j];
+        if (T.rowStart[j + 1] - c != 1 || T.cols[size_t(c)] <= last) {
+            B.cols.resize(start), B.values.resize(start);
+            return false;
+        }
+        last = T.cols[size_t(c)];
+        const double value = tik * A.values[size_t(b)] * T.values[size_t(c)];
+        if (kept(k, last, value)) B.cols.push_back(last), B.values.push_back(value);
+    }
+    return true;
+}
+
 // Rows [begin, end) of T^T A T, columns global, the drop test against the whole diagonal.
 CsrMatrix pieceRowsOf(RowBuilder& rows, const PieceBasis& basis, int begin, int end, std::span<const double> diagonal,
                       double dropTolerance) {
@@ -110,7 +136,14 @@ CsrMatrix pieceRowsOf(RowBuilder& rows, const PieceBasis& basis, int begin, int 
     B.rowStart.reserve(size_t(B.rows) + 1);
     B.cols.reserve(rows.A.cols.size());
     B.values.reserve(rows.A.cols.size());
+    const auto kept = [&](int k, int l, double value) {
+        return l == k || std::abs(value) > dropTolerance * std::sqrt(diagonal[size_t(k)] * diagonal[size_t(l)]);
+    };
     for (int k = begin; k < end; ++k) {
+        if (directRow(rows, k, kept, B)) {
+            B.rowStart.push_back(static_cast<long long>(B.cols.size()));
+            continue;
+        }
         rows.build(k);
         if (basis.padding[size_t(k)] && !rows.seen[size_t(k)]) {
             rows.seen[size_t(k)] = 1, rows.touched.push_back(k);
@@ -119,7 +152,7 @@ CsrMatrix pieceRowsOf(RowBuilder& rows, const PieceBasis& basis, int begin, int 
         std::sort(rows.touched.begin(), rows.touched.end());
         for (int l : rows.touched) {
             const double value = rows.row[size_t(l)];
-            if (l == k || std::abs(value) > dropTolerance * std::sqrt(diagonal[size_t(k)] * diagonal[size_t(l)])) {
+            if (kept(k, l, value)) {
                 B.cols.push_back(l);
                 B.values.push_back(value);
             }

@@ -88,6 +88,46 @@ void checkPieceModes(const FreeModel& f) {
 
 }  // namespace
 
+// T^T K T computed densely from T and K, against pieceBasisMatrix's rows (those of the nodes with one
+// piece are A's rows mapped, the others summed): the same entries.
+void checkTransposedProduct(const FreeModel& f) {
+    const PieceBasis basis = pieceBasisOf(*f.space, f.constraints, f.K.rows);
+    ASSERT_GT(basis.copies, 0) << basis.refusal;
+    const size_t n = size_t(basis.size()), rows = size_t(f.K.rows);
+    std::vector<double> KT(rows * n, 0.0), dense(n * n, 0.0);  // K T, then T^T K T
+    const CsrMatrix &K = f.K, &T = basis.T;
+    for (size_t i = 0; i < rows; ++i)
+        for (long long a = K.rowStart[i]; a < K.rowStart[i + 1]; ++a) {
+            const size_t j = size_t(K.cols[size_t(a)]);
+            for (long long c = T.rowStart[j]; c < T.rowStart[j + 1]; ++c)
+                KT[i * n + size_t(T.cols[size_t(c)])] += K.values[size_t(a)] * T.values[size_t(c)];
+        }
+    std::vector<int> readers(n, 0);  // equations reading each unknown
+    for (size_t i = 0; i < rows; ++i)
+        for (long long c = T.rowStart[i]; c < T.rowStart[i + 1]; ++c) {
+            const size_t k = size_t(T.cols[size_t(c)]);
+            ++readers[k];
+            for (size_t l = 0; l < n; ++l) dense[k * n + l] += T.values[size_t(c)] * KT[i * n + l];
+        }
+    const CsrMatrix B = pieceBasisMatrix(K, basis, 0.0);
+    ASSERT_EQ(size_t(B.rows), n);
+    const double scale = maxAbs(K.values);
+    for (size_t k = 0; k < n; ++k) {
+        std::vector<double> row(n, 0.0);
+        for (long long a = B.rowStart[k]; a < B.rowStart[k + 1]; ++a)
+            row[size_t(B.cols[size_t(a)])] = B.values[size_t(a)];
+        for (size_t l = 0; l < n; ++l)
+            EXPECT_NEAR(row[l], dense[k * n + l], 1e-14 * scale) << "row " << k << " column " << l;
+    }
+    EXPECT_GT(std::count(readers.begin(), readers.end(), 1), 0);  // rows of both kinds
+    EXPECT_GT(std::count_if(readers.begin(), readers.end(), [](int r) { return r > 1; }), 0);
+}
+
+TEST(PieceBasis, TheMatrixIsTTransposedKTEntryByEntry) {
+    checkTransposedProduct(junctionModel(xfemtest::square(7, CellType::QUAD4), 0.3, -0.4));
+    checkTransposedProduct(junctionModel(xfemtest::slab(4, CellType::HEXA8), 0.3, -0.4));
+}
+
 TEST(PieceBasis, RigidModesAtTheCopiesAreNullModes3D) {
     checkPieceModes(junctionModel(xfemtest::slab(5, CellType::HEXA8), 0.3, -0.4));
     checkPieceModes(junctionModel(xfemtest::slab(4, CellType::HEXA8), 0.0, 0.0));  // on node rows
