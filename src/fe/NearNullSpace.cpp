@@ -132,12 +132,9 @@ std::vector<double> groupRigidModes(const Discretisation& space, const ModelBloc
         if (pieces == 0) continue;
         const int slots = numbering.slots(node);
         // Row j: the enriched value in piece j of the slot values (slot 0: 1, then the psi values).
-        Eigen::MatrixXd psi = Eigen::MatrixXd::Zero(pieces, slots);
-        for (int j = 0; j < pieces; ++j) {
-            psi(j, 0) = 1.0;
-            const auto& values = blocks.piecePsi[static_cast<size_t>(p0 + j)];
-            for (int k = 1; k < slots; ++k) psi(j, k) = values[static_cast<size_t>(k - 1)];
-        }
+        Eigen::MatrixXd psi(pieces, slots);
+        for (int j = 0; j < pieces; ++j)
+            for (int k = 0; k < slots; ++k) psi(j, k) = blocks.slotValue(p0 + j, k);
         // Slots that act in no piece (inactive) get 0: the minimum-norm solution.
         const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> solver(psi);
         std::vector<char> done(static_cast<size_t>(groups), 0);

@@ -27,6 +27,14 @@ struct ModelBlocks {
     // Blocks that share an element (colouring: two adjacent blocks never share a vector).
     std::vector<std::vector<int>> neighbours;
     std::vector<int> size;  // pieces of each block
+
+    // The value of a node's slot in one of its pieces (piece: index into piecePsi): 1 for slot 0,
+    // then the psi values, 0 beyond them.
+    double slotValue(int piece, int slot) const {
+        if (slot == 0) return 1.0;
+        const auto& psi = piecePsi[static_cast<size_t>(piece)];
+        return static_cast<size_t>(slot - 1) < psi.size() ? psi[static_cast<size_t>(slot - 1)] : 0.0;
+    }
 };
 
 // Component comp of rigid motion `mode` at x (2D: 2 translations, the rotation about z; 3D: 3

@@ -4,7 +4,6 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
-#include <cmath>
 
 #include "fe/NearNullSpace.hpp"
 
@@ -12,17 +11,12 @@ namespace ma {
 
 namespace {
 
-// The slots' values in the pieces of one node: value(j, k) is slot k in piece j (slot 0 is 1, then
-// the piece's psi values).
+// The pieces of one node: value(j, k) is slot k in its piece j.
 struct NodePieces {
     const ModelBlocks& blocks;
     int first, count;
 
-    double value(int j, int k) const {
-        if (k == 0) return 1.0;
-        const auto& psi = blocks.piecePsi[size_t(first + j)];
-        return size_t(k - 1) < psi.size() ? psi[size_t(k - 1)] : 0.0;
-    }
+    double value(int j, int k) const { return blocks.slotValue(first + j, k); }
 };
 
 // One entry of T: u_equation = sum value * v_unknown.
