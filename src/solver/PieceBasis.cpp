@@ -108,11 +108,11 @@ std::vector<double> pieceDiagonalOf(const RowBuilder& rows, int begin, int end) 
 template <class Kept>
 bool directRow(const RowBuilder& rows, int k, const Kept& kept, CsrMatrix& B) {
     const CsrMatrix &A = rows.A, &T = rows.T, &Tt = rows.Tt;
-    if (Tt.rowStart[size_t(k) + 1] - Tt.rowStart[size_t(k)] != 1) return false;
+    const size_t reader = size_t(Tt.rowStart[size_t(k)]);  // the one (equation, T_ik) reading v_k
+    if (Tt.rowStart[size_t(k) + 1] != static_cast<long long>(reader) + 1) return false;
     const size_t start = B.cols.size();
-    const int i = rows.localRow.empty() ? Tt.cols[size_t(Tt.rowStart[size_t(k)])]
-                                        : rows.localRow[size_t(Tt.cols[size_t(Tt.rowStart[size_t(k)])])];
-    const double tik = Tt.values[size_t(Tt.rowStart[size_t(k)])];
+    const int i = rows.localRow.empty() ? Tt.cols[reader] : rows.localRow[size_t(Tt.cols[reader])];
+    const double tik = Tt.values[reader];
     int last = -1;
     for (long long b = A.rowStart[size_t(i)]; b < A.rowStart[size_t(i) + 1]; ++b) {
         const size_t j = size_t(A.cols[size_t(b)]);
